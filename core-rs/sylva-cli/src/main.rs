@@ -1,0 +1,221 @@
+//! `sylva`: the command line of Sylva's core.
+//!
+//! ```text
+//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj]
+//! sylva params [--markdown]
+//! sylva presets
+//! sylva bench [--preset NAME] [--runs N] [--json]
+//! ```
+//! Errors (unknown flags, invalid parameters, budgets) print a message to stderr and exit 2.
+
+use std::process::ExitCode;
+use sylva_core::params::{registry, ParamKind, TreeParams};
+use sylva_core::{presets, SylvaError};
+
+const USAGE: &str = "usage:
+  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj]
+  sylva params [--markdown]
+  sylva presets
+  sylva bench [--preset NAME] [--runs N] [--json]";
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(out) => {
+            println!("{out}");
+            ExitCode::SUCCESS
+        }
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn run(args: &[String]) -> Result<String, String> {
+    let (cmd, rest) = args.split_first().ok_or_else(|| USAGE.to_string())?;
+    match cmd.as_str() {
+        "generate" => generate(rest),
+        "params" => Ok(if rest.iter().any(|a| a == "--markdown") {
+            params_markdown()
+        } else {
+            sylva_core::params::registry_json()
+        }),
+        "presets" => Ok(presets::presets_json()),
+        "bench" => bench(rest),
+        "--help" | "-h" | "help" => Ok(USAGE.to_string()),
+        "--version" => Ok(sylva_core::VERSION.to_string()),
+        other => Err(format!("unknown command '{other}'\n{USAGE}")),
+    }
+}
+
+/// Flags shared by `generate` and `bench`.
+struct Opts {
+    params: TreeParams,
+    out: Option<String>,
+    runs: usize,
+    json: bool,
+}
+
+fn parse(args: &[String]) -> Result<Opts, String> {
+    let mut preset: Option<String> = None;
+    let mut sets: Vec<(String, String)> = Vec::new();
+    let mut out = None;
+    let mut runs = 30;
+    let mut json = false;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
+        match a.as_str() {
+            "--preset" => preset = Some(value("--preset")?),
+            "--seed" => sets.push(("seed".into(), value("--seed")?)),
+            "--set" => {
+                let kv = value("--set")?;
+                let (k, v) = kv.split_once('=').ok_or_else(|| format!("--set takes id=value, got '{kv}'"))?;
+                sets.push((k.to_string(), v.to_string()));
+            }
+            "--out" => out = Some(value("--out")?),
+            "--runs" => runs = value("--runs")?.parse().map_err(|_| "--runs takes a whole number".to_string())?,
+            "--json" => json = true,
+            other => return Err(format!("unknown option '{other}'\n{USAGE}")),
+        }
+    }
+    let mut params = match preset.as_deref() {
+        Some(name) => presets::find(name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
+                format!("unknown preset '{name}' (known: {})", names.join(", "))
+            })?
+            .params()
+            .map_err(|e| e.to_string())?,
+        None => TreeParams::default(),
+    };
+    for (k, v) in sets {
+        let num = parse_value(&k, &v)?;
+        params.set(&k, num).map_err(|e| e.to_string())?;
+    }
+    Ok(Opts { params, out, runs: runs.max(1), json })
+}
+
+/// A `--set` value: a number, `true`/`false`, or an enum option label.
+fn parse_value(id: &str, v: &str) -> Result<f64, String> {
+    if let Ok(n) = v.parse::<f64>() {
+        return Ok(n);
+    }
+    match v {
+        "true" => return Ok(1.0),
+        "false" => return Ok(0.0),
+        _ => {}
+    }
+    let spec = sylva_core::params::spec(id).ok_or_else(|| {
+        SylvaError::UnknownParam { param: id.into(), message: format!("unknown parameter '{id}' (see `sylva params`)") }
+            .to_string()
+    })?;
+    if spec.kind == ParamKind::Enum {
+        let norm = |s: &str| s.chars().filter(|c| c.is_ascii_alphanumeric()).collect::<String>().to_ascii_lowercase();
+        if let Some(i) = spec.options.iter().flatten().position(|o| norm(o) == norm(v)) {
+            return Ok(i as f64);
+        }
+    }
+    Err(format!("{id} ({}) must be a number, got '{v}'", spec.label))
+}
+
+fn generate(args: &[String]) -> Result<String, String> {
+    let opts = parse(args)?;
+    let g = sylva_core::generate(&opts.params).map_err(|e| e.to_string())?;
+    if let Some(path) = &opts.out {
+        if !path.ends_with(".obj") {
+            return Err(format!("--out: only .obj is supported for now, got '{path}'"));
+        }
+        std::fs::write(path, g.mesh.to_obj()).map_err(|e| format!("cannot write {path}: {e}"))?;
+    }
+    let ms: serde_json::Map<String, serde_json::Value> =
+        g.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
+    Ok(serde_json::json!({
+        "vertices": g.stats.vertices,
+        "triangles": g.stats.triangles,
+        "stems": g.stats.stems,
+        "hash": g.hash_hex(),
+        "ms": ms,
+        "total_ms": g.stats.total_ms,
+    })
+    .to_string())
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+fn bench(args: &[String]) -> Result<String, String> {
+    let opts = parse(args)?;
+    let mut totals = Vec::with_capacity(opts.runs);
+    let mut stages: Vec<(&'static str, Vec<f64>)> = Vec::new();
+    let mut last = None;
+    sylva_core::generate(&opts.params).map_err(|e| e.to_string())?; // warm-up
+    for _ in 0..opts.runs {
+        let g = sylva_core::generate(&opts.params).map_err(|e| e.to_string())?;
+        totals.push(g.stats.total_ms);
+        for (i, (name, ms)) in g.stats.stage_ms.iter().enumerate() {
+            if stages.len() <= i {
+                stages.push((name, Vec::new()));
+            }
+            stages[i].1.push(*ms);
+        }
+        last = Some(g);
+    }
+    let g = last.expect("runs >= 1");
+    let total = median(&mut totals);
+    let stage: serde_json::Map<String, serde_json::Value> =
+        stages.iter_mut().map(|(k, v)| (k.to_string(), serde_json::json!(median(v)))).collect();
+    let vps = g.stats.vertices as f64 / (total / 1000.0);
+    let report = serde_json::json!({
+        "target": "native",
+        "runs": opts.runs,
+        "vertices": g.stats.vertices,
+        "triangles": g.stats.triangles,
+        "median_ms": total,
+        "stage_median_ms": stage,
+        "vertices_per_second": vps,
+        "hash": g.hash_hex(),
+    });
+    if opts.json {
+        Ok(report.to_string())
+    } else {
+        Ok(format!(
+            "native: {} vertices, median {:.3} ms over {} runs ({:.1} M vertices/s)",
+            g.stats.vertices,
+            total,
+            opts.runs,
+            vps / 1e6
+        ))
+    }
+}
+
+/// The parameter reference for the README, generated from the registry.
+fn params_markdown() -> String {
+    let mut s =
+        String::from("| id | group | type | default | range | unit | description |\n|---|---|---|---|---|---|---|\n");
+    for p in registry() {
+        let kind = match p.kind {
+            ParamKind::Float => "float",
+            ParamKind::Int => "int",
+            ParamKind::Bool => "bool",
+            ParamKind::Enum => "enum",
+        };
+        let range = match &p.options {
+            Some(opts) => opts.iter().enumerate().map(|(i, o)| format!("{i} {o}")).collect::<Vec<_>>().join(", "),
+            None => format!("{} to {}", p.min, p.max),
+        };
+        s.push_str(&format!(
+            "| `{}` | {} | {} | {} | {} | {} | {} |\n",
+            p.id, p.group, kind, p.default, range, p.unit, p.description
+        ));
+    }
+    s
+}

@@ -1,0 +1,116 @@
+//! # Sylva core
+//!
+//! A pure Rust procedural tree generator. The pipeline is a chain of plain-data stages:
+//!
+//! ```text
+//! TreeParams --validate--> skeleton::build --> mesh::tube::build --> TreeMesh (+ hash, stats)
+//! ```
+//!
+//! * [`params`]: the parameter registry, the single source of truth for the UI, URLs and docs.
+//! * [`rng`]: one portable PRNG with a named stream per stage.
+//! * [`crown`]: Weber & Penn's ShapeRatio crown envelopes.
+//! * [`skeleton`]: Weber & Penn stems.
+//! * [`mesh`]: the output buffer type and the bark tube sweep.
+//!
+//! Same parameters and seed give byte-identical buffers on every target (see `math`).
+
+pub mod clock;
+pub mod crown;
+pub mod error;
+pub mod math;
+pub mod mesh;
+pub mod params;
+pub mod presets;
+pub mod rng;
+pub mod skeleton;
+
+pub use clock::Clock;
+pub use crown::CrownShape;
+pub use error::SylvaError;
+pub use mesh::{Bounds, Material, MeshGroup, TreeMesh};
+pub use params::{registry, ParamSpec, TreeParams};
+
+use serde::Serialize;
+
+/// Version of the core, reported by the CLI and the wasm binding.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// Counts and timings of one generation.
+#[derive(Clone, Debug, Serialize)]
+pub struct Stats {
+    /// Number of vertices.
+    pub vertices: usize,
+    /// Number of triangles.
+    pub triangles: usize,
+    /// Number of stems in the skeleton.
+    pub stems: usize,
+    /// Milliseconds per stage, in pipeline order (`skeleton`, `mesh`, `hash`).
+    pub stage_ms: Vec<(&'static str, f64)>,
+    /// Milliseconds for the whole generation.
+    pub total_ms: f64,
+}
+
+/// A generated tree: the buffers plus what the UI and tools report about them.
+#[derive(Clone, Debug)]
+pub struct Generated {
+    /// The mesh buffers.
+    pub mesh: TreeMesh,
+    /// The skeleton the mesh was swept from.
+    pub skeleton: skeleton::Skeleton,
+    /// Bounds of the mesh.
+    pub bounds: Bounds,
+    /// Content hash of the buffers ([`TreeMesh::content_hash`]).
+    pub hash: u64,
+    /// Counts and timings.
+    pub stats: Stats,
+}
+
+impl Generated {
+    /// The hash as 16 hex digits, the form shown in the UI and printed by the CLI.
+    pub fn hash_hex(&self) -> String {
+        format!("{:016x}", self.hash)
+    }
+
+    /// Everything but the buffers as a JSON object (what `meta_json()` returns in wasm).
+    pub fn meta_json(&self) -> String {
+        let stage_ms: serde_json::Map<String, serde_json::Value> =
+            self.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
+        serde_json::json!({
+            "vertices": self.stats.vertices,
+            "triangles": self.stats.triangles,
+            "stems": self.stats.stems,
+            "hash": self.hash_hex(),
+            "bounds": self.bounds,
+            "groups": self.mesh.groups,
+            "stage_ms": stage_ms,
+            "total_ms": self.stats.total_ms,
+        })
+        .to_string()
+    }
+}
+
+/// Generate a tree: validate, build the skeleton, sweep the surfaces, hash the buffers.
+pub fn generate(params: &TreeParams) -> Result<Generated, SylvaError> {
+    generate_with_clock(params, clock::default_clock().as_ref())
+}
+
+/// [`generate`] with an explicit clock for the stage timings.
+pub fn generate_with_clock(params: &TreeParams, clock: &dyn Clock) -> Result<Generated, SylvaError> {
+    params.validate()?;
+    let t0 = clock.now_ms();
+    let skeleton = skeleton::build(params)?;
+    let t1 = clock.now_ms();
+    let mesh = mesh::tube::build(&skeleton, params)?;
+    let t2 = clock.now_ms();
+    let hash = mesh.content_hash();
+    let bounds = mesh.bounds();
+    let t3 = clock.now_ms();
+    let stats = Stats {
+        vertices: mesh.vertex_count(),
+        triangles: mesh.triangle_count(),
+        stems: skeleton.stems.len(),
+        stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("hash", t3 - t2)],
+        total_ms: t3 - t0,
+    };
+    Ok(Generated { mesh, skeleton, bounds, hash, stats })
+}

@@ -1,0 +1,232 @@
+//! Mesh buffers: the one geometry type that leaves the core. The wasm payload, the OBJ (and
+//! later GLB) exporters and the tests all read [`TreeMesh`]; the stages write into it through
+//! [`MeshBuilder`] (lyon's `GeometryBuilder` idea), so there is one layout to document and check.
+
+pub mod tube;
+
+use serde::Serialize;
+
+/// Which material a range of indices uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Material {
+    /// Stems: trunk, branches, twigs.
+    Bark,
+    /// Leaf blades.
+    Leaves,
+}
+
+/// A contiguous range of `indices` drawn with one material.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct MeshGroup {
+    /// Material of the range.
+    pub material: Material,
+    /// First index (an offset into `indices`, a multiple of 3).
+    pub start: u32,
+    /// Number of indices (a multiple of 3).
+    pub count: u32,
+}
+
+/// Axis-aligned bounds of all positions (m).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Bounds {
+    /// Smallest x, y, z.
+    pub min: [f32; 3],
+    /// Largest x, y, z.
+    pub max: [f32; 3],
+}
+
+/// A generated tree as flat, typed buffers. Coordinates: metres, **Y up**, the tree's base at
+/// the origin. Vertex `i` is made of:
+///
+/// | buffer      | type | per vertex | layout                                                    |
+/// |-------------|------|-----------:|-----------------------------------------------------------|
+/// | `positions` | f32  | 3          | `x, y, z` (finite)                                         |
+/// | `normals`   | f32  | 3          | `nx, ny, nz`, unit length, pointing out of the surface     |
+/// | `uvs`       | f32  | 2          | bark: `u` = around the stem 0..1 (seam duplicated at u = 1), `v` = along the stem, continuous, 1 unit per circumference |
+///
+/// `indices` (u32) hold triangles, three per triangle, counter-clockwise seen from outside;
+/// `groups` split them by material. 32-bit indices: trees pass 65,535 vertices easily.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TreeMesh {
+    /// `x, y, z` per vertex.
+    pub positions: Vec<f32>,
+    /// Unit normal per vertex.
+    pub normals: Vec<f32>,
+    /// `u, v` per vertex.
+    pub uvs: Vec<f32>,
+    /// Triangle list.
+    pub indices: Vec<u32>,
+    /// Index ranges per material.
+    pub groups: Vec<MeshGroup>,
+}
+
+impl TreeMesh {
+    /// Number of vertices.
+    pub fn vertex_count(&self) -> usize {
+        self.positions.len() / 3
+    }
+
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        self.indices.len() / 3
+    }
+
+    /// Bounds of all positions (zero box for an empty mesh).
+    pub fn bounds(&self) -> Bounds {
+        if self.positions.is_empty() {
+            return Bounds { min: [0.0; 3], max: [0.0; 3] };
+        }
+        let mut min = [f32::INFINITY; 3];
+        let mut max = [f32::NEG_INFINITY; 3];
+        for p in self.positions.chunks_exact(3) {
+            for k in 0..3 {
+                min[k] = min[k].min(p[k]);
+                max[k] = max[k].max(p[k]);
+            }
+        }
+        Bounds { min, max }
+    }
+
+    /// Content hash of every buffer (positions, normals, uvs, indices, groups): equal hashes
+    /// mean byte-identical meshes. Four interleaved 64-bit FNV-1a-style lanes over 32-bit words,
+    /// then mixed; the value is part of the golden tests, so change it only on purpose.
+    pub fn content_hash(&self) -> u64 {
+        let mut h = Hasher::new();
+        h.words(&self.positions, f32::to_bits);
+        h.words(&self.normals, f32::to_bits);
+        h.words(&self.uvs, f32::to_bits);
+        h.words(&self.indices, |i| i);
+        for g in &self.groups {
+            h.words(&[g.material as u32, g.start, g.count], |w| w);
+        }
+        h.finish()
+    }
+
+    /// The mesh as Wavefront OBJ text (positions, uvs, normals, one `g` per group).
+    pub fn to_obj(&self) -> String {
+        use std::fmt::Write;
+        let mut s = String::with_capacity(self.positions.len() * 40);
+        s.push_str("# Sylva tree\n");
+        for p in self.positions.chunks_exact(3) {
+            let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
+        }
+        for t in self.uvs.chunks_exact(2) {
+            let _ = writeln!(s, "vt {} {}", t[0], t[1]);
+        }
+        for n in self.normals.chunks_exact(3) {
+            let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
+        }
+        for g in &self.groups {
+            let _ = writeln!(s, "g {}", if g.material == Material::Bark { "bark" } else { "leaves" });
+            let range = g.start as usize..(g.start + g.count) as usize;
+            for t in self.indices[range].chunks_exact(3) {
+                let (a, b, c) = (t[0] + 1, t[1] + 1, t[2] + 1);
+                let _ = writeln!(s, "f {a}/{a}/{a} {b}/{b}/{b} {c}/{c}/{c}");
+            }
+        }
+        s
+    }
+}
+
+struct Hasher {
+    lanes: [u64; 4],
+    n: u64,
+}
+
+const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
+
+impl Hasher {
+    fn new() -> Self {
+        Hasher { lanes: [0xcbf2_9ce4_8422_2325, 0x8422_2325_cbf2_9ce4, 0x9e37_79b9_7f4a_7c15, 0x2545_f491_4f6c_dd1d], n: 0 }
+    }
+
+    /// Hash one buffer: word `k` of each group of four goes to lane `k` (independent multiply
+    /// chains, so the CPU overlaps them); a final partial group goes to the first lanes.
+    fn words<T: Copy>(&mut self, data: &[T], bits: impl Fn(T) -> u32) {
+        let [mut a, mut b, mut c, mut d] = self.lanes;
+        let mut chunks = data.chunks_exact(4);
+        for q in &mut chunks {
+            a = (a ^ u64::from(bits(q[0]))).wrapping_mul(FNV_PRIME);
+            b = (b ^ u64::from(bits(q[1]))).wrapping_mul(FNV_PRIME);
+            c = (c ^ u64::from(bits(q[2]))).wrapping_mul(FNV_PRIME);
+            d = (d ^ u64::from(bits(q[3]))).wrapping_mul(FNV_PRIME);
+        }
+        self.lanes = [a, b, c, d];
+        for (lane, &w) in self.lanes.iter_mut().zip(chunks.remainder()) {
+            *lane = (*lane ^ u64::from(bits(w))).wrapping_mul(FNV_PRIME);
+        }
+        self.n += data.len() as u64;
+    }
+
+    fn finish(&self) -> u64 {
+        let mut h = self.n;
+        for l in self.lanes {
+            h = (h ^ l).wrapping_mul(0xff51_afd7_ed55_8ccd);
+            h ^= h >> 33;
+        }
+        h
+    }
+}
+
+/// Appends geometry to a [`TreeMesh`] and keeps the material groups.
+pub struct MeshBuilder {
+    mesh: TreeMesh,
+}
+
+impl MeshBuilder {
+    /// An empty builder with room for about `vertices` vertices and `indices` indices.
+    pub fn with_capacity(vertices: usize, indices: usize) -> Self {
+        MeshBuilder {
+            mesh: TreeMesh {
+                positions: Vec::with_capacity(vertices * 3),
+                normals: Vec::with_capacity(vertices * 3),
+                uvs: Vec::with_capacity(vertices * 2),
+                indices: Vec::with_capacity(indices),
+                groups: Vec::new(),
+            },
+        }
+    }
+
+    /// Index the next vertex will get.
+    pub fn next_index(&self) -> u32 {
+        (self.mesh.positions.len() / 3) as u32
+    }
+
+    /// Append one vertex; returns its index.
+    #[inline]
+    pub fn vertex(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2]) -> u32 {
+        let i = self.next_index();
+        self.mesh.positions.extend_from_slice(&p);
+        self.mesh.normals.extend_from_slice(&n);
+        self.mesh.uvs.extend_from_slice(&uv);
+        i
+    }
+
+    /// Append one triangle (counter-clockwise seen from outside).
+    #[inline]
+    pub fn triangle(&mut self, a: u32, b: u32, c: u32) {
+        self.mesh.indices.extend_from_slice(&[a, b, c]);
+    }
+
+    /// Start a material group at the current index; later triangles belong to it.
+    pub fn begin_group(&mut self, material: Material) {
+        self.close_group();
+        let start = self.mesh.indices.len() as u32;
+        self.mesh.groups.push(MeshGroup { material, start, count: 0 });
+    }
+
+    fn close_group(&mut self) {
+        let len = self.mesh.indices.len() as u32;
+        if let Some(g) = self.mesh.groups.last_mut() {
+            g.count = len - g.start;
+        }
+    }
+
+    /// The finished mesh (empty groups dropped).
+    pub fn finish(mut self) -> TreeMesh {
+        self.close_group();
+        self.mesh.groups.retain(|g| g.count > 0);
+        self.mesh
+    }
+}

@@ -1,0 +1,508 @@
+//! Parameters: the one source of truth. [`define_params!`] declares every parameter once (id,
+//! type, default, range, step, unit, label, description, group) and produces the typed
+//! [`TreeParams`] struct the generator reads, its `Default`, and the [`registry`] that the web
+//! panel, the share-URL codec, validation, the CLI and the README reference are generated from.
+//!
+//! On the wire every value is a number: floats and ints as themselves, booleans as 0/1,
+//! enums as their option index. Per-level parameters (Weber & Penn's `nLength`, ...) get ids
+//! `l{n}_{name}` (e.g. `l1_length`) and live in `TreeParams::level[n]`.
+
+use crate::crown::CrownShape;
+use crate::error::SylvaError;
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+/// How a parameter's value is typed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ParamKind {
+    /// A real number.
+    Float,
+    /// A whole number.
+    Int,
+    /// 0 or 1.
+    Bool,
+    /// An index into `options`.
+    Enum,
+}
+
+/// One parameter's description, as exported to JS (`registry_json`) and `sylva params`.
+#[derive(Clone, Debug, Serialize)]
+pub struct ParamSpec {
+    /// Stable id used in share URLs, JSON and the CLI (`scale`, `l1_length`).
+    pub id: String,
+    /// Panel section, in display order (see [`GROUPS`]).
+    pub group: String,
+    /// Short label for the panel.
+    pub label: String,
+    /// Value type.
+    pub kind: ParamKind,
+    /// Default value.
+    pub default: f64,
+    /// Smallest allowed value.
+    pub min: f64,
+    /// Largest allowed value.
+    pub max: f64,
+    /// Slider step.
+    pub step: f64,
+    /// Unit shown next to the value (`m`, `°`, or empty).
+    pub unit: String,
+    /// One line saying what the parameter does.
+    pub description: String,
+    /// Option labels for enums (value = index).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub options: Option<Vec<String>>,
+}
+
+impl ParamSpec {
+    /// Check one value against this spec; the error names the field and the allowed range.
+    pub fn check(&self, v: f64) -> Result<(), SylvaError> {
+        let range = match self.kind {
+            ParamKind::Bool => "0 or 1".to_string(),
+            ParamKind::Enum => {
+                format!("0 to {} ({})", self.max, self.options.as_deref().unwrap_or_default().join(", "))
+            }
+            _ => format!("{} to {}{}", fmt_num(self.min), fmt_num(self.max), unit_suffix(&self.unit)),
+        };
+        let bad = |why: &str| SylvaError::InvalidParam {
+            param: self.id.clone(),
+            message: format!("{} ({}) {}: allowed range is {}", self.id, self.label, why, range),
+        };
+        if !v.is_finite() {
+            return Err(bad("must be a finite number"));
+        }
+        if v < self.min || v > self.max {
+            return Err(bad(&format!("is {}", fmt_num(v))));
+        }
+        if self.kind != ParamKind::Float && v.fract() != 0.0 {
+            return Err(bad(&format!("must be a whole number, got {}", fmt_num(v))));
+        }
+        Ok(())
+    }
+}
+
+fn unit_suffix(unit: &str) -> String {
+    match unit {
+        "" => String::new(),
+        "°" => "°".into(),
+        u => format!(" {u}"),
+    }
+}
+
+fn fmt_num(v: f64) -> String {
+    if v.fract() == 0.0 && v.abs() < 1e15 {
+        format!("{}", v as i64)
+    } else {
+        format!("{v}")
+    }
+}
+
+/// Conversion between a typed field and its wire number. Values are validated before
+/// `from_wire` is called, so it only has to map, never to check.
+pub trait ParamValue: Copy {
+    /// The kind reported in the registry.
+    const KIND: ParamKind;
+    /// Field value as a wire number.
+    fn to_wire(self) -> f64;
+    /// Wire number (already validated) as a field value.
+    fn from_wire(v: f64) -> Self;
+    /// Enum option labels.
+    fn options() -> Option<Vec<String>> {
+        None
+    }
+}
+
+impl ParamValue for f32 {
+    const KIND: ParamKind = ParamKind::Float;
+    fn to_wire(self) -> f64 {
+        f64::from(self)
+    }
+    fn from_wire(v: f64) -> Self {
+        v as f32
+    }
+}
+impl ParamValue for u32 {
+    const KIND: ParamKind = ParamKind::Int;
+    fn to_wire(self) -> f64 {
+        f64::from(self)
+    }
+    fn from_wire(v: f64) -> Self {
+        v as u32
+    }
+}
+impl ParamValue for bool {
+    const KIND: ParamKind = ParamKind::Bool;
+    fn to_wire(self) -> f64 {
+        f64::from(u8::from(self))
+    }
+    fn from_wire(v: f64) -> Self {
+        v != 0.0
+    }
+}
+impl ParamValue for CrownShape {
+    const KIND: ParamKind = ParamKind::Enum;
+    fn to_wire(self) -> f64 {
+        f64::from(self as u8)
+    }
+    fn from_wire(v: f64) -> Self {
+        CrownShape::from_index(v as usize)
+    }
+    fn options() -> Option<Vec<String>> {
+        Some(CrownShape::LABELS.iter().map(|s| s.to_string()).collect())
+    }
+}
+
+/// Panel sections in display order. Every parameter's group is one of these.
+pub const GROUPS: [&str; 8] = ["Tree", "Crown", "Trunk", "Level 1", "Level 2", "Level 3", "Quality", "Budget"];
+
+/// Declares the parameters. Tree-level entries read
+/// `id: Type = default; [min, max, step] "unit", "Group", "Label", "description";`
+/// and per-level entries (Weber & Penn's `n*`, one value per level 0..3)
+/// `id: Type = [d0, d1, d2, d3]; [min, max, step] "unit", "Label", "description", trunk: bool;`
+/// where `trunk: false` means level 0 (the trunk) has no such parameter.
+macro_rules! define_params {
+    (
+        tree {
+            $( $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+               $tunit:literal, $tgroup:literal, $tlabel:literal, $tdesc:literal ; )*
+        }
+        level {
+            $( $lf:ident : $lt:ty = [$d0:expr, $d1:expr, $d2:expr, $d3:expr] ; [$lmin:expr, $lmax:expr, $lstep:expr]
+               $lunit:literal, $llabel:literal, $ldesc:literal, trunk: $ltrunk:literal ; )*
+        }
+    ) => {
+        /// Every parameter of a tree. Build with `TreeParams::default()` and change fields, or
+        /// from wire values with [`TreeParams::from_values`]; [`TreeParams::validate`] checks all.
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct TreeParams {
+            $(
+                #[doc = concat!($tdesc, " Default `", stringify!($td), "`, range ", stringify!($tmin), " to ", stringify!($tmax), " ", $tunit, ".")]
+                pub $tf: $tt,
+            )*
+            /// Per-level parameters; index 0 is the trunk.
+            pub level: [LevelParams; 4],
+        }
+
+        /// Weber & Penn's per-level parameters (`nLength`, `nDownAngle`, ...).
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct LevelParams {
+            $(
+                #[doc = concat!($ldesc, " Defaults per level `", stringify!([$d0, $d1, $d2, $d3]), "`, range ", stringify!($lmin), " to ", stringify!($lmax), " ", $lunit, ".")]
+                pub $lf: $lt,
+            )*
+        }
+
+        impl Default for TreeParams {
+            fn default() -> Self {
+                let level = |n: usize| LevelParams { $( $lf: [$d0, $d1, $d2, $d3][n], )* };
+                TreeParams { $( $tf: $td, )* level: [level(0), level(1), level(2), level(3)] }
+            }
+        }
+
+        fn build_registry() -> Vec<ParamSpec> {
+            let mut specs = vec![$(
+                ParamSpec {
+                    id: stringify!($tf).to_string(),
+                    group: $tgroup.to_string(),
+                    label: $tlabel.to_string(),
+                    kind: <$tt as ParamValue>::KIND,
+                    default: ParamValue::to_wire($td as $tt),
+                    min: $tmin as f64,
+                    max: $tmax as f64,
+                    step: $tstep as f64,
+                    unit: $tunit.to_string(),
+                    description: $tdesc.to_string(),
+                    options: <$tt as ParamValue>::options(),
+                },
+            )*];
+            for n in 0..4usize {
+                let group = if n == 0 { "Trunk".to_string() } else { format!("Level {n}") };
+                $(
+                    if n > 0 || $ltrunk {
+                        specs.push(ParamSpec {
+                            id: format!("l{n}_{}", stringify!($lf)),
+                            group: group.clone(),
+                            label: $llabel.to_string(),
+                            kind: <$lt as ParamValue>::KIND,
+                            default: ParamValue::to_wire([$d0, $d1, $d2, $d3][n] as $lt),
+                            min: $lmin as f64,
+                            max: $lmax as f64,
+                            step: $lstep as f64,
+                            unit: $lunit.to_string(),
+                            description: $ldesc.to_string(),
+                            options: <$lt as ParamValue>::options(),
+                        });
+                    }
+                )*
+            }
+            specs.sort_by_key(|s| GROUPS.iter().position(|g| *g == s.group).unwrap_or(GROUPS.len()));
+            specs
+        }
+
+        impl TreeParams {
+            /// The wire value of parameter `id`, or `None` for an unknown id.
+            pub fn get(&self, id: &str) -> Option<f64> {
+                match id {
+                    $( stringify!($tf) => return Some(ParamValue::to_wire(self.$tf)), )*
+                    _ => {}
+                }
+                let (n, name) = split_level_id(id)?;
+                let l = &self.level[n];
+                match name {
+                    $( stringify!($lf) => Some(ParamValue::to_wire(l.$lf)), )*
+                    _ => None,
+                }
+            }
+
+            fn set_unchecked(&mut self, id: &str, v: f64) {
+                match id {
+                    $( stringify!($tf) => { self.$tf = ParamValue::from_wire(v); return; } )*
+                    _ => {}
+                }
+                if let Some((n, name)) = split_level_id(id) {
+                    let l = &mut self.level[n];
+                    match name {
+                        $( stringify!($lf) => l.$lf = ParamValue::from_wire(v), )*
+                        _ => {}
+                    }
+                }
+            }
+        }
+    };
+}
+
+fn split_level_id(id: &str) -> Option<(usize, &str)> {
+    let rest = id.strip_prefix('l')?;
+    let (n, name) = rest.split_once('_')?;
+    let n: usize = n.parse().ok()?;
+    (n < 4).then_some((n, name))
+}
+
+define_params! {
+    tree {
+        seed: u32 = 1; [0, 4_294_967_295u32, 1] "", "Tree", "Seed",
+            "Random seed: the same parameters and seed always give the same tree.";
+        levels: u32 = 3; [1, 4, 1] "", "Tree", "Levels",
+            "Number of stem levels including the trunk (3 = trunk + two branch levels).";
+        scale: f32 = 13.0; [0.1, 100.0, 0.1] "m", "Tree", "Scale",
+            "Overall size of the tree: trunk length = Scale x Trunk Length.";
+        scale_v: f32 = 3.0; [0.0, 50.0, 0.1] "m", "Tree", "Scale Variation",
+            "Random variation added to Scale (uniform in +/- this value).";
+        ratio: f32 = 0.015; [0.001, 0.2, 0.001] "", "Tree", "Radius Ratio",
+            "Trunk base radius as a fraction of the trunk length.";
+        ratio_power: f32 = 1.2; [0.0, 5.0, 0.05] "", "Tree", "Ratio Power",
+            "How fast child radii shrink with their length relative to the parent (r_child = r_parent (L/L_parent)^power).";
+        attraction_up: f32 = 0.5; [-10.0, 10.0, 0.05] "", "Tree", "Attraction Up",
+            "Bends branches of level 2 and deeper toward the sky (positive) or the ground (negative: weeping).";
+        shape: CrownShape = CrownShape::Cylindrical; [0, 7, 1] "", "Crown", "Crown Shape",
+            "Envelope that sets level-1 branch length by height on the trunk (Weber & Penn ShapeRatio).";
+        base_size: f32 = 0.4; [0.0, 1.0, 0.01] "", "Crown", "Base Size",
+            "Fraction of the trunk, from the ground, that carries no branches; the crown starts above it.";
+        angle_spread: f32 = 0.0; [-45.0, 45.0, 0.5] "°", "Crown", "Angle Spread",
+            "Height-based down-angle offset: positive points top branches upward and base branches outward.";
+        flare: f32 = 0.6; [0.0, 5.0, 0.05] "", "Trunk", "Flare",
+            "Widening of the trunk toward the ground over its lowest eighth.";
+        lobes: u32 = 5; [0, 20, 1] "", "Trunk", "Lobes",
+            "Number of lobes (flutes) around the trunk cross-section; 0 = round.";
+        lobe_depth: f32 = 0.07; [0.0, 1.0, 0.01] "", "Trunk", "Lobe Depth",
+            "Depth of the trunk lobes as a fraction of the radius.";
+        mesh_quality: f32 = 1.0; [0.25, 4.0, 0.05] "", "Quality", "Mesh Quality",
+            "Multiplies the number of sides around each stem and rings along bends.";
+        max_vertices: u32 = 2_000_000; [1_000, 20_000_000, 1_000] "", "Budget", "Max Vertices",
+            "Vertex budget: a tree that would need more stops with an error instead of freezing.";
+    }
+    level {
+        length: f32 = [1.0, 0.3, 0.6, 0.4]; [0.0, 2.0, 0.01] "", "Length",
+            "Stem length: trunk as a fraction of Scale; level 1 relative to the parent (times the crown shape); deeper levels relative to the parent's remaining length.", trunk: true;
+        length_v: f32 = [0.0, 0.0, 0.0, 0.0]; [0.0, 1.0, 0.01] "", "Length Variation",
+            "Random variation added to Length (uniform in +/- this value).", trunk: true;
+        taper: f32 = [1.0, 1.0, 1.0, 1.0]; [0.0, 3.0, 0.01] "", "Taper",
+            "Radius taper: 0 = cylinder, 1 = cone to a point, 1-2 = rounded tip, 2-3 = periodic bulges.", trunk: true;
+        curve_res: u32 = [3, 5, 3, 1]; [1, 50, 1] "", "Curve Resolution",
+            "Number of segments the stem is built from; each can bend.", trunk: true;
+        curve: f32 = [0.0, -40.0, -40.0, 0.0]; [-360.0, 360.0, 1.0] "°", "Curve",
+            "Total bend of the stem from base to tip (negative bends downward).", trunk: true;
+        curve_back: f32 = [0.0, 0.0, 0.0, 0.0]; [-360.0, 360.0, 1.0] "°", "Curve Back",
+            "Bend of the second half of the stem, for S-shaped stems (0 = one even bend).", trunk: true;
+        curve_v: f32 = [20.0, 50.0, 75.0, 0.0]; [0.0, 360.0, 1.0] "°", "Curve Variation",
+            "Random bend added per stem (uniform in +/- this value, spread over its segments).", trunk: true;
+        down_angle: f32 = [0.0, 60.0, 45.0, 45.0]; [-179.0, 179.0, 1.0] "°", "Down Angle",
+            "Angle between a branch and its parent stem.", trunk: false;
+        down_angle_v: f32 = [0.0, -50.0, 10.0, 10.0]; [-179.0, 179.0, 1.0] "°", "Down Angle Variation",
+            "Random variation of Down Angle; negative values make it depend on the position along the parent instead.", trunk: false;
+        rotate: f32 = [0.0, 140.0, 140.0, 77.0]; [-360.0, 360.0, 1.0] "°", "Rotate",
+            "Angle around the parent from one branch to the next (negative: alternate sides at 180 + value).", trunk: false;
+        rotate_v: f32 = [0.0, 0.0, 0.0, 0.0]; [0.0, 360.0, 1.0] "°", "Rotate Variation",
+            "Random variation of Rotate (uniform in +/- this value).", trunk: false;
+        branches: u32 = [0, 50, 30, 10]; [0, 500, 1] "", "Branches",
+            "Number of child branches (level 1: on the trunk; deeper: per parent, scaled by the parent's length).", trunk: false;
+    }
+}
+
+static REGISTRY: OnceLock<Vec<ParamSpec>> = OnceLock::new();
+
+/// All parameters in panel order. Built once from [`define_params!`].
+pub fn registry() -> &'static [ParamSpec] {
+    REGISTRY.get_or_init(build_registry)
+}
+
+/// The spec of parameter `id`.
+pub fn spec(id: &str) -> Option<&'static ParamSpec> {
+    registry().iter().find(|s| s.id == id)
+}
+
+/// The registry as JSON (what `registry_json()` in wasm and `sylva params` print).
+pub fn registry_json() -> String {
+    serde_json::to_string(registry()).expect("registry serialises")
+}
+
+impl TreeParams {
+    /// Set parameter `id` to the wire value `v` after checking it against its spec.
+    pub fn set(&mut self, id: &str, v: f64) -> Result<(), SylvaError> {
+        let spec = spec(id).ok_or_else(|| unknown(id))?;
+        spec.check(v)?;
+        self.set_unchecked(id, v);
+        Ok(())
+    }
+
+    /// Defaults overridden by `values` (wire numbers by id). Unknown ids and invalid values are errors.
+    pub fn from_values<'a>(values: impl IntoIterator<Item = (&'a str, f64)>) -> Result<TreeParams, SylvaError> {
+        let mut p = TreeParams::default();
+        for (id, v) in values {
+            p.set(id, v)?;
+        }
+        Ok(p)
+    }
+
+    /// Parse a JSON object `{"id": number, ...}`; booleans are accepted as 0/1.
+    pub fn from_json(json: &str) -> Result<TreeParams, SylvaError> {
+        let map: BTreeMap<String, serde_json::Value> = serde_json::from_str(json)
+            .map_err(|e| SylvaError::Input { message: format!("parameters must be a JSON object of numbers: {e}") })?;
+        let mut p = TreeParams::default();
+        for (id, value) in &map {
+            let v = match value {
+                serde_json::Value::Number(n) => n.as_f64().unwrap_or(f64::NAN),
+                serde_json::Value::Bool(b) => f64::from(u8::from(*b)),
+                _ => {
+                    let spec = spec(id).ok_or_else(|| unknown(id))?;
+                    return Err(SylvaError::InvalidParam {
+                        param: id.clone(),
+                        message: format!("{} ({}) must be a number, got {}", id, spec.label, value),
+                    });
+                }
+            };
+            p.set(id, v)?;
+        }
+        Ok(p)
+    }
+
+    /// Check every field (fields are public, so a struct built in code is checked here too).
+    pub fn validate(&self) -> Result<(), SylvaError> {
+        for spec in registry() {
+            let v = self.get(&spec.id).expect("every registry id is gettable");
+            spec.check(v)?;
+        }
+        Ok(())
+    }
+
+    /// The values that differ from the defaults, by id in registry order.
+    pub fn non_defaults(&self) -> Vec<(&'static str, f64)> {
+        registry()
+            .iter()
+            .filter_map(|s| {
+                let v = self.get(&s.id)?;
+                (v != s.default).then_some((s.id.as_str(), v))
+            })
+            .collect()
+    }
+
+    /// The crown shape as an enum.
+    pub fn crown(&self) -> CrownShape {
+        self.shape
+    }
+}
+
+fn unknown(id: &str) -> SylvaError {
+    let shown: String = id.chars().take(64).collect();
+    SylvaError::UnknownParam {
+        param: shown.clone(),
+        message: format!("unknown parameter '{shown}' (see `sylva params`)"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn registry_ids_unique_defaults_valid_groups_known() {
+        let reg = registry();
+        let mut ids: Vec<&str> = reg.iter().map(|s| s.id.as_str()).collect();
+        ids.sort_unstable();
+        let n = ids.len();
+        ids.dedup();
+        assert_eq!(ids.len(), n, "duplicate ids");
+        for s in reg {
+            s.check(s.default).unwrap_or_else(|e| panic!("default of {} invalid: {e}", s.id));
+            assert!(GROUPS.contains(&s.group.as_str()), "{} has unknown group {}", s.id, s.group);
+            assert!(s.min < s.max && s.step > 0.0, "{}: bad range", s.id);
+            assert!(!s.description.is_empty());
+        }
+        TreeParams::default().validate().unwrap();
+        assert!(TreeParams::default().non_defaults().is_empty());
+    }
+
+    #[test]
+    fn get_set_round_trip_every_param() {
+        for s in registry() {
+            let mut p = TreeParams::default();
+            p.set(&s.id, s.max).unwrap();
+            assert_eq!(
+                p.get(&s.id),
+                Some(if s.kind == ParamKind::Float { (s.max as f32) as f64 } else { s.max }),
+                "{}",
+                s.id
+            );
+        }
+    }
+
+    #[test]
+    fn out_of_range_names_field_and_range() {
+        let e = TreeParams::from_values([("l1_length", 3.0)]).unwrap_err();
+        assert_eq!(
+            e,
+            SylvaError::InvalidParam {
+                param: "l1_length".into(),
+                message: "l1_length (Length) is 3: allowed range is 0 to 2".into()
+            }
+        );
+        let e = TreeParams::from_values([("scale", -1.0)]).unwrap_err();
+        assert_eq!(e.message(), "scale (Scale) is -1: allowed range is 0.1 to 100 m");
+        let e = TreeParams::from_values([("l2_branches", 2.5)]).unwrap_err();
+        assert!(e.message().contains("must be a whole number"), "{e}");
+        let e = TreeParams::from_values([("scale", f64::NAN)]).unwrap_err();
+        assert!(e.message().contains("finite"), "{e}");
+        let e = TreeParams::from_values([("shape", 9.0)]).unwrap_err();
+        assert!(e.message().contains("Conical, Spherical"), "{e}");
+    }
+
+    #[test]
+    fn unknown_and_malformed_json() {
+        assert!(matches!(TreeParams::from_json(r#"{"nope": 1}"#), Err(SylvaError::UnknownParam { .. })));
+        assert!(matches!(TreeParams::from_json(r#"[1,2]"#), Err(SylvaError::Input { .. })));
+        let e = TreeParams::from_json(r#"{"scale": "big"}"#).unwrap_err();
+        assert_eq!(e.message(), r#"scale (Scale) must be a number, got "big""#);
+        let p = TreeParams::from_json(r#"{"scale": 20, "seed": 9}"#).unwrap();
+        assert_eq!((p.scale, p.seed), (20.0, 9));
+        // The trunk has no down angle: l0_down_angle is not a parameter.
+        assert!(matches!(TreeParams::from_json(r#"{"l0_down_angle": 1}"#), Err(SylvaError::UnknownParam { .. })));
+    }
+
+    #[test]
+    fn direct_struct_edits_are_validated() {
+        let mut p = TreeParams::default();
+        p.level[2].curve_res = 0;
+        assert!(p.validate().unwrap_err().message().starts_with("l2_curve_res"));
+    }
+}

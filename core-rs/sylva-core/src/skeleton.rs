@@ -1,0 +1,381 @@
+//! Skeleton stage: parameters -> stems (centre polylines with a radius profile), after Weber &
+//! Penn, "Creation and Rendering of Realistic Trees" (SIGGRAPH 1995) with the formulas of
+//! ANCHORS §3: stem lengths (level 1 scaled by the crown ShapeRatio), radii with RatioPower and
+//! child <= parent at the attachment point, taper modes, trunk flare, curvature (Curve,
+//! CurveBack, CurveV), DownAngle/Rotate with their negative variants, branch counts with error
+//! diffusion, AttractionUp and Angle Spread.
+//!
+//! Every stem draws from its own generator split off its parent's, so editing a deeper level
+//! never changes the stems above it.
+
+use crate::crown::CrownShape;
+use crate::error::SylvaError;
+use crate::math::{acos, pow, rad, PI};
+use crate::params::TreeParams;
+use crate::rng::Rng;
+use glam::{Quat, Vec3};
+
+/// One stem: the trunk, a branch or a twig.
+#[derive(Clone, Debug)]
+pub struct Stem {
+    /// 0 = trunk, 1 = branches on the trunk, ...
+    pub level: u8,
+    /// Index of the parent stem in [`Skeleton::stems`].
+    pub parent: Option<u32>,
+    /// Distance along the parent where this stem starts (m).
+    pub offset: f32,
+    /// Centre polyline from base to tip: `curve_res + 1` points, equally spaced along the stem.
+    pub points: Vec<Vec3>,
+    /// A unit vector perpendicular to the first segment: the reference for ring orientation.
+    pub base_normal: Vec3,
+    /// Stem length (m).
+    pub length: f32,
+    /// Radius at the base before flare (m).
+    pub radius: f32,
+    /// Weber & Penn `nTaper` of this stem's level.
+    pub taper: f32,
+    /// Trunk flare (0 for branches).
+    pub flare: f32,
+    /// Down angle from the parent (degrees; 0 for the trunk).
+    pub down_angle: f32,
+}
+
+impl Stem {
+    /// Radius at fraction `z` (0 = base, 1 = tip) of the stem: W&P taper, plus flare on the trunk.
+    pub fn radius_at(&self, z: f32) -> f32 {
+        taper_radius(self.radius, self.taper, self.length, z) * flare_factor(self.flare, z)
+    }
+
+    /// Base point of the stem.
+    pub fn base(&self) -> Vec3 {
+        self.points[0]
+    }
+
+    /// Tip point of the stem.
+    pub fn tip(&self) -> Vec3 {
+        *self.points.last().expect("a stem has points")
+    }
+
+    /// Point and unit direction at distance `d` along the stem (clamped to the stem).
+    pub fn point_at(&self, d: f32) -> (Vec3, Vec3) {
+        self.sample((d / self.length).clamp(0.0, 1.0))
+    }
+
+    /// Point and unit tangent at fraction `t` (0 = base, 1 = tip) of the smooth centre curve: a
+    /// Catmull-Rom spline through [`Stem::points`] (ends extrapolated). The mesh and the child
+    /// attachment points both use this, so children start exactly on their parent's axis.
+    pub fn sample(&self, t: f32) -> (Vec3, Vec3) {
+        let pts = &self.points;
+        let segs = pts.len() - 1;
+        let f = t.clamp(0.0, 1.0) * segs as f32;
+        let i = (f as usize).min(segs - 1);
+        let u = f - i as f32;
+        let p1 = pts[i];
+        let p2 = pts[i + 1];
+        let p0 = if i > 0 { pts[i - 1] } else { 2.0 * p1 - p2 };
+        let p3 = if i + 2 <= segs { pts[i + 2] } else { 2.0 * p2 - p1 };
+        let a = 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3;
+        let b = -p0 + 3.0 * p1 - 3.0 * p2 + p3;
+        let pos = 0.5 * (2.0 * p1 + (p2 - p0) * u + a * (u * u) + b * (u * u * u));
+        let tan = 0.5 * ((p2 - p0) + a * (2.0 * u) + b * (3.0 * u * u));
+        (pos, tan.normalize_or(p2 - p1).normalize_or(Vec3::Y))
+    }
+}
+
+/// Weber & Penn's taper: the radius at fraction `z` of a stem of base radius `r0`, length `len`.
+/// `taper` in 0..1 narrows linearly to `1 - taper`; 1..2 rounds the tip into a hemisphere; 2..3
+/// makes periodic spheres along the stem.
+pub fn taper_radius(r0: f32, taper: f32, len: f32, z: f32) -> f32 {
+    let unit_taper = if taper < 1.0 {
+        taper
+    } else if taper < 2.0 {
+        2.0 - taper
+    } else {
+        0.0
+    };
+    let taper_z = r0 * (1.0 - unit_taper * z);
+    if taper < 1.0 {
+        return taper_z;
+    }
+    let z2 = (1.0 - z) * len;
+    let depth = if taper < 2.0 || z2 < taper_z { 1.0 } else { taper - 2.0 };
+    let z3 = if taper < 2.0 { z2 } else { (z2 - 2.0 * taper_z * ((z2 / (2.0 * taper_z) + 0.5).floor())).abs() };
+    if taper < 2.0 && z3 >= taper_z {
+        taper_z
+    } else {
+        let s = (taper_z * taper_z - (z3 - taper_z) * (z3 - taper_z)).max(0.0).sqrt();
+        (1.0 - depth) * taper_z + depth * s
+    }
+}
+
+/// Weber & Penn trunk flare: `1 + flare (100^y - 1) / 100` with `y = max(0, 1 - 8 z)`.
+pub fn flare_factor(flare: f32, z: f32) -> f32 {
+    if flare == 0.0 {
+        return 1.0;
+    }
+    let y = (1.0 - 8.0 * z).max(0.0);
+    1.0 + flare * (pow(100.0, y) - 1.0) / 100.0
+}
+
+/// The stems of one tree, parents before children.
+#[derive(Clone, Debug, Default)]
+pub struct Skeleton {
+    /// All stems; `stems[0]` is the trunk.
+    pub stems: Vec<Stem>,
+    /// `Scale + var(ScaleV)` drawn for this tree (m).
+    pub scale: f32,
+    /// Height above the ground where the crown starts (m).
+    pub crown_base: f32,
+}
+
+/// Smallest stem length that is still built (m); shorter children are dropped.
+const MIN_LENGTH: f32 = 1e-3;
+/// Smallest radius a stem gets (m), so tubes never collapse.
+const MIN_RADIUS: f32 = 1e-4;
+
+/// Lower bound of the vertices a stem will need in the mesh stage; used to stop runaway trees
+/// before they allocate (the mesh stage checks the exact count against the same budget).
+pub fn min_vertices(curve_res: u32) -> u64 {
+    (u64::from(curve_res) + 1) * 4 + 1
+}
+
+/// The budget error, shared by the skeleton and mesh stages.
+pub fn budget_error(what: &str, need: u64, max: u32) -> SylvaError {
+    SylvaError::Budget {
+        param: "max_vertices".into(),
+        message: format!(
+            "this tree would need {what}{need} vertices, more than the max_vertices budget of {max}: \
+             lower Levels or Branches, or raise Max Vertices"
+        ),
+    }
+}
+
+struct Builder<'a> {
+    p: &'a TreeParams,
+    stems: Vec<Stem>,
+    /// Error-diffusion remainders of fractional branch counts, per level.
+    carry: [f32; 4],
+    vertex_floor: u64,
+    crown_base: f32,
+}
+
+/// Build the skeleton. Fails only on the vertex budget (parameters are validated before).
+pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
+    let mut rng = Rng::new(u64::from(p.seed), "skeleton");
+    let scale = (p.scale + rng.var(p.scale_v)).max(0.01);
+    let l0 = &p.level[0];
+    let length = ((l0.length + rng.var(l0.length_v)) * scale).max(MIN_LENGTH);
+    let radius = (length * p.ratio).max(MIN_RADIUS);
+    let mut b = Builder { p, stems: Vec::new(), carry: [0.0; 4], vertex_floor: 0, crown_base: p.base_size * scale };
+    let frame = Quat::IDENTITY; // stem local +Y = world up; local +X = the bending axis.
+    b.grow(0, None, 0.0, Vec3::ZERO, frame, length, radius, 0.0, rng)?;
+    Ok(Skeleton { stems: b.stems, scale, crown_base: b.crown_base })
+}
+
+impl Builder<'_> {
+    /// Grow one stem from `base` with orientation `frame` (local +Y along the stem, local +X the
+    /// axis that positive Curve bends around), then its children. Returns nothing; pushes stems.
+    fn grow(
+        &mut self,
+        level: usize,
+        parent: Option<u32>,
+        offset: f32,
+        base: Vec3,
+        mut frame: Quat,
+        length: f32,
+        radius: f32,
+        down_angle: f32,
+        mut rng: Rng,
+    ) -> Result<(), SylvaError> {
+        let p = self.p;
+        let lp = &p.level[level];
+        let segs = lp.curve_res.max(1) as usize;
+        self.vertex_floor += min_vertices(lp.curve_res);
+        if self.vertex_floor > u64::from(p.max_vertices) {
+            return Err(budget_error("at least ", self.vertex_floor, p.max_vertices));
+        }
+        let seg_len = length / segs as f32;
+        let mut points = Vec::with_capacity(segs + 1);
+        points.push(base);
+        let base_normal = frame * Vec3::X;
+        let mut pos = base;
+        for i in 0..segs {
+            if i > 0 {
+                let bend = if lp.curve_back == 0.0 {
+                    lp.curve / segs as f32
+                } else if i < segs.div_ceil(2) {
+                    2.0 * lp.curve / segs as f32
+                } else {
+                    2.0 * lp.curve_back / segs as f32
+                };
+                let bend = bend + rng.var(lp.curve_v) / segs as f32;
+                frame = (frame * Quat::from_rotation_x(rad(bend))).normalize();
+                if level >= 2 && p.attraction_up != 0.0 {
+                    frame = attract_up(frame, p.attraction_up, segs);
+                }
+            }
+            pos += (frame * Vec3::Y) * seg_len;
+            points.push(pos);
+        }
+        let index = self.stems.len() as u32;
+        self.stems.push(Stem {
+            level: level as u8,
+            parent,
+            offset,
+            points,
+            base_normal,
+            length,
+            radius,
+            taper: lp.taper,
+            flare: if level == 0 { p.flare } else { 0.0 },
+            down_angle,
+        });
+        if level + 1 < p.levels as usize {
+            self.grow_children(level, index, &mut rng)?;
+        }
+        Ok(())
+    }
+
+    fn grow_children(&mut self, level: usize, index: u32, rng: &mut Rng) -> Result<(), SylvaError> {
+        let p = self.p;
+        let child = level + 1;
+        let cp = &p.level[child];
+        let stem = self.stems[index as usize].clone();
+        let parent_len = stem.parent.map_or(stem.length, |i| self.stems[i as usize].length);
+        // How many children (W&P §4.3), fractional counts carried over by error diffusion.
+        let wanted = match child {
+            1 => cp.branches as f32,
+            2 => {
+                let max_child = (p.level[1].length + p.level[1].length_v).max(1e-6);
+                cp.branches as f32 * (0.2 + 0.8 * (stem.length / parent_len) / max_child)
+            }
+            _ => cp.branches as f32 * (1.0 - 0.5 * stem.offset / parent_len),
+        }
+        .max(0.0);
+        let exact = wanted + self.carry[child];
+        let count = exact.floor().max(0.0);
+        self.carry[child] = exact - count;
+        let count = count as usize;
+        if count == 0 {
+            return Ok(());
+        }
+        let start = if level == 0 { self.crown_base.min(stem.length) } else { 0.0 };
+        let mut rot = 0.0f32;
+        for i in 0..count {
+            let mut crng = rng.split();
+            let offset = start + (stem.length - start) * (i as f32 + 0.5) / count as f32;
+            // Crown position r: 1 at the crown base, 0 at the top (ANCHORS §2).
+            let crown_r = if stem.length - start > 0.0 { (stem.length - offset) / (stem.length - start) } else { 0.0 };
+            let length = if child == 1 {
+                stem.length * (cp.length + crng.var(cp.length_v)) * p.crown().ratio(crown_r)
+            } else {
+                (cp.length + crng.var(cp.length_v)) * (stem.length - 0.6 * offset)
+            };
+            let mut down = if cp.down_angle_v >= 0.0 {
+                cp.down_angle + crng.var(cp.down_angle_v)
+            } else {
+                let along = (stem.length - offset) / stem.length;
+                cp.down_angle + cp.down_angle_v * (1.0 - 2.0 * CrownShape::Conical.ratio(along))
+            };
+            if child == 1 {
+                down += p.angle_spread * (2.0 * CrownShape::Conical.ratio(crown_r) - 1.0);
+            }
+            rot = if cp.rotate >= 0.0 {
+                rot + cp.rotate + crng.var(cp.rotate_v)
+            } else {
+                let side = if i % 2 == 0 { 1.0 } else { -1.0 };
+                side * (180.0 + cp.rotate) + crng.var(cp.rotate_v)
+            };
+            if length < MIN_LENGTH {
+                continue;
+            }
+            let radius = (stem.radius * pow(length / stem.length, p.ratio_power))
+                .min(stem.radius_at(offset / stem.length))
+                .max(MIN_RADIUS);
+            let (pos, dir) = stem.point_at(offset);
+            // Parent frame at the attachment point: its +Y along `dir`, +X transported from the base.
+            let x = (stem.base_normal - dir * stem.base_normal.dot(dir)).normalize_or(dir.any_orthonormal_vector());
+            let parent_frame = Quat::from_mat3(&glam::Mat3::from_cols(x, dir, x.cross(dir)));
+            let frame = (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize();
+            self.grow(child, Some(index), offset, pos, frame, length, radius, down, crng)?;
+        }
+        Ok(())
+    }
+}
+
+/// Weber & Penn AttractionUp: turn the stem toward the sky by `attraction * declination / segs`
+/// (or toward the ground when negative), never past vertical.
+fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
+    let dir = frame * Vec3::Y;
+    let declination = acos(dir.y);
+    let axis = dir.cross(Vec3::Y);
+    if axis.length_squared() < 1e-12 {
+        return frame;
+    }
+    let turn = (attraction * declination / segs as f32).clamp(-(PI - declination), declination);
+    (Quat::from_axis_angle(axis.normalize(), turn) * frame).normalize()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn taper_modes() {
+        // Cone to a point, cylinder, half taper.
+        assert!((taper_radius(1.0, 1.0, 10.0, 0.5) - 0.5).abs() < 1e-6);
+        assert_eq!(taper_radius(1.0, 0.0, 10.0, 0.9), 1.0);
+        assert!((taper_radius(1.0, 0.5, 10.0, 1.0) - 0.5).abs() < 1e-6);
+        // 1 < taper <= 2: full radius until one radius from the tip, then a hemisphere closing to 0.
+        assert!((taper_radius(1.0, 2.0, 10.0, 0.5) - 1.0).abs() < 1e-6);
+        assert!(taper_radius(1.0, 2.0, 10.0, 1.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn flare_only_near_ground() {
+        assert!((flare_factor(1.0, 0.0) - 1.99).abs() < 1e-5);
+        assert_eq!(flare_factor(1.0, 0.2), 1.0);
+        assert_eq!(flare_factor(0.0, 0.0), 1.0);
+    }
+
+    #[test]
+    fn trunk_first_children_inside_crown() {
+        let p = TreeParams::default();
+        let s = build(&p).unwrap();
+        assert_eq!(s.stems[0].level, 0);
+        assert_eq!(s.stems.iter().filter(|st| st.level == 1).count(), 50);
+        for st in s.stems.iter().filter(|st| st.level == 1) {
+            assert!(st.offset >= s.crown_base - 1e-4, "branch below crown base");
+            assert!(st.radius <= s.stems[0].radius_at(st.offset / s.stems[0].length) + 1e-6);
+        }
+        // Every child starts on its parent's axis.
+        for st in &s.stems[1..] {
+            let parent = &s.stems[st.parent.unwrap() as usize];
+            let (pt, _) = parent.point_at(st.offset);
+            assert!(pt.distance(st.base()) < 1e-4);
+        }
+    }
+
+    #[test]
+    fn editing_a_deeper_level_keeps_the_upper_levels() {
+        let a = build(&TreeParams::default()).unwrap();
+        let mut p = TreeParams::default();
+        p.level[2].curve_v = 10.0;
+        let b = build(&p).unwrap();
+        let level1 = |s: &Skeleton| s.stems.iter().filter(|st| st.level <= 1).map(|st| st.tip()).collect::<Vec<_>>();
+        assert_eq!(level1(&a), level1(&b));
+    }
+
+    #[test]
+    fn runaway_tree_hits_the_budget_early() {
+        let mut p = TreeParams::default();
+        p.levels = 4;
+        p.level[1].branches = 500;
+        p.level[2].branches = 500;
+        p.level[3].branches = 500;
+        p.max_vertices = 100_000;
+        let e = build(&p).unwrap_err();
+        assert!(matches!(e, SylvaError::Budget { .. }), "{e}");
+        assert!(e.message().contains("max_vertices budget of 100000"), "{e}");
+    }
+}

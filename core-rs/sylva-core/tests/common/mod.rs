@@ -1,0 +1,64 @@
+//! Mesh invariant checks shared by the integration tests (standing rule 6).
+
+use std::collections::HashMap;
+use sylva_core::{Generated, TreeMesh};
+
+/// Edges keyed by welded vertex ids (vertices with bit-identical positions are one vertex, so
+/// the duplicated UV seam does not count as an open edge). Value = number of triangles using it.
+pub fn edge_uses(mesh: &TreeMesh) -> HashMap<(u32, u32), u32> {
+    let mut weld: HashMap<[u32; 3], u32> = HashMap::new();
+    let ids: Vec<u32> = mesh
+        .positions
+        .chunks_exact(3)
+        .enumerate()
+        .map(|(i, p)| *weld.entry([p[0].to_bits(), p[1].to_bits(), p[2].to_bits()]).or_insert(i as u32))
+        .collect();
+    let mut edges = HashMap::new();
+    for t in mesh.indices.chunks_exact(3) {
+        for k in 0..3 {
+            let (a, b) = (ids[t[k] as usize], ids[t[(k + 1) % 3] as usize]);
+            *edges.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+        }
+    }
+    edges
+}
+
+/// Assert every geometric invariant of standing rule 6 on a generated tree.
+pub fn assert_mesh_invariants(g: &Generated, name: &str) {
+    let m = &g.mesh;
+    let n = m.vertex_count();
+    assert!(n > 0, "{name}: empty mesh");
+    assert_eq!(m.positions.len(), n * 3, "{name}: positions length");
+    assert_eq!(m.normals.len(), n * 3, "{name}: normals length");
+    assert_eq!(m.uvs.len(), n * 2, "{name}: uvs length");
+    assert_eq!(m.indices.len() % 3, 0, "{name}: indices not triangles");
+    assert!(m.indices.iter().all(|&i| (i as usize) < n), "{name}: index out of range");
+    assert!(m.positions.iter().chain(&m.normals).chain(&m.uvs).all(|v| v.is_finite()), "{name}: non-finite value");
+    for (i, nm) in m.normals.chunks_exact(3).enumerate() {
+        let len = (nm[0] * nm[0] + nm[1] * nm[1] + nm[2] * nm[2]).sqrt();
+        assert!((len - 1.0).abs() < 1e-3, "{name}: normal {i} has length {len}");
+    }
+    let covered: u32 = m.groups.iter().map(|g| g.count).sum();
+    assert_eq!(covered as usize, m.indices.len(), "{name}: groups do not cover the indices");
+    let p = |i: u32| {
+        let k = i as usize * 3;
+        glam::Vec3::new(m.positions[k], m.positions[k + 1], m.positions[k + 2])
+    };
+    let nrm = |i: u32| {
+        let k = i as usize * 3;
+        glam::Vec3::new(m.normals[k], m.normals[k + 1], m.normals[k + 2])
+    };
+    let mut inverted = 0usize;
+    for (ti, t) in m.indices.chunks_exact(3).enumerate() {
+        let (a, b, c) = (p(t[0]), p(t[1]), p(t[2]));
+        let cross = (b - a).cross(c - a);
+        assert!(cross.length() > 0.0, "{name}: triangle {ti} is degenerate");
+        // Winding: counter-clockwise from outside = geometric normal agrees with the vertex normals.
+        if cross.dot(nrm(t[0]) + nrm(t[1]) + nrm(t[2])) <= 0.0 {
+            inverted += 1;
+        }
+    }
+    assert_eq!(inverted, 0, "{name}: {inverted} triangles wound against their normals");
+    let b = g.bounds;
+    assert!(b.min[1] >= -1e-3 && b.max[1] > 0.0, "{name}: tree not standing on the ground: {b:?}");
+}

@@ -1,0 +1,102 @@
+//! WebAssembly binding of `sylva-core`. It only converts between JS and the core: JSON strings
+//! in, typed arrays and JSON strings out. Errors are thrown as a JSON string of
+//! `sylva_core::SylvaError` (`{"kind", "param"?, "message"}`); a Rust panic traps the instance
+//! after the panic hook stored its message, which `take_panic()` hands to the worker so it can
+//! report it and start a fresh instance.
+
+use std::sync::Mutex;
+use sylva_core::{params::TreeParams, presets, Clock, Generated};
+use wasm_bindgen::prelude::*;
+
+static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
+
+#[wasm_bindgen]
+extern "C" {
+    #[wasm_bindgen(js_namespace = performance, js_name = now)]
+    fn performance_now() -> f64;
+}
+
+struct PerfClock;
+impl Clock for PerfClock {
+    fn now_ms(&self) -> f64 {
+        performance_now()
+    }
+}
+
+/// Runs when the module is instantiated: installs the panic hook.
+#[wasm_bindgen(start)]
+pub fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        let msg = info.to_string();
+        if let Ok(mut slot) = LAST_PANIC.lock() {
+            *slot = Some(msg);
+        }
+    }));
+}
+
+/// The message of the last Rust panic, if any (cleared by reading).
+#[wasm_bindgen]
+pub fn take_panic() -> Option<String> {
+    LAST_PANIC.lock().ok().and_then(|mut s| s.take())
+}
+
+/// Panics on purpose, to test the worker's recovery path.
+#[wasm_bindgen]
+pub fn debug_panic() {
+    panic!("debug_panic: deliberate panic requested by a test");
+}
+
+/// Version of the core.
+#[wasm_bindgen]
+pub fn core_version() -> String {
+    sylva_core::VERSION.to_string()
+}
+
+/// The parameter registry as JSON (`ParamSpec[]`).
+#[wasm_bindgen]
+pub fn registry_json() -> String {
+    sylva_core::params::registry_json()
+}
+
+/// The presets as JSON.
+#[wasm_bindgen]
+pub fn presets_json() -> String {
+    presets::presets_json()
+}
+
+/// A generated tree. Each getter returns a fresh typed-array copy whose buffer the worker can
+/// transfer. Layout of the buffers: see `sylva_core::TreeMesh`.
+#[wasm_bindgen]
+pub struct GeneratedTree(Generated);
+
+#[wasm_bindgen]
+impl GeneratedTree {
+    /// `x, y, z` per vertex.
+    pub fn positions(&self) -> Vec<f32> {
+        self.0.mesh.positions.clone()
+    }
+    /// Unit normal per vertex.
+    pub fn normals(&self) -> Vec<f32> {
+        self.0.mesh.normals.clone()
+    }
+    /// `u, v` per vertex.
+    pub fn uvs(&self) -> Vec<f32> {
+        self.0.mesh.uvs.clone()
+    }
+    /// Triangle list (u32).
+    pub fn indices(&self) -> Vec<u32> {
+        self.0.mesh.indices.clone()
+    }
+    /// Counts, hash, bounds, groups and timings as JSON.
+    pub fn meta_json(&self) -> String {
+        self.0.meta_json()
+    }
+}
+
+/// Generate a tree from a JSON object of parameter values (`{"id": number}`); missing ids take
+/// their defaults. Throws a JSON `SylvaError` string on invalid input or a budget overrun.
+#[wasm_bindgen]
+pub fn generate(params_json: &str) -> Result<GeneratedTree, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    sylva_core::generate_with_clock(&params, &PerfClock).map(GeneratedTree).map_err(|e| JsValue::from_str(&e.to_json()))
+}

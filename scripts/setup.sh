@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# One setup for every entry point (npm start, npm test, npm run build/bench/lint).
+# Idempotent: each step checks before it acts, so a second run with nothing changed takes seconds.
+#   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build
+#   scripts/setup.sh --test     the same, plus Chromium for the Playwright tests
+#   scripts/setup.sh --native   the same as plain (the bench also builds the native CLI itself)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+WANT_TEST=0
+for a in "$@"; do [ "$a" = "--test" ] && WANT_TEST=1; done
+
+WASM_BINDGEN_VERSION=$(sed -n 's/^wasm-bindgen = "=\(.*\)"/\1/p' core-rs/sylva-wasm/Cargo.toml)
+step() { printf '\033[1;32m[setup]\033[0m %s\n' "$*"; }
+die() { printf '\033[1;31m[setup] error:\033[0m %s\n' "$*" >&2; exit 1; }
+
+command -v cargo >/dev/null || die "cargo not found: install Rust from https://rustup.rs, then run this again"
+command -v node >/dev/null || die "node not found: install Node.js 20.19 or newer"
+node -e 'const [a,b]=process.versions.node.split(".").map(Number); process.exit(a>20||(a===20&&b>=19)?0:1)' \
+  || die "Node.js $(node --version) is too old: Vite 8 needs 20.19 or newer"
+
+# 1. npm dependencies, from the lockfile, only when the lockfile changed since the last install.
+lock_sum=$(sha256sum package-lock.json | cut -d' ' -f1)
+if [ ! -f node_modules/.sylva-lock ] || [ "$(cat node_modules/.sylva-lock)" != "$lock_sum" ]; then
+  step "npm ci"
+  npm ci --no-audit --no-fund
+  echo "$lock_sum" > node_modules/.sylva-lock
+fi
+
+# 2. The wasm32 target.
+if command -v rustup >/dev/null; then
+  if ! rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+    step "rustup target add wasm32-unknown-unknown"
+    rustup target add wasm32-unknown-unknown
+  fi
+else
+  rustc --print target-libdir --target wasm32-unknown-unknown >/dev/null 2>&1 \
+    || die "no rustup and no wasm32-unknown-unknown standard library: install the target for your Rust"
+fi
+
+# 3. The wasm-bindgen CLI, the exact version the binding crate pins (a mismatch breaks the glue).
+if [ "$(wasm-bindgen --version 2>/dev/null | cut -d' ' -f2)" != "$WASM_BINDGEN_VERSION" ]; then
+  step "cargo install wasm-bindgen-cli $WASM_BINDGEN_VERSION (compiles once, about 6 minutes)"
+  cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION"
+fi
+
+# 4. The release wasm build and its JS glue in web/src/wasm (cargo itself is a no-op when nothing changed).
+step "cargo build sylva-wasm (release, wasm32)"
+cargo build --quiet --release --target wasm32-unknown-unknown -p sylva-wasm
+WASM=target/wasm32-unknown-unknown/release/sylva_wasm.wasm
+OUT=web/src/wasm
+if [ ! -f "$OUT/sylva_wasm_bg.wasm" ] || [ "$WASM" -nt "$OUT/sylva_wasm_bg.wasm" ]; then
+  step "wasm-bindgen -> $OUT"
+  wasm-bindgen --target web --out-dir "$OUT" "$WASM"
+fi
+
+# 5. For tests: Chromium from the system (Playwright's own browser download is never used).
+if [ "$WANT_TEST" = 1 ]; then
+  CHROMIUM=${SYLVA_CHROMIUM:-/usr/bin/chromium}
+  if [ ! -x "$CHROMIUM" ]; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+      step "apt-get install chromium"
+      apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null
+    else
+      die "Chromium is needed for the browser tests and $CHROMIUM is missing: install it (Debian/Ubuntu: sudo apt-get install chromium) or set SYLVA_CHROMIUM to a Chromium binary"
+    fi
+  fi
+fi
+step "ready ($(( SECONDS ))s)"
+cd "$ROOT"

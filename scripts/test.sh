@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Every test, in the order that fails fastest. Called by `npm test` after scripts/setup.sh --test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+step() { printf '\n\033[1;36m[test]\033[0m %s\n' "$*"; }
+
+step "lint (rustfmt, clippy -D warnings, eslint, prettier)"
+bash scripts/lint.sh
+step "Rust: cargo test --workspace"
+cargo test --workspace --quiet
+step "wasm vs native: same content hashes"
+node scripts/wasm-parity.mjs
+step "Vitest"
+npm run test -w web
+step "build the web app"
+npm run build -w web
+step "Playwright (Chromium)"
+npm run test -w e2e

@@ -1,0 +1,38 @@
+// Standing rule 5: the wasm build (run in Node) must give byte-identical buffers to the native
+// build. Compares the content hash of every preset and a spread of seeds with `sylva generate`.
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
+wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+
+execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
+const native = (args) =>
+  JSON.parse(execFileSync(`${root}/target/release/sylva`, ['generate', ...args], { encoding: 'utf8' }));
+
+const cases = [];
+for (const preset of JSON.parse(wasm.presets_json())) {
+  cases.push({ name: `preset ${preset.name}`, values: preset.values, args: ['--preset', preset.name] });
+}
+for (const seed of [0, 7, 123456, 4294967295]) {
+  cases.push({ name: `seed ${seed}`, values: { seed }, args: ['--seed', String(seed)] });
+}
+let passed = 0;
+let failed = 0;
+for (const c of cases) {
+  const tree = wasm.generate(JSON.stringify(c.values));
+  const w = JSON.parse(tree.meta_json()).hash;
+  tree.free();
+  const n = native(c.args).hash;
+  if (w === n) {
+    passed++;
+    console.log(`ok   ${c.name}: ${w}`);
+  } else {
+    failed++;
+    console.log(`FAIL ${c.name}: wasm ${w} != native ${n}`);
+  }
+}
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
