@@ -1,7 +1,8 @@
 //! `sylva`: the command line of Sylva's core.
 //!
 //! ```text
-//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj]
+//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton]
+//! sylva envelope --shape NAME [--samples N]
 //! sylva params [--markdown]
 //! sylva presets
 //! sylva bench [--preset NAME] [--runs N] [--json]
@@ -13,7 +14,8 @@ use sylva_core::params::{registry, ParamKind, TreeParams};
 use sylva_core::{presets, SylvaError};
 
 const USAGE: &str = "usage:
-  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj]
+  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton]
+  sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
   sylva bench [--preset NAME] [--runs N] [--json]";
@@ -22,7 +24,9 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     match run(&args) {
         Ok(out) => {
-            println!("{out}");
+            // A closed pipe (`sylva params | head`) is not an error worth a panic.
+            use std::io::Write;
+            let _ = writeln!(std::io::stdout().lock(), "{out}");
             ExitCode::SUCCESS
         }
         Err(msg) => {
@@ -42,6 +46,7 @@ fn run(args: &[String]) -> Result<String, String> {
             sylva_core::params::registry_json()
         }),
         "presets" => Ok(presets::presets_json()),
+        "envelope" => envelope(rest),
         "bench" => bench(rest),
         "--help" | "-h" | "help" => Ok(USAGE.to_string()),
         "--version" => Ok(sylva_core::VERSION.to_string()),
@@ -55,6 +60,7 @@ struct Opts {
     out: Option<String>,
     runs: usize,
     json: bool,
+    report: Vec<String>,
 }
 
 fn parse(args: &[String]) -> Result<Opts, String> {
@@ -63,6 +69,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
     let mut out = None;
     let mut runs = 30;
     let mut json = false;
+    let mut report = Vec::new();
     let mut it = args.iter();
     while let Some(a) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
@@ -77,6 +84,13 @@ fn parse(args: &[String]) -> Result<Opts, String> {
             "--out" => out = Some(value("--out")?),
             "--runs" => runs = value("--runs")?.parse().map_err(|_| "--runs takes a whole number".to_string())?,
             "--json" => json = true,
+            "--report" => {
+                let what = value("--report")?;
+                if what != "skeleton" {
+                    return Err(format!("--report takes 'skeleton', got '{what}'"));
+                }
+                report.push(what);
+            }
             other => return Err(format!("unknown option '{other}'\n{USAGE}")),
         }
     }
@@ -94,7 +108,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
         let num = parse_value(&k, &v)?;
         params.set(&k, num).map_err(|e| e.to_string())?;
     }
-    Ok(Opts { params, out, runs: runs.max(1), json })
+    Ok(Opts { params, out, runs: runs.max(1), json, report })
 }
 
 /// A `--set` value: a number, `true`/`false`, or an enum option label.
@@ -131,15 +145,62 @@ fn generate(args: &[String]) -> Result<String, String> {
     }
     let ms: serde_json::Map<String, serde_json::Value> =
         g.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
-    Ok(serde_json::json!({
+    let mut out = serde_json::json!({
         "vertices": g.stats.vertices,
         "triangles": g.stats.triangles,
         "stems": g.stats.stems,
         "hash": g.hash_hex(),
         "ms": ms,
         "total_ms": g.stats.total_ms,
-    })
-    .to_string())
+    });
+    if opts.report.iter().any(|r| r == "skeleton") {
+        let stems: Vec<serde_json::Value> = g
+            .skeleton
+            .stems
+            .iter()
+            .map(|s| {
+                serde_json::json!({
+                    "level": s.level,
+                    "parent": s.parent,
+                    "base_height": s.base().y,
+                    "length": s.length,
+                    "radius": s.radius,
+                    "down_angle": s.down_angle,
+                    "split_clone": s.chain_start > 0.0,
+                })
+            })
+            .collect();
+        out["skeleton"] = serde_json::Value::Array(stems);
+    }
+    Ok(out.to_string())
+}
+
+/// `sylva envelope --shape NAME [--samples N]`: `[[r, ShapeRatio(r)], ...]`, r from 0 (top) to 1 (crown base).
+fn envelope(args: &[String]) -> Result<String, String> {
+    let mut shape = None;
+    let mut samples = 101usize;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let v = it.next().ok_or_else(|| format!("{a} needs a value"))?;
+        match a.as_str() {
+            "--shape" => {
+                let names = sylva_core::CrownShape::LABELS.join(", ");
+                shape = Some(
+                    sylva_core::CrownShape::from_name(v)
+                        .ok_or_else(|| format!("unknown crown shape '{v}' (known: {names})"))?,
+                );
+            }
+            "--samples" => {
+                samples = v.parse().map_err(|_| "--samples takes a whole number".to_string())?;
+                if !(2..=100_000).contains(&samples) {
+                    return Err(format!("--samples must be between 2 and 100000, got {samples}"));
+                }
+            }
+            other => return Err(format!("unknown option '{other}'\n{USAGE}")),
+        }
+    }
+    let shape = shape.ok_or("--shape is required")?;
+    serde_json::to_string(&sylva_core::crown::envelope_profile(shape, samples)).map_err(|e| e.to_string())
 }
 
 fn median(v: &mut [f64]) -> f64 {

@@ -63,6 +63,8 @@ pub struct Generated {
     pub hash: u64,
     /// Counts and timings.
     pub stats: Stats,
+    /// Crown envelope for the viewer's preview: `[height, radius]` pairs ([`crown::preview_profile`]).
+    pub envelope: Vec<[f32; 2]>,
 }
 
 impl Generated {
@@ -84,10 +86,14 @@ impl Generated {
             "groups": self.mesh.groups,
             "stage_ms": stage_ms,
             "total_ms": self.stats.total_ms,
+            "envelope": self.envelope,
         })
         .to_string()
     }
 }
+
+/// Number of heights in the envelope preview profile.
+pub const ENVELOPE_SAMPLES: usize = 48;
 
 /// Generate a tree: validate, build the skeleton, sweep the surfaces, hash the buffers.
 pub fn generate(params: &TreeParams) -> Result<Generated, SylvaError> {
@@ -112,5 +118,6 @@ pub fn generate_with_clock(params: &TreeParams, clock: &dyn Clock) -> Result<Gen
         stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("hash", t3 - t2)],
         total_ms: t3 - t0,
     };
-    Ok(Generated { mesh, skeleton, bounds, hash, stats })
+    let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
+    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope })
 }

@@ -289,6 +289,12 @@ define_params! {
             "Overall size of the tree: trunk length = Scale x Trunk Length.";
         scale_v: f32 = 3.0; [0.0, 50.0, 0.1] "m", "Tree", "Scale Variation",
             "Random variation added to Scale (uniform in +/- this value).";
+        scale0: f32 = 1.0; [0.1, 5.0, 0.01] "", "Trunk", "Trunk Radius Scale",
+            "Extra scale of the trunk radius (Weber & Penn 0Scale).";
+        scale0_v: f32 = 0.0; [0.0, 2.0, 0.01] "", "Trunk", "Trunk Radius Scale Variation",
+            "Random variation of Trunk Radius Scale (uniform in +/- this value).";
+        base_splits: u32 = 0; [0, 8, 1] "", "Trunk", "Base Splits",
+            "Number of extra trunks the trunk splits into at its first joint (0BaseSplits).";
         ratio: f32 = 0.015; [0.001, 0.2, 0.001] "", "Tree", "Radius Ratio",
             "Trunk base radius as a fraction of the trunk length.";
         ratio_power: f32 = 1.2; [0.0, 5.0, 0.05] "", "Tree", "Ratio Power",
@@ -301,6 +307,18 @@ define_params! {
             "Fraction of the trunk, from the ground, that carries no branches; the crown starts above it.";
         angle_spread: f32 = 0.0; [-45.0, 45.0, 0.5] "°", "Crown", "Angle Spread",
             "Height-based down-angle offset: positive points top branches upward and base branches outward.";
+        show_preview: bool = false; [0, 1, 1] "", "Crown", "Show Preview",
+            "Viewer only: draw the crown envelope (maximum branch reach at each height) as a wireframe.";
+        prune_ratio: f32 = 0.0; [0.0, 1.0, 0.01] "", "Crown", "Prune Ratio",
+            "How strongly branches are shortened to fit the pruning envelope (0 = off, 1 = fully).";
+        prune_width: f32 = 0.5; [0.01, 5.0, 0.01] "", "Crown", "Prune Width",
+            "Width of the pruning envelope as a fraction of the tree scale.";
+        prune_width_peak: f32 = 0.5; [0.0, 1.0, 0.01] "", "Crown", "Prune Width Peak",
+            "Where the pruning envelope is widest, as a fraction of the crown from its base.";
+        prune_power_low: f32 = 0.5; [0.0, 10.0, 0.01] "", "Crown", "Prune Power Low",
+            "Curvature of the pruning envelope below its widest point.";
+        prune_power_high: f32 = 0.5; [0.0, 10.0, 0.01] "", "Crown", "Prune Power High",
+            "Curvature of the pruning envelope above its widest point.";
         flare: f32 = 0.6; [0.0, 5.0, 0.05] "", "Trunk", "Flare",
             "Widening of the trunk toward the ground over its lowest eighth.";
         lobes: u32 = 5; [0, 20, 1] "", "Trunk", "Lobes",
@@ -325,8 +343,14 @@ define_params! {
             "Total bend of the stem from base to tip (negative bends downward).", trunk: true;
         curve_back: f32 = [0.0, 0.0, 0.0, 0.0]; [-360.0, 360.0, 1.0] "°", "Curve Back",
             "Bend of the second half of the stem, for S-shaped stems (0 = one even bend).", trunk: true;
-        curve_v: f32 = [20.0, 50.0, 75.0, 0.0]; [0.0, 360.0, 1.0] "°", "Curve Variation",
-            "Random bend added per stem (uniform in +/- this value, spread over its segments).", trunk: true;
+        curve_v: f32 = [20.0, 50.0, 75.0, 0.0]; [-360.0, 360.0, 1.0] "°", "Curve Variation",
+            "Random bend per stem (uniform in +/- this value over its segments); negative winds the stem into a helix of that angle.", trunk: true;
+        seg_splits: f32 = [0.0, 0.0, 0.0, 0.0]; [0.0, 2.0, 0.01] "", "Segment Splits",
+            "Clones made at each joint of the stem (fractions accumulate: 0.25 = one split every four joints).", trunk: true;
+        split_angle: f32 = [0.0, 0.0, 0.0, 0.0]; [0.0, 180.0, 1.0] "°", "Split Angle",
+            "Angle between the clones of a split (less the stem's declination).", trunk: true;
+        split_angle_v: f32 = [0.0, 0.0, 0.0, 0.0]; [0.0, 180.0, 1.0] "°", "Split Angle Variation",
+            "Random variation of Split Angle (uniform in +/- this value).", trunk: true;
         down_angle: f32 = [0.0, 60.0, 45.0, 45.0]; [-179.0, 179.0, 1.0] "°", "Down Angle",
             "Angle between a branch and its parent stem.", trunk: false;
         down_angle_v: f32 = [0.0, -50.0, 10.0, 10.0]; [-179.0, 179.0, 1.0] "°", "Down Angle Variation",

@@ -10,7 +10,7 @@
 
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
-use crate::math::{acos, pow, rad, PI};
+use crate::math::{acos, pow, rad, PI, TAU};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
@@ -28,9 +28,9 @@ pub struct Stem {
     pub points: Vec<Vec3>,
     /// A unit vector perpendicular to the first segment: the reference for ring orientation.
     pub base_normal: Vec3,
-    /// Stem length (m).
+    /// Length of this record (m).
     pub length: f32,
-    /// Radius at the base before flare (m).
+    /// Radius at the base of this record before flare (m).
     pub radius: f32,
     /// Weber & Penn `nTaper` of this stem's level.
     pub taper: f32,
@@ -38,12 +38,21 @@ pub struct Stem {
     pub flare: f32,
     /// Down angle from the parent (degrees; 0 for the trunk).
     pub down_angle: f32,
+    /// Length of the whole Weber & Penn stem this record belongs to (differs for split clones).
+    pub chain_length: f32,
+    /// Base radius of the whole stem.
+    pub chain_radius: f32,
+    /// Fraction of the whole stem where this record starts (0, or the split point of a clone).
+    pub chain_start: f32,
+    /// True for the trunk record, which carries the Lobes.
+    pub lobed: bool,
 }
 
 impl Stem {
     /// Radius at fraction `z` (0 = base, 1 = tip) of the stem: W&P taper, plus flare on the trunk.
     pub fn radius_at(&self, z: f32) -> f32 {
-        taper_radius(self.radius, self.taper, self.length, z) * flare_factor(self.flare, z)
+        let zc = self.chain_start + z * (1.0 - self.chain_start);
+        taper_radius(self.chain_radius, self.taper, self.chain_length, zc) * flare_factor(self.flare, zc)
     }
 
     /// Base point of the stem.
@@ -130,8 +139,9 @@ pub struct Skeleton {
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
 const MIN_LENGTH: f32 = 1e-3;
-/// Smallest radius a stem gets (m), so tubes never collapse.
-const MIN_RADIUS: f32 = 1e-4;
+/// Smallest radius a stem gets (m): 1 mm keeps every ring wider than f32 rounding at tree
+/// heights, so no triangle collapses.
+const MIN_RADIUS: f32 = 1e-3;
 
 /// Lower bound of the vertices a stem will need in the mesh stage; used to stop runaway trees
 /// before they allocate (the mesh stage checks the exact count against the same budget).
@@ -155,85 +165,142 @@ struct Builder<'a> {
     stems: Vec<Stem>,
     /// Error-diffusion remainders of fractional branch counts, per level.
     carry: [f32; 4],
+    /// Error-diffusion remainders of fractional segment splits, per level.
+    split_carry: [f32; 4],
     vertex_floor: u64,
+    scale: f32,
     crown_base: f32,
+}
+
+/// Where and how a stem (or a clone made by a split) starts.
+struct StemStart {
+    level: usize,
+    parent: Option<u32>,
+    /// Distance along the parent record where this record starts.
+    offset: f32,
+    base: Vec3,
+    /// Local +Y along the stem, local +X the axis positive Curve bends around.
+    frame: Quat,
+    /// Full Weber & Penn length of the stem (for a clone: of the stem it split from).
+    length: f32,
+    /// Base radius of the whole stem.
+    radius: f32,
+    down_angle: f32,
+    /// First segment this record covers (0, or the split boundary for a clone).
+    first_seg: usize,
+    /// Per-segment turn back toward the original direction after splits (degrees).
+    correction: f32,
+    rng: Rng,
 }
 
 /// Build the skeleton. Fails only on the vertex budget (parameters are validated before).
 pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "skeleton");
-    let scale = (p.scale + rng.var(p.scale_v)).max(0.01);
+    let scale = (p.scale + rng.var(p.scale_v)).max(0.1);
     let l0 = &p.level[0];
     let length = ((l0.length + rng.var(l0.length_v)) * scale).max(MIN_LENGTH);
-    let radius = (length * p.ratio).max(MIN_RADIUS);
-    let mut b = Builder { p, stems: Vec::new(), carry: [0.0; 4], vertex_floor: 0, crown_base: p.base_size * scale };
-    let frame = Quat::IDENTITY; // stem local +Y = world up; local +X = the bending axis.
-    b.grow(0, None, 0.0, Vec3::ZERO, frame, length, radius, 0.0, rng)?;
+    let radius = (length * p.ratio * (p.scale0 + rng.var(p.scale0_v))).max(MIN_RADIUS);
+    let mut b = Builder {
+        p,
+        stems: Vec::new(),
+        carry: [0.0; 4],
+        split_carry: [0.0; 4],
+        vertex_floor: 0,
+        scale,
+        crown_base: p.base_size * length,
+    };
+    b.grow(StemStart {
+        level: 0,
+        parent: None,
+        offset: 0.0,
+        base: Vec3::ZERO,
+        frame: Quat::IDENTITY,
+        length,
+        radius,
+        down_angle: 0.0,
+        first_seg: 0,
+        correction: 0.0,
+        rng,
+    })?;
     Ok(Skeleton { stems: b.stems, scale, crown_base: b.crown_base })
 }
 
 impl Builder<'_> {
-    /// Grow one stem from `base` with orientation `frame` (local +Y along the stem, local +X the
-    /// axis that positive Curve bends around), then its children. Returns nothing; pushes stems.
-    fn grow(
-        &mut self,
-        level: usize,
-        parent: Option<u32>,
-        offset: f32,
-        base: Vec3,
-        mut frame: Quat,
-        length: f32,
-        radius: f32,
-        down_angle: f32,
-        mut rng: Rng,
-    ) -> Result<(), SylvaError> {
+    /// Grow one stem record (tracing its segments, splitting off clones), then its children and
+    /// its clones. Records are pushed parents first.
+    fn grow(&mut self, s: StemStart) -> Result<(), SylvaError> {
         let p = self.p;
-        let lp = &p.level[level];
-        let segs = lp.curve_res.max(1) as usize;
+        let lp = &p.level[s.level];
         self.vertex_floor += min_vertices(lp.curve_res);
         if self.vertex_floor > u64::from(p.max_vertices) {
             return Err(budget_error("at least ", self.vertex_floor, p.max_vertices));
         }
-        let seg_len = length / segs as f32;
-        let mut points = Vec::with_capacity(segs + 1);
-        points.push(base);
-        let base_normal = frame * Vec3::X;
-        let mut pos = base;
-        for i in 0..segs {
-            if i > 0 {
-                let bend = if lp.curve_back == 0.0 {
-                    lp.curve / segs as f32
-                } else if i < segs.div_ceil(2) {
-                    2.0 * lp.curve / segs as f32
-                } else {
-                    2.0 * lp.curve_back / segs as f32
-                };
-                let bend = bend + rng.var(lp.curve_v) / segs as f32;
-                frame = (frame * Quat::from_rotation_x(rad(bend))).normalize();
-                if level >= 2 && p.attraction_up != 0.0 {
-                    frame = attract_up(frame, p.attraction_up, segs);
-                }
+        let mut rng = s.rng.clone();
+        let mut length = s.length;
+        if p.prune_ratio > 0.0 && s.level >= 1 && s.first_seg == 0 {
+            length = self.pruned_length(&s);
+            if length < (2.0 * s.radius).max(MIN_LENGTH) {
+                return Ok(()); // pruned to a stub that would sit inside its parent
             }
-            pos += (frame * Vec3::Y) * seg_len;
-            points.push(pos);
         }
+        let mut carry = self.split_carry[s.level];
+        let (points, clones) = trace(p, &s, length, &mut rng, Some(&mut carry));
+        self.split_carry[s.level] = carry;
+        let segs = lp.curve_res as usize;
+        let z0 = s.first_seg as f32 / segs as f32;
         let index = self.stems.len() as u32;
+        let record_len = length * (1.0 - z0);
+        let trunk = s.level == 0 && s.parent.is_none();
         self.stems.push(Stem {
-            level: level as u8,
-            parent,
-            offset,
+            level: s.level as u8,
+            parent: s.parent,
+            offset: s.offset,
+            base_normal: s.frame * Vec3::X,
             points,
-            base_normal,
-            length,
-            radius,
+            length: record_len.max(MIN_LENGTH),
+            radius: taper_radius(s.radius, lp.taper, length, z0).max(MIN_RADIUS),
             taper: lp.taper,
-            flare: if level == 0 { p.flare } else { 0.0 },
-            down_angle,
+            flare: if s.level == 0 { p.flare } else { 0.0 },
+            down_angle: s.down_angle,
+            chain_length: length,
+            chain_radius: s.radius,
+            chain_start: z0,
+            lobed: trunk,
         });
-        if level + 1 < p.levels as usize {
-            self.grow_children(level, index, &mut rng)?;
+        if s.level + 1 < p.levels as usize {
+            self.grow_children(s.level, index, &mut rng)?;
+        }
+        for mut c in clones {
+            c.parent = Some(index);
+            c.offset = (c.first_seg - s.first_seg) as f32 * length / segs as f32;
+            c.length = length;
+            self.grow(c)?;
         }
         Ok(())
+    }
+
+    /// Weber & Penn pruning: the longest length at which the stem stays inside the pruning
+    /// envelope (bisection), then `L - (L - L_fit) * PruneRatio`.
+    fn pruned_length(&self, s: &StemStart) -> f32 {
+        let p = self.p;
+        let fits = |len: f32| {
+            let mut rng = s.rng.clone();
+            let (pts, _) = trace(p, s, len, &mut rng, None);
+            pts.iter().all(|q| inside_prune_envelope(p, self.scale, *q))
+        };
+        if fits(s.length) {
+            return s.length;
+        }
+        let (mut lo, mut hi) = (0.0f32, s.length);
+        for _ in 0..12 {
+            let mid = 0.5 * (lo + hi);
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        s.length - (s.length - lo) * p.prune_ratio
     }
 
     fn grow_children(&mut self, level: usize, index: u32, rng: &mut Rng) -> Result<(), SylvaError> {
@@ -241,17 +308,27 @@ impl Builder<'_> {
         let child = level + 1;
         let cp = &p.level[child];
         let stem = self.stems[index as usize].clone();
-        let parent_len = stem.parent.map_or(stem.length, |i| self.stems[i as usize].length);
+        // Weber & Penn reason about whole stems: a clone's children use its stem's length.
+        let stem_len = stem.chain_length;
+        let chain_offset = stem.chain_start * stem_len;
+        let (parent_len, parent_offset) = match stem.parent {
+            Some(i) => {
+                let parent = &self.stems[i as usize];
+                (parent.chain_length, parent.chain_start * parent.chain_length + stem.offset)
+            }
+            None => (stem_len, 0.0),
+        };
         // How many children (W&P §4.3), fractional counts carried over by error diffusion.
         let wanted = match child {
             1 => cp.branches as f32,
             2 => {
                 let max_child = (p.level[1].length + p.level[1].length_v).max(1e-6);
-                cp.branches as f32 * (0.2 + 0.8 * (stem.length / parent_len) / max_child)
+                cp.branches as f32 * (0.2 + 0.8 * (stem_len / parent_len) / max_child)
             }
-            _ => cp.branches as f32 * (1.0 - 0.5 * stem.offset / parent_len),
+            _ => cp.branches as f32 * (1.0 - 0.5 * parent_offset / parent_len),
         }
-        .max(0.0);
+        .max(0.0)
+            * (stem.length / stem_len);
         let exact = wanted + self.carry[child];
         let count = exact.floor().max(0.0);
         self.carry[child] = exact - count;
@@ -259,23 +336,25 @@ impl Builder<'_> {
         if count == 0 {
             return Ok(());
         }
-        let start = if level == 0 { self.crown_base.min(stem.length) } else { 0.0 };
+        let start = if level == 0 { (self.crown_base - chain_offset).clamp(0.0, stem.length) } else { 0.0 };
         let mut rot = 0.0f32;
         for i in 0..count {
             let mut crng = rng.split();
             let offset = start + (stem.length - start) * (i as f32 + 0.5) / count as f32;
+            let along = chain_offset + offset;
             // Crown position r: 1 at the crown base, 0 at the top (ANCHORS §2).
-            let crown_r = if stem.length - start > 0.0 { (stem.length - offset) / (stem.length - start) } else { 0.0 };
+            let crown_span = stem_len - self.crown_base;
+            let crown_r = if crown_span > 0.0 { (stem_len - along) / crown_span } else { 0.0 };
             let length = if child == 1 {
-                stem.length * (cp.length + crng.var(cp.length_v)) * p.crown().ratio(crown_r)
+                stem_len * (cp.length + crng.var(cp.length_v)) * p.crown().ratio(crown_r)
             } else {
-                (cp.length + crng.var(cp.length_v)) * (stem.length - 0.6 * offset)
+                (cp.length + crng.var(cp.length_v)) * (stem_len - 0.6 * along)
             };
             let mut down = if cp.down_angle_v >= 0.0 {
                 cp.down_angle + crng.var(cp.down_angle_v)
             } else {
-                let along = (stem.length - offset) / stem.length;
-                cp.down_angle + cp.down_angle_v * (1.0 - 2.0 * CrownShape::Conical.ratio(along))
+                let r = (stem_len - along) / stem_len;
+                cp.down_angle + cp.down_angle_v * (1.0 - 2.0 * CrownShape::Conical.ratio(r))
             };
             if child == 1 {
                 down += p.angle_spread * (2.0 * CrownShape::Conical.ratio(crown_r) - 1.0);
@@ -286,25 +365,141 @@ impl Builder<'_> {
                 let side = if i % 2 == 0 { 1.0 } else { -1.0 };
                 side * (180.0 + cp.rotate) + crng.var(cp.rotate_v)
             };
-            if length < MIN_LENGTH {
-                continue;
-            }
-            let radius = (stem.radius * pow(length / stem.length, p.ratio_power))
+            let radius = (stem.chain_radius * pow(length / stem_len, p.ratio_power))
                 .min(stem.radius_at(offset / stem.length))
                 .max(MIN_RADIUS);
+            if length < (2.0 * radius).max(MIN_LENGTH) {
+                continue; // shorter than its own thickness: it would sit inside the parent
+            }
             let (pos, dir) = stem.point_at(offset);
             // Parent frame at the attachment point: its +Y along `dir`, +X transported from the base.
             let x = (stem.base_normal - dir * stem.base_normal.dot(dir)).normalize_or(dir.any_orthonormal_vector());
             let parent_frame = Quat::from_mat3(&glam::Mat3::from_cols(x, dir, x.cross(dir)));
             let frame = (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize();
-            self.grow(child, Some(index), offset, pos, frame, length, radius, down, crng)?;
+            self.grow(StemStart {
+                level: child,
+                parent: Some(index),
+                offset,
+                base: pos,
+                frame,
+                length,
+                radius,
+                down_angle: down,
+                first_seg: 0,
+                correction: 0.0,
+                rng: crng,
+            })?;
         }
         Ok(())
     }
 }
 
+/// Trace the centre polyline of one record: segments `first_seg..curve_res` of a stem of
+/// `length`, bending by Curve/CurveBack/CurveV (or winding as a helix for negative CurveV),
+/// turning up or down by AttractionUp, and, when `split_carry` is given, splitting into clones
+/// (SegSplits with error diffusion, BaseSplits at the trunk's first joint) that turn back toward
+/// the original direction over their remaining segments.
+fn trace(
+    p: &TreeParams,
+    s: &StemStart,
+    length: f32,
+    rng: &mut Rng,
+    mut split_carry: Option<&mut f32>,
+) -> (Vec<Vec3>, Vec<StemStart>) {
+    let lp = &p.level[s.level];
+    let segs = lp.curve_res.max(1) as usize;
+    let seg_len = length / segs as f32;
+    let mut points = Vec::with_capacity(segs + 1 - s.first_seg);
+    let mut clones = Vec::new();
+    points.push(s.base);
+    let mut frame = s.frame;
+    let mut pos = s.base;
+    let mut correction = s.correction;
+    let helix = lp.curve_v < 0.0;
+    for i in s.first_seg..segs {
+        if helix {
+            // Negative CurveV: the stem winds around its initial direction, tilted by |CurveV|.
+            let turn = TAU * i as f32 / segs as f32;
+            frame = s.frame * Quat::from_rotation_y(turn) * Quat::from_rotation_x(rad(-lp.curve_v));
+        } else if i > s.first_seg {
+            let bend = if lp.curve_back == 0.0 {
+                lp.curve / segs as f32
+            } else if i < segs.div_ceil(2) {
+                2.0 * lp.curve / segs as f32
+            } else {
+                2.0 * lp.curve_back / segs as f32
+            };
+            let bend = bend + rng.var(lp.curve_v) / segs as f32 + correction;
+            frame = (frame * Quat::from_rotation_x(rad(bend))).normalize();
+            if s.level >= 2 && p.attraction_up != 0.0 {
+                frame = attract_up(frame, p.attraction_up, segs);
+            }
+            if let Some(carry) = split_carry.as_deref_mut() {
+                let n = if s.level == 0 && i == 1 && p.base_splits > 0 {
+                    p.base_splits as usize
+                } else {
+                    let exact = lp.seg_splits + *carry;
+                    let n = exact.floor();
+                    *carry = exact - n;
+                    n as usize
+                };
+                if n > 0 {
+                    let base_split = s.level == 0 && i == 1 && p.base_splits > 0;
+                    let dir = frame * Vec3::Y;
+                    let declination = acos(dir.y).to_degrees();
+                    let angle = (lp.split_angle + rng.var(lp.split_angle_v) - declination).max(0.0);
+                    let remaining = (segs - i) as f32;
+                    for k in 1..=n {
+                        let spread = if base_split {
+                            360.0 * k as f32 / (n + 1) as f32
+                        } else {
+                            let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+                            let u = rng.next_f32();
+                            sign * (20.0 + 0.75 * (30.0 + (declination - 90.0).abs()) * u * u)
+                        };
+                        // W&P spread clones about the tree's vertical axis (not the stem's own axis,
+                        // which would leave a clone on top of its original when the angle is 0).
+                        let clone_frame =
+                            (Quat::from_rotation_y(rad(spread)) * frame * Quat::from_rotation_x(rad(angle)))
+                                .normalize();
+                        clones.push(StemStart {
+                            level: s.level,
+                            parent: None,
+                            offset: 0.0,
+                            base: pos,
+                            frame: clone_frame,
+                            length,
+                            radius: s.radius,
+                            down_angle: s.down_angle,
+                            first_seg: i,
+                            correction: correction - angle / remaining,
+                            rng: rng.split(),
+                        });
+                    }
+                    frame = (frame * Quat::from_rotation_x(rad(angle))).normalize();
+                    correction -= angle / remaining;
+                }
+            }
+        }
+        pos += (frame * Vec3::Y) * seg_len;
+        points.push(pos);
+    }
+    (points, clones)
+}
+
+/// Weber & Penn's pruning test: inside `PruneWidth * ShapeRatio(Envelope, ratio)` where
+/// `ratio = (scale - height) / (scale (1 - BaseSize))`.
+fn inside_prune_envelope(p: &TreeParams, scale: f32, q: Vec3) -> bool {
+    let denom = (scale * (1.0 - p.base_size)).max(1e-6);
+    let ratio = (scale - q.y) / denom;
+    let width =
+        p.prune_width * crate::crown::prune_envelope(ratio, p.prune_width_peak, p.prune_power_low, p.prune_power_high);
+    (q.x * q.x + q.z * q.z).sqrt() / scale < width
+}
+
 /// Weber & Penn AttractionUp: turn the stem toward the sky by `attraction * declination / segs`
-/// (or toward the ground when negative), never past vertical.
+/// (or toward the ground when negative). At most 90% of the way to vertical per segment, so a
+/// stem approaches vertical without ever landing exactly on it (stems never coincide).
 fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
     let dir = frame * Vec3::Y;
     let declination = acos(dir.y);
@@ -312,7 +507,7 @@ fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
     if axis.length_squared() < 1e-12 {
         return frame;
     }
-    let turn = (attraction * declination / segs as f32).clamp(-(PI - declination), declination);
+    let turn = (attraction * declination / segs as f32).clamp(-0.9 * (PI - declination), 0.9 * declination);
     (Quat::from_axis_angle(axis.normalize(), turn) * frame).normalize()
 }
 

@@ -35,7 +35,7 @@ fn tips_are_closed_only_buried_bases_stay_open() {
             .skeleton
             .stems
             .iter()
-            .filter(|s| s.level > 0)
+            .filter(|s| s.parent.is_some())
             .map(|s| sides_for(s.radius, p.mesh_quality, 0) as usize)
             .sum();
         assert_eq!(open, expected, "{}: open edges besides the buried stem bases", preset.name);
@@ -67,4 +67,34 @@ fn quality_changes_resolution_and_budget_stops_runaways() {
     let e = generate(&TreeParams { max_vertices: 10_000, ..TreeParams::default() }).unwrap_err();
     assert_eq!(e.to_json().split('"').nth(3), Some("budget"), "{e:?}");
     assert!(e.message().contains("max_vertices budget of 10000"), "{e}");
+}
+
+// Regressions: each found while bringing up the Weeping Willow preset.
+
+#[test]
+fn regression_trunk_cap_faces_down_under_strong_flare() {
+    // The base fan once reused the flared ring's up-tilted side normals: wound against them.
+    let g = generate(&TreeParams { flare: 5.0, ..TreeParams::default() }).unwrap();
+    assert_mesh_invariants(&g, "flare 5");
+}
+
+#[test]
+fn regression_split_clones_never_coincide_with_their_original() {
+    // With the split angle clamped to 0 and strong downward attraction, clones once landed
+    // exactly on top of their originals (edges shared by four triangles).
+    let mut p = TreeParams { attraction_up: -10.0, ..TreeParams::default() };
+    p.level[1].seg_splits = 0.5;
+    p.level[2].seg_splits = 0.5;
+    p.level[2].curve_v = 0.0;
+    let g = generate(&p).unwrap();
+    assert!(edge_uses(&g.mesh).values().all(|&u| u <= 2));
+    assert_mesh_invariants(&g, "clones");
+}
+
+#[test]
+fn regression_stems_pruned_to_nothing_are_dropped() {
+    // Pruning with a tiny envelope once left zero-length stems whose rings collapsed.
+    let g = generate(&TreeParams { prune_ratio: 1.0, prune_width: 0.02, ..TreeParams::default() }).unwrap();
+    assert_mesh_invariants(&g, "pruned");
+    assert!(g.skeleton.stems.iter().all(|s| s.length > 0.0));
 }

@@ -87,6 +87,10 @@ impl GeneratedTree {
     pub fn indices(&self) -> Vec<u32> {
         self.0.mesh.indices.clone()
     }
+    /// The crown envelope preview as line segments (`x, y, z` pairs of points).
+    pub fn envelope_lines(&self) -> Vec<f32> {
+        sylva_core::crown::preview_lines(&self.0.envelope, 16, 48)
+    }
     /// Counts, hash, bounds, groups and timings as JSON.
     pub fn meta_json(&self) -> String {
         self.0.meta_json()

@@ -138,7 +138,10 @@ const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
 
 impl Hasher {
     fn new() -> Self {
-        Hasher { lanes: [0xcbf2_9ce4_8422_2325, 0x8422_2325_cbf2_9ce4, 0x9e37_79b9_7f4a_7c15, 0x2545_f491_4f6c_dd1d], n: 0 }
+        Hasher {
+            lanes: [0xcbf2_9ce4_8422_2325, 0x8422_2325_cbf2_9ce4, 0x9e37_79b9_7f4a_7c15, 0x2545_f491_4f6c_dd1d],
+            n: 0,
+        }
     }
 
     /// Hash one buffer: word `k` of each group of four goes to lane `k` (independent multiply
@@ -201,6 +204,12 @@ impl MeshBuilder {
         self.mesh.normals.extend_from_slice(&n);
         self.mesh.uvs.extend_from_slice(&uv);
         i
+    }
+
+    /// Component `k` of the flat positions buffer written so far.
+    #[inline]
+    pub fn position(&self, k: usize) -> f32 {
+        self.mesh.positions[k]
     }
 
     /// Append one triangle (counter-clockwise seen from outside).

@@ -22,13 +22,15 @@ struct StemPlan {
 
 impl StemPlan {
     fn vertices(&self, trunk: bool) -> u64 {
-        self.rings.len() as u64 * (u64::from(self.sides) + 1) + 1 + u64::from(trunk)
+        let ring = u64::from(self.sides) + 1;
+        // Rings, the apex, and for the trunk a bottom cap (its own ring copy facing down + centre).
+        self.rings.len() as u64 * ring + 1 + if trunk { ring + 1 } else { 0 }
     }
 }
 
 /// Number of sides around a stem of base radius `r` (m) at the given quality.
 pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
-    let base = (quality * (4.0 + 28.0 * r.max(0.0).sqrt())).round() as u32;
+    let base = (quality * (3.0 + 30.0 * r.max(0.0).sqrt())).round() as u32;
     base.max((4 * lobes).min(96)).clamp(3, 96)
 }
 
@@ -39,10 +41,12 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
     let segs = stem.points.len() - 1;
     let dirs: Vec<Vec3> = stem.points.windows(2).map(|w| (w[1] - w[0]).normalize_or(Vec3::Y)).collect();
     for i in 0..segs {
-        // Subdivide a segment by the bend at its ends: about one ring per 12° of turn.
+        // Subdivide a segment by the bend at its ends: about one ring per 12° of turn on thick
+        // stems; thin stems tolerate more, since the chord error is what shows against the radius.
         let turn_in = if i > 0 { dirs[i - 1].angle_between(dirs[i]) } else { 0.0 };
         let turn_out = if i + 1 < segs { dirs[i].angle_between(dirs[i + 1]) } else { 0.0 };
-        let k = ((quality * turn_in.max(turn_out) / rad(12.0)).ceil() as usize).clamp(1, 8);
+        let per_ring = rad(12.0) / (stem.radius / 0.02).sqrt().clamp(0.25, 1.0);
+        let k = ((quality * turn_in.max(turn_out) / per_ring).ceil() as usize).clamp(1, 8);
         for j in 0..k {
             out.push((i as f32 + j as f32 / k as f32) / segs as f32);
         }
@@ -103,11 +107,11 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
         .map(|s| {
             let start = ts.len();
             plan_rings(s, q, &mut ts);
-            let lobes = if s.level == 0 { p.lobes } else { 0 };
+            let lobes = if s.lobed { p.lobes } else { 0 };
             StemPlan { rings: start..ts.len(), sides: sides_for(s.radius, q, lobes) }
         })
         .collect();
-    let vertices: u64 = plans.iter().zip(&skeleton.stems).map(|(pl, s)| pl.vertices(s.level == 0)).sum();
+    let vertices: u64 = plans.iter().zip(&skeleton.stems).map(|(pl, s)| pl.vertices(s.parent.is_none())).sum();
     if vertices > u64::from(p.max_vertices) {
         return Err(budget_error("", vertices, p.max_vertices));
     }
@@ -117,8 +121,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
     let mut tables: Vec<Option<Vec<(f32, f32)>>> = vec![None; 97];
     for (stem, plan) in skeleton.stems.iter().zip(&plans) {
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
-        let lobes =
-            if stem.level == 0 && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
+        let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
         sweep(stem, &ts[plan.rings.clone()], table, lobes, &mut out);
     }
     Ok(out.finish())
@@ -144,7 +147,8 @@ fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32)], lobes: Option<(u32, f32
         let (c, tan) = stem.sample(t);
         normal = (normal - tan * normal.dot(tan)).normalize_or(tan.any_orthonormal_vector());
         let binormal = tan.cross(normal);
-        let r = stem.radius_at(t);
+        // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
+        let r = stem.radius_at(t).max(0.05 * stem.radius);
         let eps = 1e-3f32;
         let (ta, tb) = ((t - eps).max(0.0), (t + eps).min(1.0));
         let slope = (stem.radius_at(tb) - stem.radius_at(ta)) / ((tb - ta) * stem.length);
@@ -183,11 +187,18 @@ fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32)], lobes: Option<(u32, f32
     for j in 0..sides as u32 {
         out.triangle(row + j, row + j + 1, apex);
     }
-    if stem.level == 0 {
-        // Trunk base: a fan closing the bottom ring.
-        let base = out.vertex(stem.base().to_array(), (-t0).to_array(), [0.5, 0.0]);
+    if stem.parent.is_none() {
+        // Trunk base: a flat cap with its own downward-facing copy of the bottom ring (a hard edge).
+        let down = (-t0).to_array();
+        let cap = out.next_index();
+        for j in 0..=sides as u32 {
+            let k = ((first + j) * 3) as usize;
+            let pos = [out.position(k), out.position(k + 1), out.position(k + 2)];
+            out.vertex(pos, down, [0.5 + 0.5 * circle[j as usize].0, 0.5 + 0.5 * circle[j as usize].1]);
+        }
+        let centre = out.vertex(stem.base().to_array(), down, [0.5, 0.5]);
         for j in 0..sides as u32 {
-            out.triangle(first + j + 1, first + j, base);
+            out.triangle(cap + j + 1, cap + j, centre);
         }
     }
 }

@@ -1,0 +1,118 @@
+//! The `sylva` binary end to end: output shapes, exit codes, messages, and the README's
+//! parameter reference staying in sync with the registry.
+
+use std::process::Command;
+
+fn sylva(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_sylva")).args(args).output().expect("run sylva");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+fn json(s: &str) -> serde_json::Value {
+    serde_json::from_str(s).unwrap_or_else(|e| panic!("not JSON ({e}): {s}"))
+}
+
+#[test]
+fn generate_prints_one_json_object() {
+    let (code, out, _) = sylva(&["generate", "--preset", "fir", "--seed", "3"]);
+    assert_eq!(code, 0);
+    let v = json(&out);
+    assert!(v["vertices"].as_u64().unwrap() > 1000);
+    assert!(v["triangles"].as_u64().unwrap() > 1000);
+    assert_eq!(v["hash"].as_str().unwrap().len(), 16);
+    for stage in ["skeleton", "mesh", "hash"] {
+        assert!(v["ms"][stage].as_f64().is_some(), "missing stage {stage}");
+    }
+}
+
+#[test]
+fn invalid_parameters_exit_2_with_the_validation_message() {
+    let (code, out, err) = sylva(&["generate", "--set", "l1_length=3"]);
+    assert_eq!(code, 2);
+    assert!(out.is_empty());
+    assert_eq!(err.trim(), "error: l1_length (Length) is 3: allowed range is 0 to 2");
+    let (code, _, err) = sylva(&["generate", "--set", "nope=1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown parameter 'nope'"), "{err}");
+    let (code, _, err) = sylva(&["generate", "--preset", "baobab"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown preset 'baobab'") && err.contains("weeping_willow"), "{err}");
+    let (code, _, err) = sylva(&["generate", "--set", "max_vertices=1000"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("max_vertices budget of 1000"), "{err}");
+}
+
+#[test]
+fn enum_values_by_name_and_obj_output() {
+    let dir = std::env::temp_dir().join(format!("sylva-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("t.obj");
+    let (code, out, err) =
+        sylva(&["generate", "--set", "shape=inverse-conical", "--set", "levels=2", "--out", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let v = json(&out);
+    let obj = std::fs::read_to_string(&path).unwrap();
+    assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count() as u64, v["vertices"].as_u64().unwrap());
+    assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count() as u64, v["triangles"].as_u64().unwrap());
+}
+
+#[test]
+fn report_skeleton_lists_stems() {
+    let (code, out, _) = sylva(&["generate", "--preset", "weeping", "--report", "skeleton"]);
+    assert_eq!(code, 0);
+    let v = json(&out);
+    let stems = v["skeleton"].as_array().unwrap();
+    assert_eq!(stems.len() as u64, v["stems"].as_u64().unwrap());
+    assert_eq!(stems[0]["level"], 0);
+    let l1 = stems.iter().find(|s| s["level"] == 1).unwrap();
+    for key in ["base_height", "length", "down_angle"] {
+        assert!(l1[key].as_f64().is_some(), "{key}");
+    }
+}
+
+#[test]
+fn envelope_prints_pairs_of_the_shape_ratio() {
+    let (code, out, _) = sylva(&["envelope", "--shape", "Conical", "--samples", "3"]);
+    assert_eq!(code, 0);
+    assert_eq!(json(&out), json("[[0.0,0.2],[0.5,0.6],[1.0,1.0]]"));
+    let (code, _, err) = sylva(&["envelope", "--shape", "blob"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("Tend Flame"), "{err}");
+}
+
+#[test]
+fn params_and_presets_are_json() {
+    let (_, out, _) = sylva(&["params"]);
+    let reg = json(&out);
+    assert!(reg.as_array().unwrap().iter().any(|p| p["id"] == "l1_down_angle"));
+    let (_, out, _) = sylva(&["presets"]);
+    let names: Vec<String> =
+        json(&out).as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap().to_string()).collect();
+    for want in [
+        "quaking_aspen",
+        "black_tupelo",
+        "weeping_willow",
+        "ca_black_oak",
+        "fir",
+        "oak",
+        "cypress",
+        "umbrella",
+        "weeping",
+    ] {
+        assert!(names.iter().any(|n| n == want), "missing preset {want}");
+    }
+}
+
+#[test]
+fn readme_parameter_reference_matches_the_registry() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../../README.md")).unwrap();
+    let (_, table, _) = sylva(&["params", "--markdown"]);
+    let start = readme.find("<!-- params:start -->").expect("README has the params:start marker");
+    let end = readme.find("<!-- params:end -->").expect("README has the params:end marker");
+    let section = readme[start + "<!-- params:start -->".len()..end].trim();
+    assert_eq!(section, table.trim(), "README parameter reference is stale: run `npm run docs`");
+}

@@ -1,0 +1,99 @@
+/** Side panel generated from the registry: presets, seed, Reset, and one section per group. */
+import { groupParams } from '../core/params';
+import type { ParamSpec, Params, Preset } from '../core/types';
+import { NumberField } from './NumberField';
+import { ParamControl } from './ParamControl';
+
+interface Props {
+  registry: readonly ParamSpec[];
+  presets: readonly Preset[];
+  params: Params;
+  activePreset: string | null;
+  version: string;
+  onChange: (id: string, value: number) => void;
+  onPreset: (name: string) => void;
+  onRandomize: () => void;
+  onReset: () => void;
+}
+
+/** The parameter editor; seed gets its own field with a Randomize button. */
+export function ParamPanel(props: Props) {
+  const { registry, presets, params, activePreset, onChange } = props;
+  const seedSpec = registry.find((s) => s.id === 'seed');
+  const groups = groupParams(registry.filter((s) => s !== seedSpec));
+  const activeDescription = presets.find((p) => p.name === activePreset)?.description ?? '';
+  return (
+    <aside className="panel" aria-label="Tree parameters">
+      <header className="panel-header">
+        <h1>Sylva</h1>
+        <span className="version" title="Core version">
+          core {props.version}
+        </span>
+      </header>
+
+      <div className="panel-block">
+        <label htmlFor="preset-picker" className="param-label">
+          Preset
+        </label>
+        <select
+          id="preset-picker"
+          data-testid="preset-picker"
+          value={activePreset ?? ''}
+          title={activeDescription}
+          onChange={(e) => props.onPreset(e.currentTarget.value)}
+        >
+          {activePreset === null ? (
+            <option value="" disabled>
+              Custom
+            </option>
+          ) : null}
+          {presets.map((p) => (
+            <option key={p.name} value={p.name} title={p.description}>
+              {p.label}
+            </option>
+          ))}
+        </select>
+      </div>
+
+      {seedSpec ? (
+        <div className="panel-block" title={seedSpec.description}>
+          <label htmlFor="seed-field" className="param-label">
+            {seedSpec.label}
+          </label>
+          <div className="param-row">
+            <NumberField
+              spec={seedSpec}
+              value={params[seedSpec.id] ?? seedSpec.default}
+              onCommit={(v) => onChange(seedSpec.id, v)}
+              className="seed-field"
+              id="seed-field"
+            />
+            <button type="button" data-testid="randomize" onClick={props.onRandomize}>
+              Randomize
+            </button>
+          </div>
+        </div>
+      ) : null}
+
+      <div className="panel-block panel-actions">
+        <button type="button" data-testid="reset" onClick={props.onReset}>
+          Reset to defaults
+        </button>
+      </div>
+
+      {groups.map(([group, specs], index) => (
+        <details key={group} className="group" open={index < 3} data-group={group}>
+          <summary>{group}</summary>
+          {specs.map((spec) => (
+            <ParamControl
+              key={spec.id}
+              spec={spec}
+              value={params[spec.id] ?? spec.default}
+              onChange={onChange}
+            />
+          ))}
+        </details>
+      ))}
+    </aside>
+  );
+}

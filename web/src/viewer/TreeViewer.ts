@@ -1,0 +1,208 @@
+/** The three.js scene: renderer, orbit camera, lights, ground and the tree mesh (render on demand). */
+import {
+  Color,
+  DirectionalLight,
+  DoubleSide,
+  Fog,
+  HemisphereLight,
+  LineBasicMaterial,
+  LineSegments,
+  Mesh,
+  MeshStandardMaterial,
+  CircleGeometry,
+  PCFShadowMap,
+  PerspectiveCamera,
+  Scene,
+  Sphere,
+  Vector3,
+  WebGLRenderer,
+  type BufferGeometry,
+} from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import type { TreeBuffers } from '../core/types';
+import { buildEnvelopeGeometry, buildTreeGeometry } from './geometry';
+
+/** Scene background (also used by the e2e test to tell the tree from the sky). */
+export const BACKGROUND_COLOR = '#dce6ec';
+const BARK_COLOR = '#5b3d26';
+const LEAF_COLOR = '#4c8a34';
+const GROUND_COLOR = '#b9b3a5';
+const VIEW_DIRECTION = new Vector3(0.75, 0.32, 1).normalize();
+
+/** Owns every three.js object of the viewer; mesh data lives here, never in React state. */
+export class TreeViewer {
+  private readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly camera = new PerspectiveCamera(40, 1, 0.05, 1000);
+  private readonly controls: OrbitControls;
+  private readonly sun = new DirectionalLight('#fff6e5', 2.4);
+  private readonly ground: Mesh<CircleGeometry, MeshStandardMaterial>;
+  private readonly bark = new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 });
+  private readonly leaves = new MeshStandardMaterial({
+    color: LEAF_COLOR,
+    roughness: 0.75,
+    side: DoubleSide,
+  });
+  private readonly fog = new Fog(BACKGROUND_COLOR, 10, 40);
+  private tree: Mesh<BufferGeometry, MeshStandardMaterial[]> | null = null;
+  private readonly envelope = new LineSegments(
+    undefined,
+    new LineBasicMaterial({ color: '#2f6fb0', transparent: true, opacity: 0.45 }),
+  );
+  private readonly resizeObserver: ResizeObserver;
+  private frameRequested = false;
+  private disposed = false;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.shadowMap.enabled = true;
+    this.renderer.shadowMap.type = PCFShadowMap;
+    this.renderer.domElement.dataset.testid = 'viewer-canvas';
+    container.appendChild(this.renderer.domElement);
+
+    this.scene.background = new Color(BACKGROUND_COLOR);
+    this.scene.fog = this.fog;
+    this.scene.add(new HemisphereLight('#e8f1ff', '#6b5a45', 1.4));
+    this.sun.castShadow = true;
+    this.sun.shadow.mapSize.set(2048, 2048);
+    this.sun.shadow.radius = 4;
+    this.sun.shadow.bias = -0.0005;
+    this.sun.shadow.normalBias = 0.02;
+    this.scene.add(this.sun, this.sun.target);
+
+    this.ground = new Mesh(
+      new CircleGeometry(1, 96),
+      new MeshStandardMaterial({ color: GROUND_COLOR, roughness: 1 }),
+    );
+    this.ground.rotation.x = -Math.PI / 2;
+    this.ground.receiveShadow = true;
+    this.scene.add(this.ground);
+
+    this.envelope.visible = false;
+    this.envelope.frustumCulled = false;
+    this.scene.add(this.envelope);
+
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.maxPolarAngle = Math.PI * 0.495;
+    this.controls.addEventListener('change', () => this.requestRender());
+    this.frameBounds(new Sphere(new Vector3(0, 4, 0), 5));
+
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+  }
+
+  /** Shows a new tree, disposing the previous geometry; optionally re-frames the camera. */
+  setTree(buffers: TreeBuffers, frame: boolean): void {
+    const geometry = buildTreeGeometry(buffers);
+    if (this.tree) {
+      this.tree.geometry.dispose();
+      this.tree.geometry = geometry;
+    } else {
+      this.tree = new Mesh(geometry, [this.bark, this.leaves]);
+      this.tree.castShadow = true;
+      this.tree.receiveShadow = true;
+      this.scene.add(this.tree);
+    }
+    this.envelope.geometry.dispose();
+    this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
+    const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
+    this.fitStage(sphere);
+    if (frame) this.frameBounds(sphere);
+    this.requestRender();
+  }
+
+  /** Shows or hides the crown envelope wireframe (the Show Preview parameter). */
+  setPreviewVisible(visible: boolean): void {
+    if (this.envelope.visible === visible) return;
+    this.envelope.visible = visible;
+    this.requestRender();
+  }
+
+  /** Whether the envelope wireframe is shown and has lines (for tests). */
+  get previewShown(): boolean {
+    return (
+      this.envelope.visible && (this.envelope.geometry.getAttribute('position')?.count ?? 0) > 0
+    );
+  }
+
+  /** Points the camera at the current tree's bounds. */
+  frame(): void {
+    const sphere = this.tree?.geometry.boundingSphere;
+    if (sphere) this.frameBounds(sphere);
+  }
+
+  /** Releases every GPU resource and removes the canvas. */
+  dispose(): void {
+    this.disposed = true;
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    this.tree?.geometry.dispose();
+    this.envelope.geometry.dispose();
+    this.envelope.material.dispose();
+    this.bark.dispose();
+    this.leaves.dispose();
+    this.ground.geometry.dispose();
+    this.ground.material.dispose();
+    this.renderer.dispose();
+    this.renderer.domElement.remove();
+  }
+
+  /** Sizes the ground disc and the sun's shadow frustum to the tree. */
+  private fitStage(sphere: Sphere): void {
+    const r = Math.max(sphere.radius, 0.01);
+    this.ground.scale.setScalar(r * 12);
+    const target = new Vector3(sphere.center.x, 0, sphere.center.z);
+    this.sun.target.position.copy(target);
+    this.sun.position
+      .copy(sphere.center)
+      .add(new Vector3(0.5, 1, 0.35).normalize().multiplyScalar(r * 3));
+    const cam = this.sun.shadow.camera;
+    cam.left = -r * 1.3;
+    cam.right = r * 1.3;
+    cam.top = r * 1.3;
+    cam.bottom = -r * 1.3;
+    cam.near = r * 0.05;
+    cam.far = r * 6;
+    cam.updateProjectionMatrix();
+  }
+
+  /** Places the camera so the bounding sphere fills the view. */
+  private frameBounds(sphere: Sphere): void {
+    const r = Math.max(sphere.radius, 0.01);
+    const vFov = (this.camera.fov * Math.PI) / 180;
+    const hFov = 2 * Math.atan(Math.tan(vFov / 2) * this.camera.aspect);
+    const distance = (r / Math.sin(Math.min(vFov, hFov) / 2)) * 1.05;
+    this.camera.position.copy(sphere.center).addScaledVector(VIEW_DIRECTION, distance);
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 20;
+    // The ground fades into the sky instead of ending in a hard horizon.
+    this.fog.near = distance * 1.6;
+    this.fog.far = distance * 4;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.copy(sphere.center);
+    this.controls.minDistance = r * 0.2;
+    this.controls.maxDistance = distance * 6;
+    this.controls.update();
+    this.requestRender();
+  }
+
+  private resize(): void {
+    const width = Math.max(this.container.clientWidth, 1);
+    const height = Math.max(this.container.clientHeight, 1);
+    this.renderer.setSize(width, height, true);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    this.requestRender();
+  }
+
+  private requestRender(): void {
+    if (this.frameRequested) return;
+    this.frameRequested = true;
+    requestAnimationFrame(() => {
+      this.frameRequested = false;
+      if (!this.disposed) this.renderer.render(this.scene, this.camera);
+    });
+  }
+}

@@ -1,0 +1,111 @@
+/** Worker handler tests through the real wasm in Node: generation, typed errors, panic recovery. */
+import { describe, expect, it } from 'vitest';
+import { defaultParams } from '../core/params';
+import { buildTreeGeometry } from '../viewer/geometry';
+import { loadWasm, realRegistry } from '../testing/realWasm';
+import { createHandler, readyMessage } from './handler';
+import type { ResultResponse, WorkerResponse } from './protocol';
+
+function collect() {
+  const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
+  const handle = createHandler(loadWasm(), (message, transfer) => sent.push({ message, transfer }));
+  return { sent, handle };
+}
+
+function onlyResult(sent: { message: WorkerResponse }[]): ResultResponse {
+  expect(sent).toHaveLength(1);
+  const message = sent[0]?.message;
+  if (message?.type !== 'result')
+    throw new Error(`expected a result, got ${JSON.stringify(message)}`);
+  return message;
+}
+
+describe('real wasm through the worker handler', () => {
+  it('ready carries the registry, presets and version', () => {
+    const ready = readyMessage(loadWasm());
+    expect(ready.registry.length).toBeGreaterThan(3);
+    expect(ready.registry.map((s) => s.id)).toEqual(
+      expect.arrayContaining(['seed', 'scale', 'l1_length']),
+    );
+    expect(ready.presets.length).toBeGreaterThan(0);
+    expect(ready.version).toMatch(/\d+\.\d+/);
+    const groups = ready.registry.map((s) => s.group);
+    expect(new Set(groups).size).toBeGreaterThan(1);
+  });
+
+  it('generates the default tree with buffer lengths that agree with meta', () => {
+    const { sent, handle } = collect();
+    handle({ type: 'generate', id: 1, params: {} });
+    const result = onlyResult(sent);
+    const { meta } = result;
+    expect(result.id).toBe(1);
+    expect(meta.vertices).toBeGreaterThan(100);
+    expect(result.positions.length).toBe(meta.vertices * 3);
+    expect(result.normals.length).toBe(meta.vertices * 3);
+    expect(result.uvs.length).toBe(meta.vertices * 2);
+    expect(result.indices.length).toBe(meta.triangles * 3);
+    // The crown envelope preview: whole line segments of 3D points around the tree.
+    expect(result.envelope.length).toBeGreaterThan(0);
+    expect(result.envelope.length % 6).toBe(0);
+    expect(meta.hash).toMatch(/^[0-9a-f]{16}$/);
+    const covered = meta.groups.reduce((sum, g) => sum + g.count, 0);
+    expect(covered).toBe(result.indices.length);
+    let maxIndex = 0;
+    for (const i of result.indices) if (i > maxIndex) maxIndex = i;
+    expect(maxIndex).toBeLessThan(meta.vertices);
+    expect(meta.bounds.min[1]).toBeGreaterThanOrEqual(-1e-3);
+    expect(meta.bounds.max[1]).toBeGreaterThan(meta.bounds.min[1]);
+    expect(sent[0]?.transfer).toHaveLength(5);
+  });
+
+  it('explicit defaults give the same hash as an empty object (deterministic)', () => {
+    const a = collect();
+    a.handle({ type: 'generate', id: 1, params: {} });
+    const b = collect();
+    b.handle({ type: 'generate', id: 2, params: defaultParams(realRegistry()) });
+    expect(onlyResult(b.sent).meta.hash).toBe(onlyResult(a.sent).meta.hash);
+  });
+
+  it('builds a three.js geometry from the buffers without copying', () => {
+    const { sent, handle } = collect();
+    handle({ type: 'generate', id: 1, params: { seed: 3 } });
+    const result = onlyResult(sent);
+    const geometry = buildTreeGeometry(result);
+    expect(geometry.getAttribute('position').array).toBe(result.positions);
+    expect(geometry.getIndex()?.array).toBe(result.indices);
+    expect(geometry.groups.length).toBe(result.meta.groups.length);
+    expect(geometry.boundingSphere?.radius).toBeGreaterThan(0);
+    geometry.dispose();
+  });
+
+  it('an invalid value gives a typed error naming the param', () => {
+    const { sent, handle } = collect();
+    handle({ type: 'generate', id: 7, params: { scale: -5 } });
+    const message = sent[0]?.message;
+    expect(message?.type).toBe('error');
+    if (message?.type !== 'error') return;
+    expect(message.id).toBe(7);
+    expect(message.error.kind).toBe('invalid_param');
+    expect(message.error.param).toBe('scale');
+    expect(message.error.message).toContain('scale');
+  });
+
+  it('an unknown param gives an unknown_param error', () => {
+    const { sent, handle } = collect();
+    handle({ type: 'generate', id: 8, params: { no_such_param: 1 } });
+    const message = sent[0]?.message;
+    expect(message?.type === 'error' && message.error.kind).toBe('unknown_param');
+  });
+
+  // Runs last in this file: the wasm instance is unusable after a panic.
+  it('debug-panic reports the panic message as fatal, then refuses further work', () => {
+    const { sent, handle } = collect();
+    handle({ type: 'debug-panic' });
+    const fatal = sent[0]?.message;
+    expect(fatal?.type).toBe('fatal');
+    if (fatal?.type !== 'fatal') return;
+    expect(fatal.message).toMatch(/panic/i);
+    handle({ type: 'generate', id: 9, params: {} });
+    expect(sent[1]?.message.type).toBe('fatal');
+  });
+});

@@ -1,0 +1,28 @@
+/** Generator Web Worker: initialises the wasm once and answers requests with transferred buffers. */
+import init, * as wasm from '../wasm/sylva_wasm.js';
+import { createHandler, readyMessage, type Post } from './handler';
+import type { WorkerRequest, WorkerResponse } from './protocol';
+
+/** The parts of the dedicated-worker global scope this file uses. */
+interface WorkerScope {
+  postMessage(message: WorkerResponse, transfer: Transferable[]): void;
+  onmessage: ((event: MessageEvent<WorkerRequest>) => void) | null;
+}
+
+const scope = self as unknown as WorkerScope;
+const post: Post = (message, transfer) => scope.postMessage(message, transfer);
+
+const handlerPromise = init()
+  .then(() => {
+    post(readyMessage(wasm), []);
+    return createHandler(wasm, post);
+  })
+  .catch((thrown: unknown) => {
+    const message = thrown instanceof Error ? thrown.message : String(thrown);
+    post({ type: 'fatal', message: `wasm init failed: ${message}` }, []);
+    return null;
+  });
+
+scope.onmessage = (event) => {
+  void handlerPromise.then((handle) => handle?.(event.data));
+};
