@@ -34,3 +34,14 @@ pub fn atan2(y: f32, x: f32) -> f32 {
 pub fn rad(deg: f32) -> f32 {
     deg * (PI / 180.0)
 }
+
+/// `v` normalised, or `fallback()` (evaluated only then) when `v` is too short to normalise.
+#[inline]
+pub fn unit_or(v: glam::Vec3, fallback: impl FnOnce() -> glam::Vec3) -> glam::Vec3 {
+    let len2 = v.length_squared();
+    if len2 > 1e-24 && len2.is_finite() {
+        v * (1.0 / len2.sqrt())
+    } else {
+        fallback()
+    }
+}

@@ -10,10 +10,13 @@
 
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
-use crate::math::{acos, pow, rad, PI, TAU};
+use crate::math::{acos, pow, rad, unit_or, PI, TAU};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
+
+/// A stem's centre polyline (inline storage for up to four points).
+pub type Points = smallvec::SmallVec<[Vec3; 4]>;
 
 /// One stem: the trunk, a branch or a twig.
 #[derive(Clone, Debug)]
@@ -25,7 +28,9 @@ pub struct Stem {
     /// Distance along the parent where this stem starts (m).
     pub offset: f32,
     /// Centre polyline from base to tip: `curve_res + 1` points, equally spaced along the stem.
-    pub points: Vec<Vec3>,
+    /// Stored inline up to four points: most stems are short twigs, and this saves an
+    /// allocation for each of them.
+    pub points: Points,
     /// A unit vector perpendicular to the first segment: the reference for ring orientation.
     pub base_normal: Vec3,
     /// Length of this record (m).
@@ -74,20 +79,58 @@ impl Stem {
     /// Catmull-Rom spline through [`Stem::points`] (ends extrapolated). The mesh and the child
     /// attachment points both use this, so children start exactly on their parent's axis.
     pub fn sample(&self, t: f32) -> (Vec3, Vec3) {
-        let pts = &self.points;
-        let segs = pts.len() - 1;
+        let (i, u) = self.locate(t);
+        self.segment(i).eval(u)
+    }
+
+    /// Segment index and local parameter of fraction `t`.
+    pub fn locate(&self, t: f32) -> (usize, f32) {
+        let segs = self.points.len() - 1;
         let f = t.clamp(0.0, 1.0) * segs as f32;
         let i = (f as usize).min(segs - 1);
-        let u = f - i as f32;
+        (i, f - i as f32)
+    }
+
+    /// The cubic of segment `i` of the centre curve (for evaluating many points on one segment).
+    pub fn segment(&self, i: usize) -> Segment {
+        let pts = &self.points;
+        let segs = pts.len() - 1;
         let p1 = pts[i];
         let p2 = pts[i + 1];
         let p0 = if i > 0 { pts[i - 1] } else { 2.0 * p1 - p2 };
         let p3 = if i + 2 <= segs { pts[i + 2] } else { 2.0 * p2 - p1 };
-        let a = 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3;
-        let b = -p0 + 3.0 * p1 - 3.0 * p2 + p3;
-        let pos = 0.5 * (2.0 * p1 + (p2 - p0) * u + a * (u * u) + b * (u * u * u));
-        let tan = 0.5 * ((p2 - p0) + a * (2.0 * u) + b * (3.0 * u * u));
-        (pos, tan.normalize_or(p2 - p1).normalize_or(Vec3::Y))
+        Segment { p1, p2, d: p2 - p0, a: 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3, b: -p0 + 3.0 * p1 - 3.0 * p2 + p3 }
+    }
+
+    /// `d radius / d arc length` at fraction `t`: exact for the linear tapers (the common case),
+    /// a central difference where flare or rounded tips make the profile curved.
+    pub fn radius_slope(&self, t: f32) -> f32 {
+        if self.flare == 0.0 && self.taper <= 1.0 {
+            return -self.chain_radius * self.taper / self.chain_length;
+        }
+        let eps = 1e-3f32;
+        let (ta, tb) = ((t - eps).max(0.0), (t + eps).min(1.0));
+        (self.radius_at(tb) - self.radius_at(ta)) / ((tb - ta) * self.length)
+    }
+}
+
+/// One segment of a stem's Catmull-Rom centre curve, in polynomial form.
+#[derive(Clone, Copy, Debug)]
+pub struct Segment {
+    p1: Vec3,
+    p2: Vec3,
+    d: Vec3,
+    a: Vec3,
+    b: Vec3,
+}
+
+impl Segment {
+    /// Point and unit tangent at local parameter `u` in [0, 1].
+    #[inline]
+    pub fn eval(&self, u: f32) -> (Vec3, Vec3) {
+        let pos = 0.5 * (2.0 * self.p1 + self.d * u + self.a * (u * u) + self.b * (u * u * u));
+        let tan = 0.5 * (self.d + self.a * (2.0 * u) + self.b * (3.0 * u * u));
+        (pos, unit_or(tan, || (self.p2 - self.p1).normalize_or(Vec3::Y)))
     }
 }
 
@@ -244,7 +287,11 @@ impl Builder<'_> {
             }
         }
         let mut carry = self.split_carry[s.level];
-        let (points, clones) = trace(p, &s, length, &mut rng, Some(&mut carry));
+        let mut points = Points::with_capacity(p.level[s.level].curve_res as usize + 1);
+        let clones = trace(p, &s, length, &mut rng, Some(&mut carry), &mut |q| {
+            points.push(q);
+            true
+        });
         self.split_carry[s.level] = carry;
         let segs = lp.curve_res as usize;
         let z0 = s.first_seg as f32 / segs as f32;
@@ -280,19 +327,22 @@ impl Builder<'_> {
     }
 
     /// Weber & Penn pruning: the longest length at which the stem stays inside the pruning
-    /// envelope (bisection), then `L - (L - L_fit) * PruneRatio`.
+    /// envelope (bisection), then `L - (L - L_fit) * PruneRatio`. A stem's shape does not depend
+    /// on its length (bends are per segment), so one unit-length trace, scaled, answers every
+    /// trial length.
     fn pruned_length(&self, s: &StemStart) -> f32 {
         let p = self.p;
-        let fits = |len: f32| {
-            let mut rng = s.rng.clone();
-            let (pts, _) = trace(p, s, len, &mut rng, None);
-            pts.iter().all(|q| inside_prune_envelope(p, self.scale, *q))
-        };
+        let mut unit = Vec::with_capacity(p.level[s.level].curve_res as usize + 1);
+        trace(p, s, 1.0, &mut s.rng.clone(), None, &mut |q| {
+            unit.push(q - s.base);
+            true
+        });
+        let fits = |len: f32| unit.iter().all(|&d| inside_prune_envelope(p, self.scale, s.base + d * len));
         if fits(s.length) {
             return s.length;
         }
         let (mut lo, mut hi) = (0.0f32, s.length);
-        for _ in 0..12 {
+        for _ in 0..10 {
             let mid = 0.5 * (lo + hi);
             if fits(mid) {
                 lo = mid;
@@ -373,7 +423,7 @@ impl Builder<'_> {
             }
             let (pos, dir) = stem.point_at(offset);
             // Parent frame at the attachment point: its +Y along `dir`, +X transported from the base.
-            let x = (stem.base_normal - dir * stem.base_normal.dot(dir)).normalize_or(dir.any_orthonormal_vector());
+            let x = unit_or(stem.base_normal - dir * stem.base_normal.dot(dir), || dir.any_orthonormal_vector());
             let parent_frame = Quat::from_mat3(&glam::Mat3::from_cols(x, dir, x.cross(dir)));
             let frame = (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize();
             self.grow(StemStart {
@@ -398,20 +448,23 @@ impl Builder<'_> {
 /// `length`, bending by Curve/CurveBack/CurveV (or winding as a helix for negative CurveV),
 /// turning up or down by AttractionUp, and, when `split_carry` is given, splitting into clones
 /// (SegSplits with error diffusion, BaseSplits at the trunk's first joint) that turn back toward
-/// the original direction over their remaining segments.
+/// the original direction over their remaining segments. Each point, base first, goes to
+/// `visit`; tracing stops early when it returns false. Returns the clones.
 fn trace(
     p: &TreeParams,
     s: &StemStart,
     length: f32,
     rng: &mut Rng,
     mut split_carry: Option<&mut f32>,
-) -> (Vec<Vec3>, Vec<StemStart>) {
+    visit: &mut impl FnMut(Vec3) -> bool,
+) -> Vec<StemStart> {
     let lp = &p.level[s.level];
     let segs = lp.curve_res.max(1) as usize;
     let seg_len = length / segs as f32;
-    let mut points = Vec::with_capacity(segs + 1 - s.first_seg);
     let mut clones = Vec::new();
-    points.push(s.base);
+    if !visit(s.base) {
+        return clones;
+    }
     let mut frame = s.frame;
     let mut pos = s.base;
     let mut correction = s.correction;
@@ -482,9 +535,11 @@ fn trace(
             }
         }
         pos += (frame * Vec3::Y) * seg_len;
-        points.push(pos);
+        if !visit(pos) {
+            break;
+        }
     }
-    (points, clones)
+    clones
 }
 
 /// Weber & Penn's pruning test: inside `PruneWidth * ShapeRatio(Envelope, ratio)` where

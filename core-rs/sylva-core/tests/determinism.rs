@@ -6,16 +6,16 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "636b81db895c9896"),
-    ("quaking_aspen", "5132fed1ae4bba16"),
-    ("black_tupelo", "af14914d78c97dd6"),
-    ("weeping_willow", "25bdc4a21434b946"),
-    ("ca_black_oak", "d9a8bfd33347bbe5"),
-    ("fir", "c67bd06360fee4f1"),
-    ("oak", "5ff6c0b24d1f0591"),
-    ("cypress", "c0145d9fe8c3a1ba"),
-    ("umbrella", "13582246c779a683"),
-    ("weeping", "7122c6ff586852e6"),
+    ("default", "cdb17e273c307235"),
+    ("quaking_aspen", "4f1051fc6ddf32f1"),
+    ("black_tupelo", "5590f1058284628f"),
+    ("weeping_willow", "c925132b03a74c0d"),
+    ("ca_black_oak", "f30742d6e9d2b025"),
+    ("fir", "afcccfc9573a5438"),
+    ("oak", "88801e5c0e65ffd8"),
+    ("cypress", "9ca7cfbdc12a2190"),
+    ("umbrella", "df1cfb81cae9a1c8"),
+    ("weeping", "072bc3c6b9988928"),
 ];
 
 #[test]

@@ -89,8 +89,8 @@ impl TreeMesh {
     }
 
     /// Content hash of every buffer (positions, normals, uvs, indices, groups): equal hashes
-    /// mean byte-identical meshes. Four interleaved 64-bit FNV-1a-style lanes over 32-bit words,
-    /// then mixed; the value is part of the golden tests, so change it only on purpose.
+    /// mean byte-identical meshes. Four interleaved 64-bit FNV-1a-style lanes over pairs of
+    /// 32-bit words, then mixed; the value is part of the golden tests, so change it only on purpose.
     pub fn content_hash(&self) -> u64 {
         let mut h = Hasher::new();
         h.words(&self.positions, f32::to_bits);
@@ -144,19 +144,23 @@ impl Hasher {
         }
     }
 
-    /// Hash one buffer: word `k` of each group of four goes to lane `k` (independent multiply
-    /// chains, so the CPU overlaps them); a final partial group goes to the first lanes.
+    /// Hash one buffer: each lane takes two 32-bit words per step as one 64-bit word (eight
+    /// words per round over four independent multiply chains, so the CPU overlaps them); the
+    /// tail goes one word per lane. Every step is a bijection of the lane state, so any change to
+    /// any word changes the result.
     fn words<T: Copy>(&mut self, data: &[T], bits: impl Fn(T) -> u32) {
+        let pair = |lo: T, hi: T| u64::from(bits(lo)) | u64::from(bits(hi)) << 32;
         let [mut a, mut b, mut c, mut d] = self.lanes;
-        let mut chunks = data.chunks_exact(4);
+        let mut chunks = data.chunks_exact(8);
         for q in &mut chunks {
-            a = (a ^ u64::from(bits(q[0]))).wrapping_mul(FNV_PRIME);
-            b = (b ^ u64::from(bits(q[1]))).wrapping_mul(FNV_PRIME);
-            c = (c ^ u64::from(bits(q[2]))).wrapping_mul(FNV_PRIME);
-            d = (d ^ u64::from(bits(q[3]))).wrapping_mul(FNV_PRIME);
+            a = (a ^ pair(q[0], q[1])).wrapping_mul(FNV_PRIME);
+            b = (b ^ pair(q[2], q[3])).wrapping_mul(FNV_PRIME);
+            c = (c ^ pair(q[4], q[5])).wrapping_mul(FNV_PRIME);
+            d = (d ^ pair(q[6], q[7])).wrapping_mul(FNV_PRIME);
         }
         self.lanes = [a, b, c, d];
-        for (lane, &w) in self.lanes.iter_mut().zip(chunks.remainder()) {
+        for (k, &w) in chunks.remainder().iter().enumerate() {
+            let lane = &mut self.lanes[k & 3];
             *lane = (*lane ^ u64::from(bits(w))).wrapping_mul(FNV_PRIME);
         }
         self.n += data.len() as u64;
@@ -204,6 +208,24 @@ impl MeshBuilder {
         self.mesh.normals.extend_from_slice(&n);
         self.mesh.uvs.extend_from_slice(&uv);
         i
+    }
+
+    /// Append `n` zeroed vertices and return the first index with mutable views of their
+    /// positions (`3n`), normals (`3n`) and uvs (`2n`), for stages that fill whole blocks.
+    pub fn alloc_vertices(&mut self, n: usize) -> (u32, &mut [f32], &mut [f32], &mut [f32]) {
+        let first = self.next_index();
+        let (p, q, u) = (self.mesh.positions.len(), self.mesh.normals.len(), self.mesh.uvs.len());
+        self.mesh.positions.resize(p + 3 * n, 0.0);
+        self.mesh.normals.resize(q + 3 * n, 0.0);
+        self.mesh.uvs.resize(u + 2 * n, 0.0);
+        (first, &mut self.mesh.positions[p..], &mut self.mesh.normals[q..], &mut self.mesh.uvs[u..])
+    }
+
+    /// Append `n` zeroed indices (a multiple of 3) and return them for filling.
+    pub fn alloc_indices(&mut self, n: usize) -> &mut [u32] {
+        let start = self.mesh.indices.len();
+        self.mesh.indices.resize(start + n, 0);
+        &mut self.mesh.indices[start..]
     }
 
     /// Component `k` of the flat positions buffer written so far.

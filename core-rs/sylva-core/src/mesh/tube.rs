@@ -8,7 +8,7 @@
 
 use super::{Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
-use crate::math::{cos, rad, sin, TAU};
+use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
 use crate::skeleton::{budget_error, Skeleton, Stem};
 use glam::Vec3;
@@ -38,19 +38,32 @@ pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
 /// sits just short of the tip; the apex closes the stem at t = 1.
 fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
     let start = out.len();
-    let segs = stem.points.len() - 1;
-    let dirs: Vec<Vec3> = stem.points.windows(2).map(|w| (w[1] - w[0]).normalize_or(Vec3::Y)).collect();
+    let pts = &stem.points;
+    let segs = pts.len() - 1;
+    let dir = |i: usize| (pts[i + 1] - pts[i]).normalize_or(Vec3::Y);
+    let per_ring = rad(12.0) / (stem.radius / 0.02).sqrt().clamp(0.25, 1.0);
+    let mut turn_in = 0.0f32;
+    let mut d = dir(0);
     for i in 0..segs {
         // Subdivide a segment by the bend at its ends: about one ring per 12° of turn on thick
         // stems; thin stems tolerate more, since the chord error is what shows against the radius.
-        let turn_in = if i > 0 { dirs[i - 1].angle_between(dirs[i]) } else { 0.0 };
-        let turn_out = if i + 1 < segs { dirs[i].angle_between(dirs[i + 1]) } else { 0.0 };
-        let per_ring = rad(12.0) / (stem.radius / 0.02).sqrt().clamp(0.25, 1.0);
+        let next = if i + 1 < segs { Some(dir(i + 1)) } else { None };
+        // Turn angle from the chord between unit directions, c = 2 sin(θ/2): θ ≈ c (1 + c²/24),
+        // within 0.5% up to 90°, which is all a ring count needs (and no acos per joint).
+        let turn_out = next.map_or(0.0, |n| {
+            let c = (n - d).length();
+            c * (1.0 + c * c / 24.0)
+        });
         let k = ((quality * turn_in.max(turn_out) / per_ring).ceil() as usize).clamp(1, 8);
         for j in 0..k {
             out.push((i as f32 + j as f32 / k as f32) / segs as f32);
         }
+        turn_in = turn_out;
+        if let Some(n) = next {
+            d = n;
+        }
     }
+    let extra = stem.flare > 0.0 || stem.taper > 1.0;
     if stem.flare > 0.0 {
         // The flare lives in the lowest eighth and rises steeply: rings packed toward the ground.
         let m = ((6.0 * quality).ceil() as usize).max(2);
@@ -70,7 +83,9 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
         }
     }
     let rings = &mut out[start..];
-    rings.sort_by(f32::total_cmp);
+    if extra {
+        rings.sort_by(f32::total_cmp);
+    }
     let mut n = 0;
     for i in 0..rings.len() {
         if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
@@ -84,15 +99,16 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
     out.push(last + 0.75 * (1.0 - last));
 }
 
-/// Unit circle table for `sides`, with the seam point repeated at the end (bit-identical).
-fn circle(sides: u32) -> Vec<(f32, f32)> {
-    let mut t: Vec<(f32, f32)> = (0..sides)
+/// Unit circle table for `sides`: `(cos, sin, u)` per column, with the seam point repeated at
+/// the end (bit-identical position, `u = 1`).
+fn circle(sides: u32) -> Vec<(f32, f32, f32)> {
+    let mut t: Vec<(f32, f32, f32)> = (0..sides)
         .map(|j| {
             let a = TAU * j as f32 / sides as f32;
-            (cos(a), sin(a))
+            (cos(a), sin(a), j as f32 / sides as f32)
         })
         .collect();
-    t.push(t[0]);
+    t.push((t[0].0, t[0].1, 1.0));
     t
 }
 
@@ -118,7 +134,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
     let indices: u64 = plans.iter().map(|pl| pl.rings.len() as u64 * u64::from(pl.sides) * 6).sum();
     let mut out = MeshBuilder::with_capacity(vertices as usize, indices as usize);
     out.begin_group(Material::Bark);
-    let mut tables: Vec<Option<Vec<(f32, f32)>>> = vec![None; 97];
+    let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
     for (stem, plan) in skeleton.stems.iter().zip(&plans) {
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
@@ -127,78 +143,119 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
     Ok(out.finish())
 }
 
-fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32)], lobes: Option<(u32, f32)>, out: &mut MeshBuilder) {
+fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], lobes: Option<(u32, f32)>, out: &mut MeshBuilder) {
     let sides = circle.len() - 1;
-    let stride = sides as u32 + 1;
-    let first = out.next_index();
-    let lobe_scale: Vec<f32> = match lobes {
+    let stride = sides + 1;
+    let rings = ts.len();
+    let trunk = stem.parent.is_none();
+    let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
+    let (first, pos, nrm, uv) = out.alloc_vertices(count);
+    // Radius factor per column: the trunk's lobes, or 1 (no allocation for ordinary stems).
+    const ONES: [f32; 97] = [1.0; 97];
+    let lobed: Vec<f32>;
+    let lobe_scale: &[f32] = match lobes {
         Some((n, depth)) => {
-            (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect()
+            lobed =
+                (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
+            &lobed
         }
-        None => Vec::new(),
+        None => &ONES[..stride],
     };
-    let (_, t0) = stem.sample(0.0);
-    let mut normal = (stem.base_normal - t0 * stem.base_normal.dot(t0)).normalize_or(t0.any_orthonormal_vector());
+    let mut seg = (0, stem.segment(0));
+    let (_, t0) = seg.1.eval(0.0);
+    let mut normal = unit_or(stem.base_normal - t0 * stem.base_normal.dot(t0), || t0.any_orthonormal_vector());
     let mut v = 0.0f32;
     let mut prev: Option<(f32, f32)> = None; // (t, radius) of the previous ring
     let mut last_center = Vec3::ZERO;
     let mut last_radius = stem.radius;
-    for &t in ts {
-        let (c, tan) = stem.sample(t);
-        normal = (normal - tan * normal.dot(tan)).normalize_or(tan.any_orthonormal_vector());
+    for (r, &t) in ts.iter().enumerate() {
+        let (i, u) = stem.locate(t);
+        if seg.0 != i {
+            seg = (i, stem.segment(i));
+        }
+        let (c, tan) = seg.1.eval(u);
+        normal = unit_or(normal - tan * normal.dot(tan), || tan.any_orthonormal_vector());
         let binormal = tan.cross(normal);
         // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
-        let r = stem.radius_at(t).max(0.05 * stem.radius);
-        let eps = 1e-3f32;
-        let (ta, tb) = ((t - eps).max(0.0), (t + eps).min(1.0));
-        let slope = (stem.radius_at(tb) - stem.radius_at(ta)) / ((tb - ta) * stem.length);
+        let radius = stem.radius_at(t).max(0.05 * stem.radius);
+        let slope = stem.radius_slope(t);
         let inv = 1.0 / (1.0 + slope * slope).sqrt();
         if let Some((pt, pr)) = prev {
-            v += (t - pt) * stem.length / (TAU * (0.5 * (r + pr)).max(0.25 * stem.radius));
+            v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
         }
-        for (j, &(cs, sn)) in circle.iter().enumerate() {
+        let block = r * stride;
+        let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
+        let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
+        let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
+        let tilt = tan * slope;
+        for ((((p3, n3), t2), &(cs, sn, u)), &ls) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(lobe_scale) {
             let radial = normal * cs + binormal * sn;
-            let rr = if lobe_scale.is_empty() { r } else { r * lobe_scale[j] };
-            let pos = c + radial * rr;
-            let n = (radial - tan * slope) * inv;
-            out.vertex(pos.to_array(), n.to_array(), [j as f32 / sides as f32, v]);
+            let p = c + radial * (radius * ls);
+            let n = (radial - tilt) * inv;
+            p3.copy_from_slice(&[p.x, p.y, p.z]);
+            n3.copy_from_slice(&[n.x, n.y, n.z]);
+            t2.copy_from_slice(&[u, v]);
         }
-        prev = Some((t, r));
+        prev = Some((t, radius));
         last_center = c;
-        last_radius = r;
-    }
-    let rings = ts.len() as u32;
-    for i in 0..rings - 1 {
-        let row = first + i * stride;
-        for j in 0..sides as u32 {
-            let (a, b) = (row + j, row + j + 1);
-            let (c, d) = (b + stride, a + stride);
-            out.triangle(a, b, c);
-            out.triangle(a, c, d);
-        }
+        last_radius = radius;
     }
     // Tip: a short cone to an apex at the stem end (a little beyond it if the tip is blunt).
-    let (tip, tip_tan) = stem.sample(1.0);
+    let last_seg = stem.points.len() - 2;
+    if seg.0 != last_seg {
+        seg = (last_seg, stem.segment(last_seg));
+    }
+    let (tip, tip_tan) = seg.1.eval(1.0);
     let end_r = stem.radius_at(1.0);
     let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
     let v_apex = v + (apex_pos - last_center).length() / (TAU * last_radius.max(1e-6));
-    let apex = out.vertex(apex_pos.to_array(), tip_tan.to_array(), [0.5, v_apex]);
-    let row = first + (rings - 1) * stride;
-    for j in 0..sides as u32 {
-        out.triangle(row + j, row + j + 1, apex);
-    }
-    if stem.parent.is_none() {
+    let apex_slot = rings * stride;
+    pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
+    nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&tip_tan.to_array());
+    uv[apex_slot * 2..apex_slot * 2 + 2].copy_from_slice(&[0.5, v_apex]);
+    let apex = first + apex_slot as u32;
+    if trunk {
         // Trunk base: a flat cap with its own downward-facing copy of the bottom ring (a hard edge).
         let down = (-t0).to_array();
-        let cap = out.next_index();
-        for j in 0..=sides as u32 {
-            let k = ((first + j) * 3) as usize;
-            let pos = [out.position(k), out.position(k + 1), out.position(k + 2)];
-            out.vertex(pos, down, [0.5 + 0.5 * circle[j as usize].0, 0.5 + 0.5 * circle[j as usize].1]);
+        let cap = apex_slot + 1;
+        for (j, &(cs, sn, _)) in circle.iter().enumerate() {
+            let (src, dst) = (j * 3, (cap + j) * 3);
+            let ring0 = [pos[src], pos[src + 1], pos[src + 2]];
+            pos[dst..dst + 3].copy_from_slice(&ring0);
+            nrm[dst..dst + 3].copy_from_slice(&down);
+            uv[(cap + j) * 2..(cap + j) * 2 + 2].copy_from_slice(&[0.5 + 0.5 * cs, 0.5 + 0.5 * sn]);
         }
-        let centre = out.vertex(stem.base().to_array(), down, [0.5, 0.5]);
-        for j in 0..sides as u32 {
-            out.triangle(cap + j + 1, cap + j, centre);
+        let centre = cap + stride;
+        pos[centre * 3..centre * 3 + 3].copy_from_slice(&stem.base().to_array());
+        nrm[centre * 3..centre * 3 + 3].copy_from_slice(&down);
+        uv[centre * 2..centre * 2 + 2].copy_from_slice(&[0.5, 0.5]);
+    }
+    // Indices: quads between rings, the tip fan, and the trunk's bottom fan.
+    let s = sides as u32;
+    let st = stride as u32;
+    let quads = (rings - 1) * sides * 6;
+    let fans = sides * 3 * if trunk { 2 } else { 1 };
+    let idx = out.alloc_indices(quads + fans);
+    let (quad_idx, fan_idx) = idx.split_at_mut(quads);
+    let mut q = quad_idx.chunks_exact_mut(6);
+    for i in 0..rings as u32 - 1 {
+        let row = first + i * st;
+        for j in 0..s {
+            let (a, b) = (row + j, row + j + 1);
+            let (c, d) = (b + st, a + st);
+            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
+        }
+    }
+    let mut f = fan_idx.chunks_exact_mut(3);
+    let row = first + (rings as u32 - 1) * st;
+    for j in 0..s {
+        f.next().expect("sized above").copy_from_slice(&[row + j, row + j + 1, apex]);
+    }
+    if trunk {
+        let cap = apex + 1;
+        let centre = cap + st;
+        for j in 0..s {
+            f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
         }
     }
 }
