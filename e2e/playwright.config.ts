@@ -31,7 +31,8 @@ export default defineConfig({
           executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
           args: [
             '--no-sandbox',
-            '--disable-gpu',
+            // (no --disable-gpu: with it the compositor is software and reads every WebGL frame
+            // back with a blocking glReadPixels on the main thread, one long task per frame)
             '--disable-background-networking',
             '--disable-component-update',
             '--disable-sync',

@@ -1,5 +1,5 @@
-// `npm run bench [-- --json] [-- --runs N]`: median timings of every preset, native (the `sylva
-// bench` CLI) and wasm (the release module in Node, the same build the browser runs).
+// `npm run bench [-- --json] [-- --runs N]`: median timings of every preset (and the named
+// cases below), native (the `sylva bench` CLI) and wasm (the release module in Node, the same build the browser runs).
 // Reports per-stage medians, end-to-end medians (wasm: the JS call plus copying the buffers out,
 // i.e. what the worker pays before posting), and output vertices per second.
 import { execFileSync } from 'node:child_process';
@@ -23,10 +23,18 @@ execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cw
 const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
 wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
 
+// Every preset, plus the named cases the issues set targets for.
+const cases = JSON.parse(wasm.presets_json()).map((p) => ({ name: p.name, values: p.values, args: ['--preset', p.name] }));
+cases.push({
+  name: 'grown_10k_markers',
+  values: { growth_mode: 1, markers: 10000 },
+  args: ['--set', 'growth_mode=1', '--set', 'markers=10000'],
+});
+
 const results = [];
-for (const preset of JSON.parse(wasm.presets_json())) {
+for (const preset of cases) {
   const native = JSON.parse(
-    execFileSync(`${root}/target/release/sylva`, ['bench', '--preset', preset.name, '--runs', String(runs), '--json'], {
+    execFileSync(`${root}/target/release/sylva`, ['bench', ...preset.args, '--runs', String(runs), '--json'], {
       encoding: 'utf8',
     }),
   );
@@ -84,5 +92,66 @@ if (asJson) {
         `${f(r.wasm.median_ms)}${f(s.skeleton)}${f(s.mesh)}${f(s.hash)}${f(r.wasm.end_to_end_median_ms)}${mv(r.wasm.vertices_per_second)}${mv(r.wasm.skeleton_mesh_vertices_per_second)}` +
         (r.same_hash ? '' : '  HASH MISMATCH'),
     );
+  }
+}
+
+// Leaves (issue 4): a full leaf with 5,000 auxin sources, Open venation (Oak, budget 5 ms) and
+// Closed (Maple, budget 10 ms), native (`sylva bench-leaf`, the same parameters) and wasm
+// (`leaf_json`; core = the module's own stage clock, e2e = the call including the JSON). With
+// --json the leaf report is a second JSON object on its own line.
+if (typeof wasm.leaf_json === 'function') {
+  const leafNative = JSON.parse(
+    execFileSync(`${root}/target/release/sylva`, ['bench-leaf', '--runs', String(runs), '--json'], { encoding: 'utf8' }),
+  );
+  const leafResults = [];
+  for (const r of leafNative.results) {
+    const json = JSON.stringify(r.params);
+    const core = [];
+    const e2e = [];
+    const stages = {};
+    let leaf;
+    for (let i = 0; i < runs + 3; i++) {
+      const t0 = performance.now();
+      const out = wasm.leaf_json(json);
+      const t1 = performance.now();
+      if (i === runs + 2) leaf = JSON.parse(out);
+      if (i < 3) continue; // warm-up
+      // Only the timings are read back each run (parsing the whole leaf would feed the GC).
+      const ms = JSON.parse(out.slice(out.lastIndexOf('"ms":{') + 5, out.lastIndexOf(',"total_ms"')));
+      core.push(Number(out.slice(out.lastIndexOf('"total_ms":') + 11, -1)));
+      e2e.push(t1 - t0);
+      for (const [k, v] of Object.entries(ms)) (stages[k] ??= []).push(v);
+    }
+    leafResults.push({
+      preset: r.preset,
+      venation: r.venation,
+      auxins: leaf.auxins.length - 1,
+      vein_nodes: leaf.veins.nodes.length,
+      loops: leaf.loops,
+      budget_wasm_ms: r.venation === 'Closed' ? 10 : 5,
+      native: { median_ms: r.median_ms, stage_median_ms: r.stage_median_ms },
+      wasm: {
+        median_ms: median(core),
+        end_to_end_median_ms: median(e2e),
+        stage_median_ms: Object.fromEntries(Object.entries(stages).map(([k, v]) => [k, median(v)])),
+      },
+      same_hash: r.hash === leaf.hash,
+    });
+  }
+  if (asJson) {
+    console.log(JSON.stringify({ leaf: { runs, results: leafResults } }, null, 2));
+  } else {
+    const f = (x) => x.toFixed(2).padStart(8);
+    console.log(`\nLeaves, 5,000 auxin sources, medians over ${runs} runs (ms). wasm e2e = leaf_json including JSON.`);
+    console.log('leaf     venation  nodes loops | native ms  veins |  wasm ms  veins  budget    e2e');
+    for (const r of leafResults) {
+      const within = r.wasm.median_ms <= r.budget_wasm_ms ? 'ok' : 'OVER';
+      console.log(
+        `${r.preset.padEnd(8)} ${r.venation.padEnd(8)} ${String(r.vein_nodes).padStart(6)} ${String(r.loops).padStart(5)} |` +
+          `${f(r.native.median_ms)}${f(r.native.stage_median_ms.veins)} |${f(r.wasm.median_ms)}${f(r.wasm.stage_median_ms.veins)}` +
+          ` ${String(r.budget_wasm_ms).padStart(3)} ${within.padEnd(4)}${f(r.wasm.end_to_end_median_ms)}` +
+          (r.same_hash ? '' : '  HASH MISMATCH'),
+      );
+    }
   }
 }

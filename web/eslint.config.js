@@ -19,6 +19,23 @@ export default tseslint.config(
       ...reactHooks.configs.recommended.rules,
       '@typescript-eslint/no-explicit-any': 'error',
       '@typescript-eslint/consistent-type-imports': 'error',
+      // Text from share links is only ever rendered as text, and no string becomes code.
+      'no-eval': 'error',
+      'no-new-func': 'error',
+      'no-restricted-properties': [
+        'error',
+        { property: 'innerHTML', message: 'Render text as text (React children, textContent).' },
+        { property: 'outerHTML', message: 'Render text as text (React children, textContent).' },
+        { property: 'insertAdjacentHTML', message: 'Build DOM nodes instead of HTML strings.' },
+        { object: 'document', property: 'write', message: 'Never write HTML strings.' },
+      ],
+      'no-restricted-syntax': [
+        'error',
+        {
+          selector: "JSXAttribute[name.name='dangerouslySetInnerHTML']",
+          message: 'Render text as text: no dangerouslySetInnerHTML.',
+        },
+      ],
     },
   },
 );

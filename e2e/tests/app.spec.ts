@@ -116,7 +116,7 @@ test('(e) a worker panic is reported, the tree stays, and the worker is recreate
   await page.goto('/?debug=1');
   const hash = await waitForTree(page);
   await page.waitForFunction(() => typeof window.__sylva?.panic === 'function');
-  await page.evaluate(() => window.__sylva?.panic());
+  await page.evaluate(() => window.__sylva?.panic?.());
   const banner = page.getByTestId('error-banner');
   await expect(banner).toContainText(/crash|panic/i);
   await expect(banner).toContainText(/panic/i);

@@ -1,4 +1,13 @@
-/** The app's debug hook, as seen from e2e page scripts. */
+/** The app's debug hook (`?debug=1`), as seen from e2e page scripts. */
 interface Window {
-  __sylva?: { panic(): void };
+  __sylva?: {
+    panic?(): void;
+    hang?(ms: number): void;
+    setTimeLimit?(ms: number): void;
+    geometries?(): number | null;
+  };
+  /** Set by the tests' init scripts. */
+  __cspViolations?: string[];
+  __longTasks?: { start: number; duration: number }[];
+  __xss?: unknown;
 }

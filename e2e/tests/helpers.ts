@@ -94,7 +94,9 @@ export async function analyseCanvas(page: Page): Promise<CanvasPixels> {
   const png = await page.getByTestId('viewer-canvas').screenshot();
   return page.evaluate(
     async ({ base64, background }) => {
-      const blob = await (await fetch(`data:image/png;base64,${base64}`)).blob();
+      // Decoded without fetch(): the app's CSP (connect-src 'self') forbids data: URLs.
+      const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
+      const blob = new Blob([bytes], { type: 'image/png' });
       const bitmap = await createImageBitmap(blob);
       const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
       const context = canvas.getContext('2d');

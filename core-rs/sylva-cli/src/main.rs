@@ -1,7 +1,7 @@
 //! `sylva`: the command line of Sylva's core.
 //!
 //! ```text
-//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton]
+//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton|mesh]
 //! sylva envelope --shape NAME [--samples N]
 //! sylva params [--markdown]
 //! sylva presets
@@ -9,12 +9,14 @@
 //! ```
 //! Errors (unknown flags, invalid parameters, budgets) print a message to stderr and exit 2.
 
+mod leaf;
+
 use std::process::ExitCode;
 use sylva_core::params::{registry, ParamKind, TreeParams};
 use sylva_core::{presets, SylvaError};
 
 const USAGE: &str = "usage:
-  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton]
+  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton|mesh]
   sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
@@ -48,6 +50,7 @@ fn run(args: &[String]) -> Result<String, String> {
         "presets" => Ok(presets::presets_json()),
         "envelope" => envelope(rest),
         "bench" => bench(rest),
+        "leaf" | "bench-leaf" => leaf::run(cmd, rest),
         "--help" | "-h" | "help" => Ok(USAGE.to_string()),
         "--version" => Ok(sylva_core::VERSION.to_string()),
         other => Err(format!("unknown command '{other}'\n{USAGE}")),
@@ -86,8 +89,8 @@ fn parse(args: &[String]) -> Result<Opts, String> {
             "--json" => json = true,
             "--report" => {
                 let what = value("--report")?;
-                if what != "skeleton" {
-                    return Err(format!("--report takes 'skeleton', got '{what}'"));
+                if what != "skeleton" && what != "mesh" {
+                    return Err(format!("--report takes 'skeleton' or 'mesh', got '{what}'"));
                 }
                 report.push(what);
             }
@@ -153,6 +156,12 @@ fn generate(args: &[String]) -> Result<String, String> {
         "ms": ms,
         "total_ms": g.stats.total_ms,
     });
+    if opts.report.iter().any(|r| r == "mesh") {
+        let t = sylva_core::mesh::topology::topology(&g.mesh);
+        out["non_manifold_edges"] = t.non_manifold_edges.into();
+        out["boundary_edges"] = t.boundary_edges.into();
+        out["holes"] = 0.into(); // tree holes are not generated yet (issue 5)
+    }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g
             .skeleton

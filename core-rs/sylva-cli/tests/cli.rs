@@ -116,3 +116,18 @@ fn readme_parameter_reference_matches_the_registry() {
     let section = readme[start + "<!-- params:start -->".len()..end].trim();
     assert_eq!(section, table.trim(), "README parameter reference is stale: run `npm run docs`");
 }
+
+#[test]
+fn report_mesh_counts_open_and_non_manifold_edges() {
+    let (code, out, err) = sylva(&["generate", "--preset", "fir", "--report", "mesh"]);
+    assert_eq!(code, 0, "{err}");
+    let v = json(&out);
+    assert_eq!(v["non_manifold_edges"], 0);
+    // Only the buried bases of the branches are open: some, but far fewer than all edges.
+    let open = v["boundary_edges"].as_u64().unwrap();
+    assert!(open > 0 && open < v["triangles"].as_u64().unwrap() / 4, "{open}");
+    assert_eq!(v["holes"], 0);
+    let (code, _, err) = sylva(&["generate", "--report", "everything"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--report takes 'skeleton' or 'mesh'"), "{err}");
+}

@@ -10,6 +10,7 @@
 //! * [`rng`]: one portable PRNG with a named stream per stage.
 //! * [`crown`]: Weber & Penn's ShapeRatio crown envelopes.
 //! * [`skeleton`]: Weber & Penn stems.
+//! * [`growth`]: space-colonization growth, an alternative source of stems.
 //! * [`mesh`]: the output buffer type and the bark tube sweep.
 //!
 //! Same parameters and seed give byte-identical buffers on every target (see `math`).
@@ -17,6 +18,8 @@
 pub mod clock;
 pub mod crown;
 pub mod error;
+pub mod growth;
+pub mod leaf;
 pub mod math;
 pub mod mesh;
 pub mod params;
@@ -65,6 +68,8 @@ pub struct Generated {
     pub stats: Stats,
     /// Crown envelope for the viewer's preview: `[height, radius]` pairs ([`crown::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
+    /// Growth mode only: the markers sampled in the crown at the start (for display).
+    pub markers: Vec<glam::Vec3>,
 }
 
 impl Generated {
@@ -104,7 +109,13 @@ pub fn generate(params: &TreeParams) -> Result<Generated, SylvaError> {
 pub fn generate_with_clock(params: &TreeParams, clock: &dyn Clock) -> Result<Generated, SylvaError> {
     params.validate()?;
     let t0 = clock.now_ms();
-    let skeleton = skeleton::build(params)?;
+    let (skeleton, markers) = match params.growth_mode {
+        growth::GrowthMode::Parametric => (skeleton::build(params)?, Vec::new()),
+        growth::GrowthMode::SpaceColonization => {
+            let grown = growth::grow(params)?;
+            (growth::skeleton(params, &grown), grown.markers)
+        }
+    };
     let t1 = clock.now_ms();
     let mesh = mesh::tube::build(&skeleton, params)?;
     let t2 = clock.now_ms();
@@ -119,5 +130,5 @@ pub fn generate_with_clock(params: &TreeParams, clock: &dyn Clock) -> Result<Gen
         total_ms: t3 - t0,
     };
     let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
-    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope })
+    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers })
 }

@@ -9,6 +9,8 @@
 
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
+use crate::growth::{CrownVolumeKind, GrowthMode};
+use crate::leaf::options::{LeafMargin, LeafOutline, LeafVenation};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -56,6 +58,17 @@ pub struct ParamSpec {
 }
 
 impl ParamSpec {
+    /// The accepted range. Float fields are stored as f32, so a bound like 0.2 is stored as
+    /// 0.2000000030 (and 0.01 as 0.0099999998): the f32-rounded bounds are accepted as well, or a
+    /// value set at its bound would fail validation once stored.
+    pub fn bounds(&self) -> (f64, f64) {
+        if self.kind == ParamKind::Float {
+            (self.min.min(f64::from(self.min as f32)), self.max.max(f64::from(self.max as f32)))
+        } else {
+            (self.min, self.max)
+        }
+    }
+
     /// Check one value against this spec; the error names the field and the allowed range.
     pub fn check(&self, v: f64) -> Result<(), SylvaError> {
         let range = match self.kind {
@@ -72,7 +85,8 @@ impl ParamSpec {
         if !v.is_finite() {
             return Err(bad("must be a finite number"));
         }
-        if v < self.min || v > self.max {
+        let (lo, hi) = self.bounds();
+        if v < lo || v > hi {
             return Err(bad(&format!("is {}", fmt_num(v))));
         }
         if self.kind != ParamKind::Float && v.fract() != 0.0 {
@@ -153,8 +167,57 @@ impl ParamValue for CrownShape {
     }
 }
 
+impl ParamValue for GrowthMode {
+    const KIND: ParamKind = ParamKind::Enum;
+    fn to_wire(self) -> f64 {
+        f64::from(self as u8)
+    }
+    fn from_wire(v: f64) -> Self {
+        if v == 1.0 {
+            GrowthMode::SpaceColonization
+        } else {
+            GrowthMode::Parametric
+        }
+    }
+    fn options() -> Option<Vec<String>> {
+        Some(GrowthMode::LABELS.iter().map(|s| s.to_string()).collect())
+    }
+}
+
+impl ParamValue for CrownVolumeKind {
+    const KIND: ParamKind = ParamKind::Enum;
+    fn to_wire(self) -> f64 {
+        f64::from(self as u8)
+    }
+    fn from_wire(v: f64) -> Self {
+        if v == 1.0 {
+            CrownVolumeKind::Envelope
+        } else {
+            CrownVolumeKind::Ellipsoid
+        }
+    }
+    fn options() -> Option<Vec<String>> {
+        Some(CrownVolumeKind::LABELS.iter().map(|s| s.to_string()).collect())
+    }
+}
+
 /// Panel sections in display order. Every parameter's group is one of these.
-pub const GROUPS: [&str; 8] = ["Tree", "Crown", "Trunk", "Level 1", "Level 2", "Level 3", "Quality", "Budget"];
+pub const GROUPS: [&str; 14] = [
+    "Tree",
+    "Crown",
+    "Trunk",
+    "Level 1",
+    "Level 2",
+    "Level 3",
+    "Growth",
+    "Growth Volume",
+    "Environment",
+    "Quality",
+    "Budget",
+    "Leaf",
+    "Leaf Veins",
+    "Leaf Surface",
+];
 
 /// Declares the parameters. Tree-level entries read
 /// `id: Type = default; [min, max, step] "unit", "Group", "Label", "description";`
@@ -325,10 +388,158 @@ define_params! {
             "Number of lobes (flutes) around the trunk cross-section; 0 = round.";
         lobe_depth: f32 = 0.07; [0.0, 1.0, 0.01] "", "Trunk", "Lobe Depth",
             "Depth of the trunk lobes as a fraction of the radius.";
+        guide_xy: f32 = 0.0; [0.0, 5.0, 0.01] "m", "Trunk", "Guide Limit",
+            "Complex trunk: random sideways offset of each trunk point (the guide curve), within this limit (0 = off).";
+        refine_curves: u32 = 0; [0, 12, 1] "", "Trunk", "Refinement Curves",
+            "Complex trunk: number of shape-refinement curves around the trunk; their circles merge into a fluted, buttressed outline (0 = off).";
+        refine_offset: f32 = 1.0; [0.0, 2.0, 0.01] "", "Trunk", "Refinement Offset",
+            "Complex trunk: distance of the refinement curves from the trunk axis, as a fraction of the trunk radius (1 = on its surface).";
+        refine_radius: f32 = 0.333; [0.05, 1.0, 0.01] "", "Trunk", "Refinement Radius",
+            "Complex trunk: radius of the refinement circles as a fraction of the trunk radius (default one third).";
+        refine_variation: f32 = 0.3; [0.0, 1.0, 0.01] "", "Trunk", "Refinement Variation",
+            "Complex trunk: random variation of each refinement circle's offset and radius along the height.";
+        base_ripple: f32 = 0.0; [0.0, 0.5, 0.01] "", "Trunk", "Base Ripple",
+            "Ripple of the trunk base, R(u) = R0 (1 + a sin 7u), fading out over the flare zone (0 = off).";
+        root_count: u32 = 0; [0, 16, 1] "", "Trunk", "Roots",
+            "Number of surface roots spreading from the trunk base (0 = none).";
+        root_length: f32 = 0.15; [0.01, 1.0, 0.01] "", "Trunk", "Root Length",
+            "Length of the surface roots as a fraction of the trunk length.";
+        root_radius: f32 = 0.35; [0.05, 1.0, 0.01] "", "Trunk", "Root Radius",
+            "Thickness of the roots where they leave the trunk, as a fraction of the trunk radius.";
+        root_spread: f32 = 0.4; [0.0, 1.0, 0.01] "", "Trunk", "Root Spread",
+            "Random variation of the roots' directions and lengths (0 = evenly spaced, equal).";
+        root_depth: f32 = 0.6; [0.0, 3.0, 0.05] "", "Trunk", "Root Depth",
+            "How far the roots dive below the ground toward their tips, in root radii (0 = along the surface).";
+        growth_mode: GrowthMode = GrowthMode::Parametric; [0, 1, 1] "", "Growth", "Growth Mode",
+            "Parametric draws the tree with Weber & Penn's rules; Space Colonization grows it toward markers in a crown volume.";
+        growth_age: f32 = 1.0; [0.0, 1.0, 0.01] "", "Growth", "Age",
+            "Space colonization: show the tree as it was after this fraction of its growth iterations.";
+        markers: u32 = 2_000; [10, 50_000, 10] "", "Growth", "Markers",
+            "Space colonization: number of attraction points (markers) sampled in the crown volume.";
+        extra_markers: u32 = 0; [0, 20_000, 10] "", "Growth", "Extra Markers",
+            "Space colonization: markers added per 1,000 iterations while growing (bushier interiors).";
+        influence_radius: f32 = 3.0; [0.05, 50.0, 0.05] "m", "Growth", "Influence Radius",
+            "Space colonization: a marker attracts the closest growing node within this distance.";
+        kill_distance: f32 = 0.6; [0.01, 20.0, 0.01] "m", "Growth", "Kill Distance",
+            "Space colonization: a marker is removed when a node comes this close.";
+        internode: f32 = 0.3; [0.02, 5.0, 0.01] "m", "Growth", "Internode",
+            "Space colonization: length of one growth step.";
+        iterations: u32 = 400; [1, 5_000, 1] "", "Growth", "Iterations",
+            "Space colonization: iteration cap (growth also stops when no marker is left or nothing grows).";
+        tropism: f32 = 0.1; [-1.0, 1.0, 0.01] "", "Growth", "Tropism",
+            "Space colonization: pull of every growth step toward the sky (positive) or the ground (negative).";
+        growth_jitter: f32 = 0.1; [0.0, 1.0, 0.01] "", "Growth", "Jitter",
+            "Space colonization: random deviation of growth directions.";
+        apical_control: f32 = 0.3; [0.0, 1.0, 0.01] "", "Growth", "Apical Control",
+            "Space colonization: chance that a node which already has a shoot does not sprout again (fewer side branches).";
+        start_points: u32 = 1; [1, 20, 1] "", "Growth", "Start Points",
+            "Space colonization: number of trunks, in a row along x (more than one makes a hedgerow).";
+        start_spacing: f32 = 2.0; [0.1, 20.0, 0.1] "m", "Growth", "Start Spacing",
+            "Space colonization: distance between neighbouring start points.";
+        tip_radius: f32 = 0.008; [0.001, 0.1, 0.001] "m", "Growth", "Tip Radius",
+            "Space colonization: radius of the branch tips; thicker stems follow the pipe model.";
+        pipe_power: f32 = 2.0; [1.0, 4.0, 0.05] "", "Growth", "Pipe Power",
+            "Space colonization: pipe model exponent D in r_parent^D = sum of r_child^D (2 = da Vinci's rule).";
+        crown_volume: CrownVolumeKind = CrownVolumeKind::Ellipsoid; [0, 1, 1] "", "Growth Volume", "Crown Volume",
+            "Space colonization: markers fill an ellipsoid, or the Crown Shape envelope as a solid of revolution.";
+        crown_base: f32 = 2.5; [0.0, 50.0, 0.1] "m", "Growth Volume", "Crown Bottom",
+            "Space colonization: height of the bottom of the crown volume above the ground.";
+        crown_height: f32 = 6.0; [0.2, 100.0, 0.1] "m", "Growth Volume", "Crown Height",
+            "Space colonization: height of the crown volume.";
+        crown_radius: f32 = 3.5; [0.1, 50.0, 0.1] "m", "Growth Volume", "Crown Radius",
+            "Space colonization: largest horizontal radius of the crown volume.";
+        marker_surface_bias: f32 = 0.0; [-1.0, 1.0, 0.05] "", "Growth Volume", "Surface Bias",
+            "Space colonization: crowd markers toward the crown's surface (positive) or its axis (negative).";
+        marker_top_bias: f32 = 0.0; [-1.0, 1.0, 0.05] "", "Growth Volume", "Top Bias",
+            "Space colonization: crowd markers toward the top (positive) or the bottom (negative) of the crown.";
+        light_competition: bool = false; [0, 1, 1] "", "Environment", "Light Competition",
+            "Space colonization: reject new shoots that would grow in the shade of the canopy above them.";
+        shade_depth: f32 = 4.0; [0.5, 50.0, 0.5] "", "Environment", "Shade Depth",
+            "Space colonization: how many internodes of canopy above a shoot put it in the shade.";
+        wall: bool = false; [0, 1, 1] "", "Environment", "Wall",
+            "Space colonization: a wall beside the tree: branches stop at it and it shades the markers near it.";
+        wall_distance: f32 = 1.5; [0.2, 50.0, 0.1] "m", "Environment", "Wall Distance",
+            "Space colonization: distance from the trunk to the wall.";
+        wall_height: f32 = 8.0; [0.5, 100.0, 0.1] "m", "Environment", "Wall Height",
+            "Space colonization: height of the wall.";
+        wall_width: f32 = 12.0; [0.5, 200.0, 0.1] "m", "Environment", "Wall Width",
+            "Space colonization: length of the wall.";
         mesh_quality: f32 = 1.0; [0.25, 4.0, 0.05] "", "Quality", "Mesh Quality",
             "Multiplies the number of sides around each stem and rings along bends.";
         max_vertices: u32 = 2_000_000; [1_000, 20_000_000, 1_000] "", "Budget", "Max Vertices",
             "Vertex budget: a tree that would need more stops with an error instead of freezing.";
+        leaf_outline: LeafOutline = LeafOutline::Superformula; [0, 1, 1] "", "Leaf", "Leaf Outline",
+            "How the blade outline is drawn: Gielis' superformula, or a mirrored cubic spline (Spline Angle 1, L1, Angle 2, L2).";
+        leaf_m: f32 = 2.0; [0.0, 20.0, 0.5] "", "Leaf", "Symmetry (m)",
+            "Superformula m: number of symmetry axes; odd values put a lobe at the tip and a sinus at the base.";
+        leaf_a: f32 = 1.0; [0.05, 4.0, 0.01] "", "Leaf", "Superformula a",
+            "Superformula a: divides the cosine term; with b it sets how the blade narrows toward the tip.";
+        leaf_b: f32 = 0.6; [0.01, 4.0, 0.01] "", "Leaf", "Superformula b",
+            "Superformula b: divides the sine term; below a the blade narrows toward the tip.";
+        leaf_n1: f32 = 2.5; [0.2, 40.0, 0.1] "", "Leaf", "Superformula n1",
+            "Superformula n1: overall exponent; small values pinch the outline, large values round it.";
+        leaf_n2: f32 = 8.0; [0.2, 40.0, 0.1] "", "Leaf", "Superformula n2",
+            "Superformula n2: exponent of the cosine term.";
+        leaf_n3: f32 = 8.0; [0.2, 40.0, 0.1] "", "Leaf", "Superformula n3",
+            "Superformula n3: exponent of the sine term.";
+        leaf_aspect: f32 = 0.55; [0.02, 2.0, 0.01] "", "Leaf", "Aspect Ratio",
+            "Blade width as a fraction of its length (superformula outline).";
+        leaf_angle1: f32 = 70.0; [5.0, 90.0, 1.0] "°", "Leaf", "Spline Angle 1",
+            "Spline outline: angle between the midrib and the edge where it leaves the base.";
+        leaf_l1: f32 = 1.0; [0.05, 1.0, 0.01] "", "Leaf", "Spline L1",
+            "Spline outline: length of the base handle (leaf lengths).";
+        leaf_angle2: f32 = 70.0; [5.0, 90.0, 1.0] "°", "Leaf", "Spline Angle 2",
+            "Spline outline: angle between the midrib and the edge where it arrives at the tip.";
+        leaf_l2: f32 = 1.0; [0.05, 1.0, 0.01] "", "Leaf", "Spline L2",
+            "Spline outline: length of the tip handle (leaf lengths).";
+        leaf_margin: LeafMargin = LeafMargin::Entire; [0, 4, 1] "", "Leaf", "Margin",
+            "Edge detail: Entire, Serrate (teeth lean toward the tip), Dentate, Crenate or Lobed.";
+        leaf_teeth: u32 = 12; [0, 200, 1] "", "Leaf", "Tooth Count",
+            "Teeth (or lobes) around the whole margin; the tip is always a tooth.";
+        leaf_tooth_depth: f32 = 0.1; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Depth",
+            "How far teeth stand out: the edge radius is multiplied by 1 + depth x wave.";
+        leaf_tooth_sharpness: f32 = 0.5; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Sharpness",
+            "Serrate only: how far each tooth leans toward the tip (0 = upright, 1 = hooked).";
+        leaf_asymmetry_seed: u32 = 0; [0, 4_294_967_295u32, 1] "", "Leaf", "Asymmetry Seed",
+            "Seed of small per-tooth and per-side differences between the halves; 0 = exactly mirror-symmetric.";
+        leaf_detail: f32 = 1.0; [0.25, 4.0, 0.05] "", "Leaf", "Outline Detail",
+            "Multiplies the density of the curvature-adaptive outline sampling.";
+        leaf_rings: u32 = 5; [1, 16, 1] "", "Leaf", "Rings",
+            "Concentric rings of the blade triangulation (interior detail).";
+        leaf_venation: LeafVenation = LeafVenation::Open; [0, 3, 1] "", "Leaf Veins", "Venation",
+            "Vein network: None, Open or Closed space colonization (Runions 2005), or Spline veins.";
+        leaf_vein_seed: u32 = 1; [0, 4_294_967_295u32, 1] "", "Leaf Veins", "Vein Seed",
+            "Seed of the auxin sources and of the spline veins' variation.";
+        leaf_vein_density: f32 = 800.0; [0.0, 20_000.0, 10.0] "", "Leaf Veins", "Vein Density",
+            "Auxin sources per unit area (leaf length 1); at most 5,000 sources.";
+        leaf_attraction: f32 = 0.08; [0.005, 0.5, 0.005] "", "Leaf Veins", "Attraction Distance",
+            "A source pulls vein nodes within this distance (leaf lengths); must exceed Kill Distance.";
+        leaf_kill: f32 = 0.02; [0.002, 0.05, 0.001] "", "Leaf Veins", "Kill Distance",
+            "A source dies when a vein comes this close (leaf lengths).";
+        leaf_growth_step: f32 = 0.01; [0.002, 0.05, 0.001] "", "Leaf Veins", "Growth Step",
+            "Length a vein grows per iteration (leaf lengths).";
+        leaf_vein_width: f32 = 0.02; [0.001, 0.1, 0.001] "", "Leaf Veins", "Vein Width",
+            "Midrib width at the base (leaf lengths); every vein is this x sqrt(tips downstream / all tips) (pipe model).";
+        leaf_vein_count: u32 = 7; [1, 40, 1] "", "Leaf Veins", "Spline Veins",
+            "Spline venation: lateral veins per side.";
+        leaf_vein_var: f32 = 0.0; [0.0, 1.0, 0.01] "", "Leaf Veins", "Spline Variation",
+            "Spline venation: random shift of where the veins leave the midrib.";
+        leaf_vein_squish: f32 = 0.5; [0.05, 1.0, 0.01] "", "Leaf Veins", "Spline Squish",
+            "Spline venation: how far the veins bunch toward the tip (1 = spread over the whole midrib).";
+        leaf_vein_up: f32 = 0.5; [0.0, 1.0, 0.01] "", "Leaf Veins", "Spline Up",
+            "Spline venation: control points lie on the edge scaled toward the midrib by this (low = pinnate, high = arcuate).";
+        leaf_midrib_curvature: f32 = 0.1; [-1.0, 1.0, 0.01] "", "Leaf Surface", "Midrib Curvature",
+            "Bends the leaf along its length (positive lifts the tip toward the front, +Z).";
+        leaf_cross_curvature: f32 = 0.1; [-1.0, 1.0, 0.01] "", "Leaf Surface", "Cross Curvature",
+            "Cups the blade across its width (positive lifts both edges toward the front).";
+        leaf_edge_curl: f32 = 0.0; [-1.0, 1.0, 0.01] "", "Leaf Surface", "Edge Curl",
+            "Curls the margin toward the front (positive) or back: most at the edge, none at the centre.";
+        leaf_vein_displacement: f32 = 0.004; [0.0, 0.05, 0.001] "", "Leaf Surface", "Vein Displacement",
+            "Height of the vein ridges (leaf lengths); thicker veins raise higher and wider ridges.";
+        leaf_texture_level: u32 = 8; [4, 11, 1] "", "Leaf Surface", "Texture Size (log2)",
+            "The baked vein texture is 2^value texels high; its width is the power of two nearest the blade's aspect.";
+        leaf_impostor_grid: u32 = 8; [2, 16, 1] "", "Leaf Surface", "Impostor Grid",
+            "Impostor view directions: an N x N hemi-octahedral grid over the leaf's front hemisphere.";
     }
     level {
         length: f32 = [1.0, 0.3, 0.6, 0.4]; [0.0, 2.0, 0.01] "", "Length",

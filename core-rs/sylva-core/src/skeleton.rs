@@ -51,11 +51,19 @@ pub struct Stem {
     pub chain_start: f32,
     /// True for the trunk record, which carries the Lobes.
     pub lobed: bool,
+    /// Radius at each of [`Stem::points`] when the profile is given point by point (grown
+    /// trees, pipe model) instead of by Weber & Penn's taper.
+    pub radii: Option<Vec<f32>>,
 }
 
 impl Stem {
     /// Radius at fraction `z` (0 = base, 1 = tip) of the stem: W&P taper, plus flare on the trunk.
     pub fn radius_at(&self, z: f32) -> f32 {
+        if let Some(r) = &self.radii {
+            let f = z.clamp(0.0, 1.0) * (r.len() - 1) as f32;
+            let i = (f as usize).min(r.len() - 2);
+            return r[i] + (r[i + 1] - r[i]) * (f - i as f32);
+        }
         let zc = self.chain_start + z * (1.0 - self.chain_start);
         taper_radius(self.chain_radius, self.taper, self.chain_length, zc) * flare_factor(self.flare, zc)
     }
@@ -105,7 +113,7 @@ impl Stem {
     /// `d radius / d arc length` at fraction `t`: exact for the linear tapers (the common case),
     /// a central difference where flare or rounded tips make the profile curved.
     pub fn radius_slope(&self, t: f32) -> f32 {
-        if self.flare == 0.0 && self.taper <= 1.0 {
+        if self.flare == 0.0 && self.taper <= 1.0 && self.radii.is_none() {
             return -self.chain_radius * self.taper / self.chain_length;
         }
         let eps = 1e-3f32;
@@ -265,7 +273,73 @@ pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
         correction: 0.0,
         rng,
     })?;
+    add_roots(p, &mut b.stems);
     Ok(Skeleton { stems: b.stems, scale, crown_base: b.crown_base })
+}
+
+/// The thesis' guide curve (§4.2.1): the trunk's points keep their heights but move by random
+/// x/z offsets within `Guide Limit` (the first point stays at the origin, the second moves at most
+/// half as far), from their own random stream.
+fn guide_curve(p: &TreeParams, points: &mut Points) {
+    let mut rng = Rng::new(u64::from(p.seed), "trunk-guide");
+    for (i, q) in points.iter_mut().enumerate().skip(1) {
+        let limit = if i == 1 { 0.5 * p.guide_xy } else { p.guide_xy };
+        q.x += rng.var(limit);
+        q.z += rng.var(limit);
+    }
+}
+
+/// Surface roots: `Roots` stems leaving the trunk base, spread evenly around it (with `Root
+/// Spread` of random variation), running outward just under the ground and diving to `Root
+/// Depth` (in root radii) below it, tapering to a point. They start inside the flared base, so
+/// they emerge from it; their own random stream keeps every other stem unchanged.
+fn add_roots(p: &TreeParams, stems: &mut Vec<Stem>) {
+    if p.root_count == 0 || stems.is_empty() {
+        return;
+    }
+    let mut rng = Rng::new(u64::from(p.seed), "roots");
+    let trunk = stems[0].clone();
+    let r0 = trunk.radius * p.root_radius;
+    let length = trunk.length * p.root_length;
+    let segs = 8usize;
+    for k in 0..p.root_count {
+        let angle = TAU * (k as f32 + rng.var(0.5 * p.root_spread)) / p.root_count as f32;
+        let (dx, dz) = (crate::math::cos(angle), crate::math::sin(angle));
+        let len = length * (1.0 + rng.var(0.3 * p.root_spread));
+        let start_y = 0.35 * r0;
+        let end_y = -p.root_depth * r0;
+        let mut points = Points::new();
+        for i in 0..=segs {
+            let t = i as f32 / segs as f32;
+            // Out along the ground, sinking smoothly (smoothstep) from just above it to the depth.
+            let s = t * t * (3.0 - 2.0 * t);
+            let wobble = rng.var(0.05) * len * t;
+            let horizontal = 0.25 * trunk.radius + len * t;
+            points.push(Vec3::new(
+                dx * horizontal - dz * wobble,
+                start_y + (end_y - start_y) * s,
+                dz * horizontal + dx * wobble,
+            ));
+        }
+        points[0] = Vec3::new(0.0, start_y, 0.0);
+        stems.push(Stem {
+            level: 1,
+            parent: Some(0),
+            offset: 0.0,
+            base_normal: Vec3::Y,
+            points,
+            length: len,
+            radius: r0,
+            taper: 1.0,
+            flare: 0.0,
+            down_angle: 90.0,
+            chain_length: len,
+            chain_radius: r0,
+            chain_start: 0.0,
+            lobed: false,
+            radii: None,
+        });
+    }
 }
 
 impl Builder<'_> {
@@ -287,17 +361,20 @@ impl Builder<'_> {
             }
         }
         let mut carry = self.split_carry[s.level];
+        let trunk = s.level == 0 && s.parent.is_none();
         let mut points = Points::with_capacity(p.level[s.level].curve_res as usize + 1);
         let clones = trace(p, &s, length, &mut rng, Some(&mut carry), &mut |q| {
             points.push(q);
             true
         });
         self.split_carry[s.level] = carry;
+        if trunk && p.guide_xy > 0.0 {
+            guide_curve(p, &mut points);
+        }
         let segs = lp.curve_res as usize;
         let z0 = s.first_seg as f32 / segs as f32;
         let index = self.stems.len() as u32;
         let record_len = length * (1.0 - z0);
-        let trunk = s.level == 0 && s.parent.is_none();
         self.stems.push(Stem {
             level: s.level as u8,
             parent: s.parent,
@@ -313,6 +390,7 @@ impl Builder<'_> {
             chain_radius: s.radius,
             chain_start: z0,
             lobed: trunk,
+            radii: None,
         });
         if s.level + 1 < p.levels as usize {
             self.grow_children(s.level, index, &mut rng)?;

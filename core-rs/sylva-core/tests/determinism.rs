@@ -6,16 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "cdb17e273c307235"),
-    ("quaking_aspen", "4f1051fc6ddf32f1"),
-    ("black_tupelo", "5590f1058284628f"),
-    ("weeping_willow", "c925132b03a74c0d"),
-    ("ca_black_oak", "f30742d6e9d2b025"),
+    ("default", "c9ffeacab08f8a76"),
+    ("quaking_aspen", "10b445fa84b25196"),
+    ("black_tupelo", "527c11f38d54d529"),
+    ("weeping_willow", "18c450af130f2cf4"),
+    ("ca_black_oak", "8df0cc8f6b026b23"),
     ("fir", "afcccfc9573a5438"),
-    ("oak", "88801e5c0e65ffd8"),
-    ("cypress", "9ca7cfbdc12a2190"),
-    ("umbrella", "df1cfb81cae9a1c8"),
-    ("weeping", "072bc3c6b9988928"),
+    ("oak", "4f1198b299881caa"),
+    ("cypress", "9d3dd43f71380fed"),
+    ("umbrella", "67f2a34e31445d13"),
+    ("weeping", "fb9f9ab2e2273d71"),
+    ("grown_broadleaf", "f3a478a31ca15414"),
+    ("grown_shrub", "c4744761aa0e4891"),
+    ("grown_hedgerow", "6a8921a9ab10b7d1"),
+    ("grown_beside_wall", "4a3d0087b6887de0"),
+    ("grown_bushy", "6e500d6b0b27fba1"),
 ];
 
 #[test]

@@ -98,3 +98,65 @@ fn regression_stems_pruned_to_nothing_are_dropped() {
     assert_mesh_invariants(&g, "pruned");
     assert!(g.skeleton.stems.iter().all(|s| s.length > 0.0));
 }
+
+#[test]
+fn complex_trunk_is_fluted_and_still_a_valid_surface() {
+    let p = TreeParams { refine_curves: 6, lobes: 0, base_ripple: 0.0, flare: 0.0, ..TreeParams::default() };
+    let g = generate(&p).unwrap();
+    assert_mesh_invariants(&g, "refined trunk");
+    // Ring 0 of the trunk (the first stem's first vertices) lies on the union of the main circle
+    // and the refinement circles: never inside the main circle, never beyond the largest reach.
+    let trunk = &g.skeleton.stems[0];
+    let sides = sides_for(trunk.radius, p.mesh_quality, 0) as usize;
+    let r0 = trunk.radius_at(0.0);
+    let reach = r0 * (p.refine_offset * (1.0 + p.refine_variation) + p.refine_radius * (1.0 + p.refine_variation));
+    let dist: Vec<f32> = (0..sides)
+        .map(|j| {
+            let v = &g.mesh.positions[j * 3..j * 3 + 3];
+            (v[0] * v[0] + v[2] * v[2]).sqrt()
+        })
+        .collect();
+    let (lo, hi) = dist.iter().fold((f32::MAX, 0.0f32), |(a, b), &d| (a.min(d), b.max(d)));
+    assert!(lo >= r0 * 0.999 && hi <= reach * 1.001, "ring 0 radii {lo}..{hi}, main {r0}, reach {reach}");
+    assert!(hi / lo > 1.15, "the outline is not fluted: {lo}..{hi}");
+    // The base ripple alone makes a 7-fold ribbed base.
+    let rippled = generate(&TreeParams { base_ripple: 0.2, lobes: 0, ..TreeParams::default() }).unwrap();
+    assert_mesh_invariants(&rippled, "base ripple");
+    assert_ne!(rippled.hash, generate(&TreeParams { lobes: 0, ..TreeParams::default() }).unwrap().hash);
+}
+
+#[test]
+fn surface_roots_spread_from_the_trunk_base_into_the_ground() {
+    let none = generate(&TreeParams::default()).unwrap();
+    let p = TreeParams { root_count: 6, root_depth: 1.0, ..TreeParams::default() };
+    let g = generate(&p).unwrap();
+    assert_mesh_invariants(&g, "roots");
+    let roots: Vec<_> = g.skeleton.stems.iter().filter(|s| s.parent == Some(0) && s.down_angle == 90.0).collect();
+    assert_eq!(roots.len(), 6);
+    let trunk_r = g.skeleton.stems[0].radius;
+    for r in &roots {
+        assert!(r.tip().y < 0.0, "root tip above the ground");
+        assert!(r.radius <= trunk_r, "root thicker than the trunk");
+        let out = (r.tip().x * r.tip().x + r.tip().z * r.tip().z).sqrt();
+        assert!(out > 2.0 * trunk_r, "root does not spread outward");
+    }
+    // Roots add geometry below the ground and leave every other stem as it was.
+    assert!(g.bounds.min[1] < -0.01);
+    assert_eq!(g.skeleton.stems.len(), none.skeleton.stems.len() + 6);
+    assert!(none.skeleton.stems.iter().zip(&g.skeleton.stems).all(|(a, b)| a.points == b.points));
+}
+
+#[test]
+fn the_guide_curve_moves_trunk_points_sideways_within_the_limit() {
+    let straight = generate(&TreeParams::default()).unwrap();
+    let g = generate(&TreeParams { guide_xy: 0.3, ..TreeParams::default() }).unwrap();
+    assert_mesh_invariants(&g, "guide curve");
+    let (a, b) = (&straight.skeleton.stems[0].points, &g.skeleton.stems[0].points);
+    assert_eq!(b[0], a[0], "the guide curve starts at the origin");
+    for (i, (p, q)) in a.iter().zip(b.iter()).enumerate().skip(1) {
+        let limit = if i == 1 { 0.15 } else { 0.3 };
+        assert_eq!(p.y, q.y, "heights are kept");
+        assert!((p.x - q.x).abs() <= limit + 1e-6 && (p.z - q.z).abs() <= limit + 1e-6);
+    }
+    assert!(a.iter().zip(b.iter()).skip(1).any(|(p, q)| (p.x - q.x).abs() > 0.01));
+}

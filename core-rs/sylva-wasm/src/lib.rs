@@ -64,6 +64,18 @@ pub fn presets_json() -> String {
     presets::presets_json()
 }
 
+/// The procedural bark colour map (RGBA8, `size`² texels, rows bottom to top).
+#[wasm_bindgen]
+pub fn bark_color(size: usize) -> Vec<u8> {
+    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).0.rgba
+}
+
+/// The procedural bark normal map (RGB = tangent-space normal, A = height; RGBA8, `size`²).
+#[wasm_bindgen]
+pub fn bark_normal(size: usize) -> Vec<u8> {
+    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).1.rgba
+}
+
 /// A generated tree. Each getter returns a fresh typed-array copy whose buffer the worker can
 /// transfer. Layout of the buffers: see `sylva_core::TreeMesh`.
 #[wasm_bindgen]
@@ -87,6 +99,10 @@ impl GeneratedTree {
     pub fn indices(&self) -> Vec<u32> {
         self.0.mesh.indices.clone()
     }
+    /// Growth mode: the markers sampled in the crown (`x, y, z` per marker; empty otherwise).
+    pub fn markers(&self) -> Vec<f32> {
+        self.0.markers.iter().flat_map(|m| m.to_array()).collect()
+    }
     /// The crown envelope preview as line segments (`x, y, z` pairs of points).
     pub fn envelope_lines(&self) -> Vec<f32> {
         sylva_core::crown::preview_lines(&self.0.envelope, 16, 48)
@@ -103,4 +119,36 @@ impl GeneratedTree {
 pub fn generate(params_json: &str) -> Result<GeneratedTree, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
     sylva_core::generate_with_clock(&params, &PerfClock).map(GeneratedTree).map_err(|e| JsValue::from_str(&e.to_json()))
+}
+
+/// A leaf as JSON (outline, triangulation, auxins, vein graph, loops, timings): the same object
+/// `sylva leaf` prints (`sylva_core::leaf::json`). `params_json` is `{"id": number}` over the
+/// registry (the `leaf_*` ids shape the leaf); throws a JSON `SylvaError` string on bad input.
+#[wasm_bindgen]
+pub fn leaf_json(params_json: &str) -> Result<String, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf =
+        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    Ok(sylva_core::leaf::json::to_json(&leaf))
+}
+
+/// The leaf as an SVG drawing after growth step `step` (a negative step draws the finished
+/// network): outline, margin, triangulation, auxin sources and veins with pipe widths.
+#[wasm_bindgen]
+pub fn leaf_svg(params_json: &str, step: i32) -> Result<String, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf =
+        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let opts = sylva_core::leaf::svg::SvgOptions {
+        triangulation: true,
+        step: u32::try_from(step).ok(),
+        ..sylva_core::leaf::svg::SvgOptions::default()
+    };
+    Ok(sylva_core::leaf::svg::render(&leaf, &opts))
+}
+
+/// The leaf presets as JSON (`[{name, label, description, values}]`).
+#[wasm_bindgen]
+pub fn leaf_presets_json() -> String {
+    sylva_core::leaf::presets::presets_json()
 }

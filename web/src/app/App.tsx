@@ -1,4 +1,7 @@
-/** Sylva app shell: viewer, parameter panel, stats, busy state, errors and URL persistence. */
+/**
+ * Sylva app shell: viewer, parameter panel, stats, busy state, errors, URL persistence and
+ * undo/redo of parameter changes.
+ */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { applyPreset, defaultParams, matchingPreset, randomSeed } from '../core/params';
 import type { Params } from '../core/types';
@@ -8,6 +11,8 @@ import { StatsOverlay } from '../ui/StatsOverlay';
 import { Viewport } from '../ui/Viewport';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
+import { installDebugHook } from './debugHook';
+import { historyShortcut, ParamsHistory } from './history';
 import { browserStorage, loadInitialParams, ParamsSync } from './persistence';
 import { useGenerator } from './useGenerator';
 
@@ -19,10 +24,14 @@ export function App() {
   const [params, setParams] = useState<Params | null>(null);
   const [notices, setNotices] = useState<string[]>([]);
   const paramsRef = useRef<Params | null>(null);
+  const historyRef = useRef<ParamsHistory | null>(null);
+  const [canUndo, setCanUndo] = useState(false);
+  const [canRedo, setCanRedo] = useState(false);
 
   const onReady = useCallback((ready: ReadyInfo): Params => {
     const initial = loadInitialParams(ready.registry, window.location.search, browserStorage());
     paramsRef.current = initial.params;
+    historyRef.current = new ParamsHistory(initial.params);
     setInfo(ready);
     setParams(initial.params);
     setNotices(initial.messages);
@@ -32,6 +41,16 @@ export function App() {
   }, []);
 
   const generator = useGenerator(viewerRef, onReady);
+  // The latest generator, for callbacks that must stay stable across renders (memoised controls).
+  const generatorRef = useRef(generator);
+  useEffect(() => {
+    generatorRef.current = generator;
+  });
+
+  useEffect(
+    () => installDebugHook({ geometries: () => viewerRef.current?.gpuGeometries ?? null }),
+    [],
+  );
 
   // Show Preview is a viewer-only parameter: it toggles the envelope wireframe.
   useEffect(() => {
@@ -41,15 +60,67 @@ export function App() {
   const registry = useMemo(() => info?.registry ?? [], [info]);
   const presets = useMemo(() => info?.presets ?? [], [info]);
 
-  /** Applies new params: state, generation request and debounced URL/storage save. */
-  const apply = useCallback(
-    (next: Params, frame = false) => {
+  /** Shows params: state, generation request and debounced URL/storage save. */
+  const show = useCallback(
+    (next: Params, frame: boolean) => {
       paramsRef.current = next;
       setParams(next);
-      generator.request(next, frame);
+      generatorRef.current.request(next, frame);
       syncRef.current?.schedule(registry, next);
     },
-    [generator, registry],
+    [registry],
+  );
+
+  const updateHistoryState = useCallback(() => {
+    setCanUndo(historyRef.current?.canUndo ?? false);
+    setCanRedo(historyRef.current?.canRedo ?? false);
+  }, []);
+
+  /**
+   * Applies a change and records it for undo: `key` is the param a continuous edit changes
+   * (a slider drag coalesces into one step), null for a discrete step (preset, Reset, Randomize).
+   */
+  const apply = useCallback(
+    (next: Params, key: string | null, frame: boolean) => {
+      historyRef.current?.record(next, { key, frame, now: performance.now() });
+      show(next, frame);
+      updateHistoryState();
+    },
+    [show, updateHistoryState],
+  );
+
+  const travel = useCallback(
+    (direction: 'undo' | 'redo') => {
+      const history = historyRef.current;
+      const entry = direction === 'undo' ? history?.undo() : history?.redo();
+      if (!entry) return;
+      show(entry.params, entry.frame);
+      updateHistoryState();
+    },
+    [show, updateHistoryState],
+  );
+  const undo = useCallback(() => travel('undo'), [travel]);
+  const redo = useCallback(() => travel('redo'), [travel]);
+
+  // Ctrl+Z / Ctrl+Shift+Z / Ctrl+Y (⌘ on macOS), wherever the focus is: the number fields commit
+  // every valid keystroke, so parameter undo also covers typing.
+  useEffect(() => {
+    const onKeyDown = (event: KeyboardEvent) => {
+      const action = historyShortcut(event);
+      if (action === null || historyRef.current === null) return;
+      event.preventDefault();
+      travel(action);
+    };
+    window.addEventListener('keydown', onKeyDown);
+    return () => window.removeEventListener('keydown', onKeyDown);
+  }, [travel]);
+
+  const onChange = useCallback(
+    (id: string, value: number) => {
+      const current = paramsRef.current;
+      if (current) apply({ ...current, [id]: value }, id, false);
+    },
+    [apply],
   );
 
   const activePreset = useMemo(
@@ -84,17 +155,22 @@ export function App() {
           params={params}
           activePreset={activePreset}
           version={info.version}
-          onChange={(id, value) => apply({ ...(paramsRef.current ?? params), [id]: value })}
+          canUndo={canUndo}
+          canRedo={canRedo}
+          onChange={onChange}
           onPreset={(name) => {
             const preset = presets.find((p) => p.name === name);
-            if (preset) apply(applyPreset(registry, preset), true);
+            if (preset) apply(applyPreset(registry, preset), null, true);
           }}
           onRandomize={() => {
             if (seedSpec) {
-              apply({ ...(paramsRef.current ?? params), [seedSpec.id]: randomSeed(seedSpec) });
+              const current = paramsRef.current ?? params;
+              apply({ ...current, [seedSpec.id]: randomSeed(seedSpec) }, null, false);
             }
           }}
-          onReset={() => apply(defaultParams(registry), true)}
+          onReset={() => apply(defaultParams(registry), null, true)}
+          onUndo={undo}
+          onRedo={redo}
         />
       ) : null}
     </div>

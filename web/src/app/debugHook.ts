@@ -4,11 +4,17 @@
 export interface SylvaDebugHook {
   /** Makes the generator worker panic (tests the crash-recovery path). */
   panic(): void;
+  /** Makes the generator worker busy-loop for `ms` (tests the time limit). */
+  hang(ms: number): void;
+  /** Sets the generation time limit in ms (tests use a short one). */
+  setTimeLimit(ms: number): void;
+  /** Geometries alive on the GPU (three.js `renderer.info.memory.geometries`), for leak tests. */
+  geometries(): number | null;
 }
 
 declare global {
   interface Window {
-    __sylva?: SylvaDebugHook;
+    __sylva?: Partial<SylvaDebugHook>;
   }
 }
 
@@ -17,11 +23,21 @@ export function debugEnabled(search: string, dev: boolean): boolean {
   return dev || new URLSearchParams(search).get('debug') === '1';
 }
 
-/** Installs the hook if enabled; returns an uninstall function. */
-export function installDebugHook(hook: SylvaDebugHook): () => void {
+/**
+ * Adds `parts` to the hook if enabled (several modules each add their own parts); returns a
+ * function that removes exactly those parts again.
+ */
+export function installDebugHook(parts: Partial<SylvaDebugHook>): () => void {
   if (!debugEnabled(window.location.search, import.meta.env.DEV)) return () => undefined;
-  window.__sylva = hook;
+  window.__sylva = { ...window.__sylva, ...parts };
   return () => {
-    if (window.__sylva === hook) delete window.__sylva;
+    const hook = window.__sylva;
+    if (!hook) return;
+    const rest: Partial<SylvaDebugHook> = { ...hook };
+    for (const key of Object.keys(parts) as (keyof SylvaDebugHook)[]) {
+      if (rest[key] === parts[key]) delete rest[key];
+    }
+    if (Object.keys(rest).length === 0) delete window.__sylva;
+    else window.__sylva = rest;
   };
 }

@@ -67,7 +67,13 @@ export function useGenerator(
       onBusyChange: setBusy,
     });
     schedulerRef.current = scheduler;
-    const uninstall = installDebugHook({ panic: () => scheduler.debugPanic() });
+    const uninstall = installDebugHook({
+      panic: () => scheduler.debugPanic(),
+      hang: (ms) => scheduler.debugHang(ms),
+      setTimeLimit: (ms) => {
+        scheduler.timeLimitMs = ms;
+      },
+    });
     return () => {
       uninstall();
       scheduler.dispose();

@@ -47,7 +47,8 @@ export function snapToStep(spec: ParamSpec, value: number): number {
  */
 export function normalizeValue(spec: ParamSpec, value: number): number {
   if (!Number.isFinite(value)) return spec.default;
-  if (value === spec.default) return value;
+  // Returns the default itself: -0 equals a default of 0 under ===, but must not leak out.
+  if (value === spec.default) return spec.default;
   const v = clamp(value, spec.min, spec.max);
   if (spec.kind !== 'float') return Math.round(v);
   if (nearDefault(spec, v)) return spec.default;

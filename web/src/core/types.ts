@@ -29,8 +29,12 @@ export interface Preset {
 /** Parameter values keyed by param id. */
 export type Params = Record<string, number>;
 
-/** Error kinds the core reports (`panic` is also used for worker crashes). */
-export type SylvaErrorKind = 'invalid_param' | 'unknown_param' | 'budget' | 'panic' | 'internal';
+/**
+ * Error kinds the core reports (`panic` is also used for worker crashes; `timeout` is a
+ * generation stopped by the scheduler's time limit).
+ */
+export type SylvaErrorKind =
+  'invalid_param' | 'unknown_param' | 'budget' | 'panic' | 'timeout' | 'internal';
 
 /** Structured error thrown (as JSON text) by `generate`, or synthesised by the worker pipeline. */
 export interface SylvaError {

@@ -28,7 +28,11 @@ export function ErrorBanner({ error, notices, registry, onDismiss }: Props) {
   return (
     <div className="error-banner" role="alert" data-testid="error-banner">
       <div className="error-lines">
-        {error ? <p data-testid="error-generator">{describeError(error, registry)}</p> : null}
+        {error ? (
+          <p data-testid="error-generator" data-kind={error.kind}>
+            {describeError(error, registry)}
+          </p>
+        ) : null}
         {notices.map((notice, i) => (
           <p key={i} data-testid="error-notice">
             {notice}

@@ -20,9 +20,12 @@ function parseInRange(spec: ParamSpec, text: string): number | null {
 
 /** A `<input type="number">` that never fights the user's partial input. */
 export function NumberField({ spec, value, onCommit, className, id }: Props) {
-  const [draft, setDraft] = useState<string | null>(null);
-  const text = draft ?? displayValue(spec, value);
-  const invalid = draft !== null && parseInRange(spec, draft) === null;
+  // The text being typed, with the value it belongs to: when the value changes from elsewhere
+  // (undo, a preset, the slider), the stale draft is dropped and the new value shown.
+  const [draft, setDraft] = useState<{ text: string; value: number } | null>(null);
+  const current = draft !== null && Object.is(draft.value, value) ? draft.text : null;
+  const text = current ?? displayValue(spec, value);
+  const invalid = current !== null && parseInRange(spec, current) === null;
   return (
     <input
       type="number"
@@ -38,8 +41,8 @@ export function NumberField({ spec, value, onCommit, className, id }: Props) {
       value={text}
       onChange={(e) => {
         const next = e.currentTarget.value;
-        setDraft(next);
         const parsed = parseInRange(spec, next);
+        setDraft({ text: next, value: parsed ?? value });
         if (parsed !== null && parsed !== value) onCommit(parsed);
       }}
       onBlur={() => setDraft(null)}

@@ -1,4 +1,5 @@
 /** One registry-generated control: slider + number (float/int), checkbox (bool) or select (enum). */
+import { memo } from 'react';
 import { snapToStep } from '../core/params';
 import type { ParamSpec } from '../core/types';
 import { NumberField } from './NumberField';
@@ -9,8 +10,11 @@ interface Props {
   onChange: (id: string, value: number) => void;
 }
 
-/** Renders the control matching `spec.kind`; the tooltip is the param's description. */
-export function ParamControl({ spec, value, onChange }: Props) {
+/**
+ * Renders the control matching `spec.kind`; the tooltip is the param's description. Memoised:
+ * while one slider is dragged only that control re-renders (with a stable `onChange`).
+ */
+export const ParamControl = memo(function ParamControl({ spec, value, onChange }: Props) {
   const inputId = `param-${spec.id}`;
   const label = (
     <label htmlFor={inputId} className="param-label">
@@ -73,4 +77,4 @@ export function ParamControl({ spec, value, onChange }: Props) {
       </div>
     </div>
   );
-}
+});

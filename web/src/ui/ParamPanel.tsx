@@ -14,6 +14,10 @@ interface Props {
   onPreset: (name: string) => void;
   onRandomize: () => void;
   onReset: () => void;
+  canUndo: boolean;
+  canRedo: boolean;
+  onUndo: () => void;
+  onRedo: () => void;
 }
 
 /** The parameter editor; seed gets its own field with a Randomize button. */
@@ -76,6 +80,26 @@ export function ParamPanel(props: Props) {
       ) : null}
 
       <div className="panel-block panel-actions">
+        <button
+          type="button"
+          data-testid="undo"
+          title="Undo the last parameter change (Ctrl+Z)"
+          aria-keyshortcuts="Control+Z Meta+Z"
+          disabled={!props.canUndo}
+          onClick={props.onUndo}
+        >
+          Undo
+        </button>
+        <button
+          type="button"
+          data-testid="redo"
+          title="Redo (Ctrl+Shift+Z or Ctrl+Y)"
+          aria-keyshortcuts="Control+Shift+Z Control+Y Meta+Shift+Z"
+          disabled={!props.canRedo}
+          onClick={props.onRedo}
+        >
+          Redo
+        </button>
         <button type="button" data-testid="reset" onClick={props.onReset}>
           Reset to defaults
         </button>

@@ -3,7 +3,14 @@ import { describe, expect, it } from 'vitest';
 import { applyPreset, defaultParams, snapToStep } from '../core/params';
 import type { ParamSpec, Params } from '../core/types';
 import { realPresets, realRegistry } from '../testing/realWasm';
-import { buildSearch, decodeQuery, encodeParams, formatNumber, MAX_QUERY_LENGTH } from './codec';
+import {
+  buildSearch,
+  decodeQuery,
+  encodeParams,
+  formatNumber,
+  MAX_MESSAGES,
+  MAX_QUERY_LENGTH,
+} from './codec';
 
 const registry = realRegistry();
 const defaults = defaultParams(registry);
@@ -199,5 +206,79 @@ describe('decodeQuery with malformed input', () => {
   it('accepts a query with or without the leading ?', () => {
     expect(decodeQuery(registry, 'v=1&seed=3').params.seed).toBe(3);
     expect(decodeQuery(registry, '?v=1&seed=3').params.seed).toBe(3);
+  });
+});
+
+describe('strict parsing of hostile links', () => {
+  it('whitespace around a number is junk, not trimmed away', () => {
+    for (const value of ['%205', '5%20', '%095', '5%0A', '5%C2%A0', '+5']) {
+      const result = decodeQuery(registry, `?v=1&seed=${value}`);
+      expect(result.params.seed, value).toBe(spec('seed').default);
+      expect(result.messages.join(' '), value).toContain('"seed"');
+    }
+  });
+
+  it('a repeated key keeps its first value and says so', () => {
+    const result = decodeQuery(registry, '?v=1&seed=3&seed=4&seed=abc');
+    expect(result.params.seed).toBe(3);
+    expect(result.messages).toHaveLength(2);
+    expect(result.messages[0]).toMatch(/repeated "seed".*first value/);
+    const firstBad = decodeQuery(registry, '?v=1&seed=abc&seed=4');
+    expect(firstBad.params.seed).toBe(spec('seed').default);
+  });
+
+  it('a repeated version is read once; a second, different one is reported', () => {
+    expect(decodeQuery(registry, '?v=1&v=1&seed=3').messages).toEqual([]);
+    const mixed = decodeQuery(registry, '?v=1&v=2&seed=3');
+    expect(mixed.params.seed).toBe(3);
+    expect(mixed.messages.join(' ')).toMatch(/repeated share-link version/);
+    expect(decodeQuery(registry, '?v=2&v=1&seed=3').params).toEqual(defaults);
+    expect(decodeQuery(registry, '?v&seed=3').params).toEqual(defaults);
+    expect(decodeQuery(registry, '?v=1.0&seed=3').params).toEqual(defaults);
+  });
+
+  it(`reports at most ${MAX_MESSAGES} problems, then sums up the rest`, () => {
+    const query = registry
+      .slice(0, 20)
+      .map((s) => `${s.id}=x`)
+      .join('&');
+    const result = decodeQuery(registry, `?v=1&${query}`);
+    expect(result.messages).toHaveLength(MAX_MESSAGES + 1);
+    expect(result.messages[MAX_MESSAGES]).toBe(
+      `…and ${20 - MAX_MESSAGES} more problems in the share link (ignored).`,
+    );
+    expect(result.params).toEqual(defaults);
+  });
+
+  it('control, null, zero-width and bidi characters are shown as ?', () => {
+    const result = decodeQuery(registry, '?v=1&scale=%00%E2%80%AEabc%E2%80%8B%1B');
+    expect(result.messages[0]).toContain('"??abc??"');
+    for (const c of ['\u0000', '\u200b', '\u202e', '\u001b']) {
+      expect(result.messages[0]).not.toContain(c);
+    }
+  });
+
+  it('empty keys, bare keys and stray separators are ignored', () => {
+    const result = decodeQuery(registry, '?&&=5&=&v=1&&seed=6&&');
+    expect(result.params.seed).toBe(6);
+    expect(result.messages).toEqual([]);
+  });
+
+  it('a value with an = inside is one value, not a second entry', () => {
+    const result = decodeQuery(registry, '?v=1&seed=5=6');
+    expect(result.params.seed).toBe(spec('seed').default);
+    expect(result.messages[0]).toContain('"5=6" is not a number');
+  });
+
+  // Found by the fast-check property "decode(encode(decode(q))) keeps what was accepted":
+  // `-0` for a param whose default is 0 came back as -0 (it equals 0 under ===).
+  it('regression_minus_zero_is_read_as_zero', () => {
+    const zeroDefault = registry.find((s) => s.default === 0);
+    expect(zeroDefault).toBeDefined();
+    if (!zeroDefault) return;
+    const result = decodeQuery(registry, `?v=1&${zeroDefault.id}=-0`);
+    expect(Object.is(result.params[zeroDefault.id], 0)).toBe(true);
+    expect(result.messages).toEqual([]);
+    expect(Object.is(decodeQuery(registry, '?v=1&seed=-0').params.seed, 0)).toBe(true);
   });
 });

@@ -127,6 +127,11 @@ export class TreeViewer {
     );
   }
 
+  /** Geometries alive on the GPU (`renderer.info.memory.geometries`; debug hook, leak tests). */
+  get gpuGeometries(): number {
+    return this.renderer.info.memory.geometries;
+  }
+
   /** Points the camera at the current tree's bounds. */
   frame(): void {
     const sphere = this.tree?.geometry.boundingSphere;

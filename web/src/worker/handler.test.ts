@@ -97,6 +97,22 @@ describe('real wasm through the worker handler', () => {
     expect(message?.type === 'error' && message.error.kind).toBe('unknown_param');
   });
 
+  // Found by the proptest property "valid values are accepted and pass validation": a float
+  // bound that f32 cannot hold (ratio 0.2, prune_width 0.01) was accepted, then refused as
+  // "ratio is 0.20000000298023224: allowed range is 0.001 to 0.2" when the tree was generated.
+  it('regression_f32_rounded_bounds_generate', () => {
+    const bounds = realRegistry()
+      .filter((s) => s.kind === 'float')
+      .flatMap((s) => [s.min, s.max].map((v) => [s.id, v] as const))
+      .filter(([, v]) => Math.fround(v) !== v);
+    expect(bounds.map(([id]) => id)).toEqual(expect.arrayContaining(['ratio', 'prune_width']));
+    for (const [id, value] of bounds) {
+      const { sent, handle } = collect();
+      handle({ type: 'generate', id: 1, params: { levels: 1, [id]: value } });
+      expect(sent[0]?.message.type, `${id}=${value}`).toBe('result');
+    }
+  });
+
   // Runs last in this file: the wasm instance is unusable after a panic.
   it('debug-panic reports the panic message as fatal, then refuses further work', () => {
     const { sent, handle } = collect();

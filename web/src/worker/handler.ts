@@ -16,7 +16,11 @@ export function readyMessage(wasm: WasmApi): ReadyResponse {
   };
 }
 
-/** Message of a wasm panic: the core's recorded panic text, else the trap's message. */
+/**
+ * Message of a wasm trap: the core's recorded panic text, else the trap itself (a failed
+ * allocation aborts without a panic message, as `unreachable`; a memory fault reads
+ * `memory access out of bounds`).
+ */
 function panicMessage(wasm: WasmApi, thrown: unknown): string {
   let recorded: string | undefined;
   try {
@@ -25,11 +29,34 @@ function panicMessage(wasm: WasmApi, thrown: unknown): string {
     recorded = undefined;
   }
   if (recorded) return recorded;
-  return thrown instanceof Error ? thrown.message : String(thrown);
+  const text = thrown instanceof Error ? thrown.message : String(thrown);
+  return `WebAssembly trap (${text || 'no message'}): the generator aborted, possibly out of memory`;
+}
+
+/**
+ * Whether a throw means the wasm instance is no longer usable: any trap (`unreachable` from a
+ * panic or a failed allocation, `memory access out of bounds`, ...), or a stack overflow, which
+ * leaves Rust's shadow stack mid-frame.
+ */
+export function isTrap(thrown: unknown): boolean {
+  if (thrown instanceof WebAssembly.RuntimeError) return true;
+  return thrown instanceof RangeError && /call stack/i.test(thrown.message);
+}
+
+/** Blocks the worker thread for `ms` (debug hook: lets tests hit the scheduler's time limit). */
+function busyWait(ms: number, now: () => number): void {
+  const end = now() + ms;
+  while (now() < end) {
+    // spin
+  }
 }
 
 /** Creates the request handler; after a panic it answers every request with `fatal`. */
-export function createHandler(wasm: WasmApi, post: Post): (request: WorkerRequest) => void {
+export function createHandler(
+  wasm: WasmApi,
+  post: Post,
+  now: () => number = () => performance.now(),
+): (request: WorkerRequest) => void {
   let deadMessage: string | null = null;
 
   const die = (thrown: unknown): void => {
@@ -40,6 +67,11 @@ export function createHandler(wasm: WasmApi, post: Post): (request: WorkerReques
   return (request) => {
     if (deadMessage !== null) {
       post({ type: 'fatal', message: deadMessage }, []);
+      return;
+    }
+    if (request.type === 'debug-hang') {
+      busyWait(request.ms, now);
+      post({ type: 'idle' }, []);
       return;
     }
     if (request.type === 'debug-panic') {
@@ -55,7 +87,7 @@ export function createHandler(wasm: WasmApi, post: Post): (request: WorkerReques
     try {
       tree = wasm.generate(JSON.stringify(request.params));
     } catch (thrown) {
-      if (thrown instanceof WebAssembly.RuntimeError) die(thrown);
+      if (isTrap(thrown)) die(thrown);
       else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
       return;
     }
@@ -74,7 +106,7 @@ export function createHandler(wasm: WasmApi, post: Post): (request: WorkerReques
         envelope.buffer,
       ]);
     } catch (thrown) {
-      if (thrown instanceof WebAssembly.RuntimeError) die(thrown);
+      if (isTrap(thrown)) die(thrown);
       else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
     } finally {
       try {

@@ -13,8 +13,14 @@ export interface DebugPanicRequest {
   type: 'debug-panic';
 }
 
+/** Ask the worker to busy-loop for `ms` (tests of the time limit; debug hook only). */
+export interface DebugHangRequest {
+  type: 'debug-hang';
+  ms: number;
+}
+
 /** Main thread → worker. */
-export type WorkerRequest = GenerateRequest | DebugPanicRequest;
+export type WorkerRequest = GenerateRequest | DebugPanicRequest | DebugHangRequest;
 
 /** Sent once after the wasm is initialised. */
 export interface ReadyResponse {
@@ -43,8 +49,14 @@ export interface FatalResponse {
   message: string;
 }
 
+/** A `debug-hang` request ended (it ran shorter than the time limit). */
+export interface IdleResponse {
+  type: 'idle';
+}
+
 /** Worker → main thread. */
-export type WorkerResponse = ReadyResponse | ResultResponse | ErrorResponse | FatalResponse;
+export type WorkerResponse =
+  ReadyResponse | ResultResponse | ErrorResponse | FatalResponse | IdleResponse;
 
 /** What `ready` carries, as seen by the app. */
 export type ReadyInfo = Omit<ReadyResponse, 'type'>;

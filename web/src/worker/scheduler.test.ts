@@ -1,8 +1,22 @@
-/** Unit tests of the latest-wins scheduler with a fake worker factory. */
-import { describe, expect, it } from 'vitest';
+/** Unit tests of the latest-wins scheduler with a fake worker factory (and fake timers). */
+import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import type { SylvaError, TreeMeta } from '../core/types';
 import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
-import { GenerationScheduler, type SchedulerCallbacks, type WorkerFactory } from './scheduler';
+import {
+  DEFAULT_TIME_LIMIT_MS,
+  GenerationScheduler,
+  type SchedulerCallbacks,
+  type SchedulerOptions,
+  type WorkerFactory,
+} from './scheduler';
+
+beforeEach(() => {
+  vi.useFakeTimers();
+});
+
+afterEach(() => {
+  vi.useRealTimers();
+});
 
 /** A fake worker: records posts, lets the test push responses and error events. */
 class FakeWorker {
@@ -46,7 +60,7 @@ function result(id: number): ResultResponse {
   };
 }
 
-function setup() {
+function setup(options?: SchedulerOptions) {
   const workers: FakeWorker[] = [];
   const factory: WorkerFactory = (onMessage, onError) => {
     const w = new FakeWorker(onMessage, onError);
@@ -70,7 +84,7 @@ function setup() {
     onError: (e, id) => log.errors.push([e, id]),
     onBusyChange: (b) => log.busy.push(b),
   };
-  const scheduler = new GenerationScheduler(factory, callbacks);
+  const scheduler = new GenerationScheduler(factory, callbacks, options);
   const current = (): FakeWorker => {
     const w = workers[workers.length - 1];
     if (!w) throw new Error('no worker');
@@ -210,5 +224,166 @@ describe('GenerationScheduler', () => {
     expect(current().terminated).toBe(true);
     scheduler.request({ seed: 1 });
     expect(current().posted).toEqual([]);
+  });
+
+  it('a worker crash from an OOM-like trap (no panic text) is handled like a panic', () => {
+    const { scheduler, workers, current, log } = setup();
+    current().ready();
+    scheduler.request({ seed: 1 });
+    const b = scheduler.request({ seed: 2 });
+    current().emit({
+      type: 'fatal',
+      message: 'WebAssembly trap (memory access out of bounds): the generator aborted',
+    });
+    expect(workers[0]?.terminated).toBe(true);
+    expect(log.errors).toEqual([
+      [
+        {
+          kind: 'panic',
+          message: 'WebAssembly trap (memory access out of bounds): the generator aborted',
+        },
+        null,
+      ],
+    ]);
+    current().ready();
+    expect(current().posted).toEqual([{ type: 'generate', id: b, params: { seed: 2 } }]);
+    // An uncaught RuntimeError surfacing as the worker's error event takes the same path.
+    current().fail('Uncaught RuntimeError: memory access out of bounds');
+    expect(workers).toHaveLength(3);
+    expect(log.errors[1]?.[0]).toEqual({
+      kind: 'panic',
+      message: 'Uncaught RuntimeError: memory access out of bounds',
+    });
+  });
+
+  it('dispose clears the time limit', () => {
+    const { scheduler, current, log } = setup();
+    current().ready();
+    scheduler.request({ seed: 1 });
+    scheduler.dispose();
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS * 2);
+    expect(log.errors).toEqual([]);
+    expect(vi.getTimerCount()).toBe(0);
+  });
+});
+
+describe('GenerationScheduler time limit', () => {
+  it('stops a generation that runs past 10 s: terminate, report, recreate', () => {
+    const { scheduler, workers, current, log } = setup();
+    expect(scheduler.timeLimitMs).toBe(10_000);
+    current().ready();
+    const a = scheduler.request({ seed: 1 });
+    vi.advanceTimersByTime(9_999);
+    expect(workers[0]?.terminated).toBe(false);
+    expect(log.errors).toEqual([]);
+    vi.advanceTimersByTime(1);
+    expect(workers[0]?.terminated).toBe(true);
+    expect(workers).toHaveLength(2);
+    expect(log.errors).toHaveLength(1);
+    const [error, id] = log.errors[0] ?? [];
+    expect(id).toBe(a);
+    expect(error?.kind).toBe('timeout');
+    expect(error?.message).toMatch(/longer than 10 s and was stopped/);
+    expect(error?.message).toMatch(/previous tree is kept/);
+    expect(log.results).toEqual([]);
+    expect(log.busy).toEqual([true, false]);
+    // The new worker starts idle: the request that timed out is never re-sent.
+    current().ready();
+    expect(log.ready.map(([, restarts]) => restarts)).toEqual([0, 1]);
+    expect(current().posted).toEqual([]);
+    expect(scheduler.restartCount).toBe(1);
+  });
+
+  it('the newer pending request goes to the recreated worker', () => {
+    const { scheduler, current, log } = setup();
+    current().ready();
+    const a = scheduler.request({ seed: 1 });
+    const b = scheduler.request({ seed: 2 });
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS);
+    expect(log.errors[0]?.[1]).toBe(a);
+    expect(log.busy[log.busy.length - 1]).toBe(true);
+    current().ready();
+    expect(current().posted).toEqual([{ type: 'generate', id: b, params: { seed: 2 } }]);
+    current().emit(result(b));
+    expect(log.results).toEqual([b]);
+    expect(log.busy[log.busy.length - 1]).toBe(false);
+  });
+
+  it('every request gets the whole limit, counted from when it is sent', () => {
+    const { scheduler, current, log } = setup();
+    current().ready();
+    const a = scheduler.request({ seed: 1 });
+    const b = scheduler.request({ seed: 2 });
+    vi.advanceTimersByTime(9_000);
+    current().emit(result(a));
+    expect(current().lastGenerateId()).toBe(b);
+    vi.advanceTimersByTime(9_000);
+    expect(log.errors).toEqual([]);
+    current().emit(result(b));
+    vi.advanceTimersByTime(60_000);
+    expect(log.errors).toEqual([]);
+    expect(log.results).toEqual([a, b]);
+    expect(vi.getTimerCount()).toBe(0);
+  });
+
+  it('the time before the worker is ready does not count', () => {
+    const { scheduler, current, log } = setup();
+    const a = scheduler.request({ seed: 1 });
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS * 3);
+    expect(log.errors).toEqual([]);
+    current().ready();
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS - 1);
+    current().emit(result(a));
+    expect(log.results).toEqual([a]);
+    expect(log.errors).toEqual([]);
+  });
+
+  it('a late answer from the stopped worker is ignored', () => {
+    const { scheduler, workers, current, log } = setup();
+    current().ready();
+    const a = scheduler.request({ seed: 1 });
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS);
+    workers[0]?.emit(result(a));
+    workers[0]?.emit({ type: 'fatal', message: 'late' });
+    expect(log.results).toEqual([]);
+    expect(log.errors.map(([e]) => e.kind)).toEqual(['timeout']);
+    expect(workers).toHaveLength(2);
+    expect(current().terminated).toBe(false);
+  });
+
+  it('the limit is configurable, per scheduler and at run time', () => {
+    const { scheduler, current, log } = setup({ timeLimitMs: 2_500 });
+    current().ready();
+    scheduler.request({ seed: 1 });
+    vi.advanceTimersByTime(2_500);
+    expect(log.errors[0]?.[0].message).toMatch(/longer than 2\.5 s/);
+    current().ready();
+    scheduler.timeLimitMs = 500;
+    scheduler.request({ seed: 2 });
+    vi.advanceTimersByTime(499);
+    expect(log.errors).toHaveLength(1);
+    vi.advanceTimersByTime(1);
+    expect(log.errors).toHaveLength(2);
+    expect(() => (scheduler.timeLimitMs = 0)).toThrow(RangeError);
+    expect(() => (scheduler.timeLimitMs = Number.NaN)).toThrow(RangeError);
+    expect(() => setup({ timeLimitMs: -1 })).toThrow(RangeError);
+  });
+
+  it('debugHang: a short hang ends with idle, a long one is stopped by the limit', () => {
+    const { scheduler, workers, current, log } = setup();
+    current().ready();
+    scheduler.debugHang(100);
+    expect(current().posted).toEqual([{ type: 'debug-hang', ms: 100 }]);
+    const b = scheduler.request({ seed: 2 });
+    current().emit({ type: 'idle' });
+    expect(current().lastGenerateId()).toBe(b);
+    current().emit(result(b));
+    scheduler.debugHang(60_000);
+    const c = scheduler.request({ seed: 3 });
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS);
+    expect(workers[0]?.terminated).toBe(true);
+    expect(log.errors).toEqual([[expect.objectContaining({ kind: 'timeout' }), null]]);
+    current().ready();
+    expect(current().posted).toEqual([{ type: 'generate', id: c, params: { seed: 3 } }]);
   });
 });

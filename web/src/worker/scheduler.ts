@@ -1,6 +1,7 @@
 /**
  * Latest-request-wins scheduling over a restartable generator worker (no Worker globals here:
- * the worker comes from an injected factory, so this is unit-tested with a fake).
+ * the worker comes from an injected factory, so this is unit-tested with a fake). A request
+ * that runs past the time limit is stopped: the worker is terminated and recreated.
  */
 import type { Params, SylvaError } from '../core/types';
 import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
@@ -29,7 +30,33 @@ export interface SchedulerCallbacks {
   onBusyChange(busy: boolean): void;
 }
 
-type Slot = { type: 'generate'; id: number; params: Params } | { type: 'debug-panic' };
+type Slot =
+  | { type: 'generate'; id: number; params: Params }
+  | { type: 'debug-panic' }
+  | { type: 'debug-hang'; ms: number };
+
+/** Default longest run of one request before the worker is stopped and recreated (ms). */
+export const DEFAULT_TIME_LIMIT_MS = 10_000;
+
+/** Scheduler settings. */
+export interface SchedulerOptions {
+  /** Longest a request may run in the worker before it is stopped (ms); default 10 s. */
+  timeLimitMs?: number;
+}
+
+/** The message shown when a generation ran past the time limit. */
+export function timeoutMessage(limitMs: number): string {
+  const seconds = Number((limitMs / 1000).toFixed(1));
+  return (
+    `Generation took longer than ${seconds} s and was stopped (the previous tree is kept). ` +
+    'Try a smaller tree (fewer Levels or Branches, lower Mesh Quality).'
+  );
+}
+
+function checkLimit(ms: number): number {
+  if (!Number.isFinite(ms) || ms <= 0) throw new RangeError(`bad time limit ${ms}`);
+  return ms;
+}
 
 /** Owns the worker: one request in flight, one pending slot that newer requests overwrite. */
 export class GenerationScheduler {
@@ -37,7 +64,11 @@ export class GenerationScheduler {
   private ready = false;
   private inFlight: Slot | null = null;
   private pending: Slot | null = null;
-  private panicQueued = false;
+  private debugQueued: Slot | null = null;
+  private deadline: ReturnType<typeof setTimeout> | null = null;
+  /** The limit the in-flight request was sent with (the setting may change meanwhile). */
+  private inFlightLimitMs = 0;
+  private limitMs: number;
   private nextId = 1;
   private restarts = 0;
   private busy = false;
@@ -46,8 +77,19 @@ export class GenerationScheduler {
   constructor(
     private readonly factory: WorkerFactory,
     private readonly callbacks: SchedulerCallbacks,
+    options: SchedulerOptions = {},
   ) {
+    this.limitMs = checkLimit(options.timeLimitMs ?? DEFAULT_TIME_LIMIT_MS);
     this.start();
+  }
+
+  /** The time limit of one request (ms); a new value applies to the next request sent. */
+  get timeLimitMs(): number {
+    return this.limitMs;
+  }
+
+  set timeLimitMs(ms: number) {
+    this.limitMs = checkLimit(ms);
   }
 
   /** Requests a tree; returns the request id. Supersedes any request not yet sent. */
@@ -60,7 +102,13 @@ export class GenerationScheduler {
 
   /** Makes the worker panic on purpose once it is idle (debug hook). */
   debugPanic(): void {
-    this.panicQueued = true;
+    this.debugQueued = { type: 'debug-panic' };
+    this.pump();
+  }
+
+  /** Makes the worker busy-loop for `ms` once it is idle (debug hook for the time limit). */
+  debugHang(ms: number): void {
+    this.debugQueued = { type: 'debug-hang', ms };
     this.pump();
   }
 
@@ -72,11 +120,12 @@ export class GenerationScheduler {
   /** Terminates the worker; the scheduler is unusable afterwards. */
   dispose(): void {
     this.disposed = true;
+    this.clearDeadline();
     this.worker?.terminate();
     this.worker = null;
     this.inFlight = null;
     this.pending = null;
-    this.panicQueued = false;
+    this.debugQueued = null;
     this.updateBusy();
   }
 
@@ -105,13 +154,17 @@ export class GenerationScheduler {
       }
       case 'result':
         if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
-        this.inFlight = null;
+        this.finishInFlight();
         this.callbacks.onResult(response);
         break;
       case 'error':
         if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
-        this.inFlight = null;
+        this.finishInFlight();
         this.callbacks.onError(response.error, response.id);
+        break;
+      case 'idle':
+        if (this.inFlight?.type !== 'debug-hang') return;
+        this.finishInFlight();
         break;
       case 'fatal':
         this.crash(response.message);
@@ -120,17 +173,33 @@ export class GenerationScheduler {
     this.pump();
   }
 
-  /** Drops the crashed worker and its in-flight request, reports, and starts a fresh worker. */
-  private crash(message: string): void {
-    const wasReady = this.ready;
+  private finishInFlight(): void {
+    this.clearDeadline();
+    this.inFlight = null;
+  }
+
+  private clearDeadline(): void {
+    if (this.deadline !== null) clearTimeout(this.deadline);
+    this.deadline = null;
+  }
+
+  /** Terminates the worker and drops its in-flight request (never re-sent: no resend loop). */
+  private stopWorker(): void {
+    this.clearDeadline();
     this.worker?.terminate();
     this.worker = null;
     this.ready = false;
     this.inFlight = null;
+  }
+
+  /** Drops the crashed worker and its in-flight request, reports, and starts a fresh worker. */
+  private crash(message: string): void {
+    const wasReady = this.ready;
+    this.stopWorker();
     if (!wasReady) {
       // Crashed while starting: restarting would loop, so stop here.
       this.pending = null;
-      this.panicQueued = false;
+      this.debugQueued = null;
       this.callbacks.onError(
         { kind: 'internal', message: `The generator could not start: ${message}` },
         null,
@@ -139,6 +208,23 @@ export class GenerationScheduler {
       return;
     }
     this.callbacks.onError({ kind: 'panic', message }, null);
+    this.restart();
+  }
+
+  /** The in-flight request ran past the time limit: stop the worker, report, start a fresh one. */
+  private timedOut(): void {
+    this.deadline = null;
+    const slot = this.inFlight;
+    if (slot === null || this.disposed) return;
+    this.stopWorker();
+    this.callbacks.onError(
+      { kind: 'timeout', message: timeoutMessage(this.inFlightLimitMs) },
+      slot.type === 'generate' ? slot.id : null,
+    );
+    this.restart();
+  }
+
+  private restart(): void {
     this.restarts++;
     if (!this.disposed) this.start();
     this.updateBusy();
@@ -148,15 +234,17 @@ export class GenerationScheduler {
     if (this.disposed) return;
     if (this.worker && this.ready && this.inFlight === null) {
       let next: Slot | null = null;
-      if (this.panicQueued) {
-        this.panicQueued = false;
-        next = { type: 'debug-panic' };
+      if (this.debugQueued) {
+        next = this.debugQueued;
+        this.debugQueued = null;
       } else if (this.pending) {
         next = this.pending;
         this.pending = null;
       }
       if (next) {
         this.inFlight = next;
+        this.inFlightLimitMs = this.limitMs;
+        this.deadline = setTimeout(() => this.timedOut(), this.limitMs);
         this.worker.post(next);
       }
     }
@@ -164,7 +252,7 @@ export class GenerationScheduler {
   }
 
   private updateBusy(): void {
-    const busy = this.inFlight !== null || this.pending !== null || this.panicQueued;
+    const busy = this.inFlight !== null || this.pending !== null || this.debugQueued !== null;
     if (busy !== this.busy) {
       this.busy = busy;
       this.callbacks.onBusyChange(busy);

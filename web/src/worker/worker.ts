@@ -24,5 +24,12 @@ const handlerPromise = init()
   });
 
 scope.onmessage = (event) => {
-  void handlerPromise.then((handle) => handle?.(event.data));
+  void handlerPromise
+    .then((handle) => handle?.(event.data))
+    .catch((thrown: unknown) => {
+      // Anything the handler did not turn into a response (e.g. a failed postMessage) would
+      // leave the request unanswered: report it as fatal so the scheduler recreates the worker.
+      const message = thrown instanceof Error ? thrown.message : String(thrown);
+      post({ type: 'fatal', message: `the generator worker failed: ${message}` }, []);
+    });
 };

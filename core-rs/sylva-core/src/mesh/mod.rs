@@ -2,6 +2,9 @@
 //! later GLB) exporters and the tests all read [`TreeMesh`]; the stages write into it through
 //! [`MeshBuilder`] (lyon's `GeometryBuilder` idea), so there is one layout to document and check.
 
+pub mod bark;
+pub mod topology;
+pub mod trunk;
 pub mod tube;
 
 use serde::Serialize;

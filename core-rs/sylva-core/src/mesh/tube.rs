@@ -6,10 +6,12 @@
 //! textures stay square and continuous. Each tip closes with a small cone to an apex vertex and
 //! the trunk's base with a fan, so the only open edges are the buried bases of child stems.
 
+use super::trunk::{ring_circles, union_outline};
 use super::{Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
 use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
+use crate::rng::Rng;
 use crate::skeleton::{budget_error, Skeleton, Stem};
 use glam::Vec3;
 
@@ -138,29 +140,44 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
     for (stem, plan) in skeleton.stems.iter().zip(&plans) {
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
-        sweep(stem, &ts[plan.rings.clone()], table, lobes, &mut out);
+        let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
+        match profile {
+            Some(tp) => sweep_trunk(stem, &ts[plan.rings.clone()], table, &tp, &mut out),
+            None => sweep(stem, &ts[plan.rings.clone()], table, lobes, &mut out),
+        }
     }
     Ok(out.finish())
 }
 
 fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], lobes: Option<(u32, f32)>, out: &mut MeshBuilder) {
+    match lobes {
+        Some((n, depth)) => {
+            let sides = circle.len() - 1;
+            let lobe: Vec<f32> =
+                (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
+            sweep_with(stem, ts, circle, &|_, j| lobe[j], out)
+        }
+        None => sweep_with(stem, ts, circle, &|_, _| 1.0, out),
+    }
+}
+
+/// Sweep one stem whose ring `r`, column `j` sits at `factor(r, j)` times the ring radius.
+/// Where the factor varies around the ring, the in-plane normal follows the outline's tangent.
+fn sweep_with(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    factor: &dyn Fn(usize, usize) -> f32,
+    out: &mut MeshBuilder,
+) {
     let sides = circle.len() - 1;
     let stride = sides + 1;
     let rings = ts.len();
     let trunk = stem.parent.is_none();
     let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
     let (first, pos, nrm, uv) = out.alloc_vertices(count);
-    // Radius factor per column: the trunk's lobes, or 1 (no allocation for ordinary stems).
-    const ONES: [f32; 97] = [1.0; 97];
-    let lobed: Vec<f32>;
-    let lobe_scale: &[f32] = match lobes {
-        Some((n, depth)) => {
-            lobed =
-                (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
-            &lobed
-        }
-        None => &ONES[..stride],
-    };
+    let mut ring_factor = vec![1.0f32; stride];
+    let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
     let mut seg = (0, stem.segment(0));
     let (_, t0) = seg.1.eval(0.0);
     let mut normal = unit_or(stem.base_normal - t0 * stem.base_normal.dot(t0), || t0.any_orthonormal_vector());
@@ -188,13 +205,41 @@ fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], lobes: Option<(u32
         let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
         let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
         let tilt = tan * slope;
-        for ((((p3, n3), t2), &(cs, sn, u)), &ls) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(lobe_scale) {
-            let radial = normal * cs + binormal * sn;
-            let p = c + radial * (radius * ls);
-            let n = (radial - tilt) * inv;
-            p3.copy_from_slice(&[p.x, p.y, p.z]);
-            n3.copy_from_slice(&[n.x, n.y, n.z]);
-            t2.copy_from_slice(&[u, v]);
+        for (j, f) in ring_factor.iter_mut().enumerate() {
+            *f = factor(r, j);
+        }
+        if ring_factor.iter().all(|&f| f == 1.0) {
+            for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
+                let radial = normal * cs + binormal * sn;
+                let p = c + radial * radius;
+                let n = (radial - tilt) * inv;
+                p3.copy_from_slice(&[p.x, p.y, p.z]);
+                n3.copy_from_slice(&[n.x, n.y, n.z]);
+                t2.copy_from_slice(&[u, v]);
+            }
+        } else {
+            // In-plane outline normals: perpendicular to the chord between neighbouring columns.
+            let at = |j: usize| {
+                let (cs, sn, _) = circle[j];
+                (cs * ring_factor[j], sn * ring_factor[j])
+            };
+            for (j, n2) in plane_normal.iter_mut().enumerate() {
+                let (a, b) = (at(if j == 0 { sides - 1 } else { j - 1 }), at(if j == sides { 1 } else { j + 1 }));
+                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+                let len = (dx * dx + dy * dy).sqrt().max(1e-12);
+                *n2 = (dy / len, -dx / len);
+            }
+            for ((((p3, n3), t2), &(cs, sn, u)), (&f, &(nx, ny))) in
+                ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(ring_factor.iter().zip(&plane_normal))
+            {
+                let radial = normal * cs + binormal * sn;
+                let p = c + radial * (radius * f);
+                let outward = normal * nx + binormal * ny;
+                let n = unit_or(outward - tilt, || radial);
+                p3.copy_from_slice(&[p.x, p.y, p.z]);
+                n3.copy_from_slice(&[n.x, n.y, n.z]);
+                t2.copy_from_slice(&[u, v]);
+            }
         }
         prev = Some((t, radius));
         last_center = c;
@@ -258,4 +303,78 @@ fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], lobes: Option<(u32
             f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
         }
     }
+}
+
+/// Cross-section settings of a complex trunk (see [`super::trunk`]): refinement circles whose
+/// offset and radius vary smoothly with height, W&P lobes on top, and the maple page's base
+/// ripple `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
+struct TrunkProfile {
+    offset: f32,
+    radius: f32,
+    /// Relative variation of each refinement circle's (offset, radius) at `KEYS` heights.
+    keys: Vec<Vec<[f32; 2]>>,
+    phase: f32,
+    ripple: f32,
+    lobes: Option<(u32, f32)>,
+}
+
+/// Heights (evenly spaced along the trunk) at which refinement circles get new random variation.
+const KEYS: usize = 9;
+
+impl TrunkProfile {
+    fn new(p: &TreeParams, lobes: Option<(u32, f32)>) -> Self {
+        let mut rng = Rng::new(u64::from(p.seed), "trunk-profile");
+        let n = p.refine_curves as usize;
+        let v = p.refine_variation;
+        let keys = (0..KEYS).map(|_| (0..n).map(|_| [rng.var(v), rng.var(v)]).collect()).collect();
+        TrunkProfile {
+            offset: p.refine_offset,
+            radius: p.refine_radius,
+            keys,
+            phase: rng.uniform(0.0, TAU),
+            ripple: p.base_ripple,
+            lobes,
+        }
+    }
+
+    /// Per-circle variation at fraction `t` of the trunk (linear between keys).
+    fn jitter_at(&self, t: f32, out: &mut Vec<[f32; 2]>) {
+        let f = t.clamp(0.0, 1.0) * (KEYS - 1) as f32;
+        let i = (f as usize).min(KEYS - 2);
+        let u = f - i as f32;
+        out.clear();
+        out.extend(
+            self.keys[i]
+                .iter()
+                .zip(&self.keys[i + 1])
+                .map(|(a, b)| [a[0] + (b[0] - a[0]) * u, a[1] + (b[1] - a[1]) * u]),
+        );
+    }
+}
+
+/// Sweep of the trunk record with a complex cross-section: each ring's outline is the union of
+/// its circles resampled per column (then lobes and the base ripple), as factors on the radius.
+fn sweep_trunk(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], tp: &TrunkProfile, out: &mut MeshBuilder) {
+    let sides = circle.len() - 1;
+    let dirs: Vec<(f32, f32)> = circle.iter().map(|&(c, s, _)| (c, s)).collect();
+    let mut jitter = Vec::new();
+    let mut rho = Vec::with_capacity(circle.len());
+    let mut rings: Vec<Vec<f32>> = Vec::with_capacity(ts.len());
+    for &t in ts {
+        let radius = stem.radius_at(t).max(0.05 * stem.radius);
+        tp.jitter_at(t, &mut jitter);
+        let circles = ring_circles(radius, tp.offset, tp.radius, tp.phase, &jitter);
+        union_outline(&circles, &dirs, &mut rho);
+        let fade = (1.0 - t / 0.125).max(0.0);
+        for (j, r) in rho.iter_mut().enumerate() {
+            let theta = TAU * (j % sides) as f32 / sides as f32;
+            if let Some((n, depth)) = tp.lobes {
+                *r *= 1.0 + depth * sin(n as f32 * theta);
+            }
+            *r *= 1.0 + tp.ripple * fade * sin(7.0 * theta);
+            *r /= radius;
+        }
+        rings.push(rho.clone());
+    }
+    sweep_with(stem, ts, circle, &|r, j| rings[r][j], out);
 }

@@ -1,0 +1,43 @@
+//! Leaf determinism (issue 4): a golden content hash per leaf preset (outline, triangulation,
+//! veins, auxins, meshes, textures), pinned like the tree presets'. The wasm build must give the
+//! same hashes (`npm run bench` compares them).
+
+use sylva_core::leaf::generate;
+use sylva_core::leaf::presets::LEAF_PRESETS;
+
+const GOLDEN: &[(&str, &str)] = &[
+    ("oak", "70e4db4fbbcfab01"),
+    ("maple", "9aa9b8ea0ac66148"),
+    ("birch", "b7357091182e28ab"),
+    ("willow", "f00d88cf2d7ed763"),
+    ("pine", "a998de573e09c3c3"),
+];
+
+#[test]
+fn golden_hash_per_leaf_preset() {
+    let actual: Vec<(&str, String)> =
+        LEAF_PRESETS.iter().map(|p| (p.name, generate(&p.params().unwrap()).unwrap().hash_hex())).collect();
+    let expected: Vec<(&str, String)> = GOLDEN.iter().map(|(n, h)| (*n, h.to_string())).collect();
+    let table: String = actual.iter().map(|(n, h)| format!("    (\"{n}\", \"{h}\"),\n")).collect();
+    assert_eq!(actual, expected, "golden leaf hashes changed; if on purpose, paste:\n{table}");
+}
+
+#[test]
+fn same_parameters_same_leaf_and_seeds_matter() {
+    let p = LEAF_PRESETS[1].params().unwrap();
+    let (a, b) = (generate(&p).unwrap(), generate(&p).unwrap());
+    assert_eq!(a.hash, b.hash);
+    assert_eq!(a.mesh, b.mesh);
+    assert_eq!(a.veins, b.veins);
+    let mut q = p.clone();
+    q.leaf_vein_seed += 1;
+    assert_ne!(generate(&q).unwrap().hash, a.hash, "the vein seed moves the auxins");
+    let mut q = p.clone();
+    q.leaf_asymmetry_seed = 9;
+    assert_ne!(generate(&q).unwrap().hash, a.hash, "the asymmetry seed changes the outline");
+    // The tree's own seed and parameters do not touch the leaf.
+    let mut q = p.clone();
+    q.seed = 12345;
+    q.scale = 30.0;
+    assert_eq!(generate(&q).unwrap().hash, a.hash);
+}

@@ -1,0 +1,139 @@
+/** Tests of the undo/redo stack and its keyboard shortcuts. */
+import { describe, expect, it } from 'vitest';
+import { COALESCE_MS, historyShortcut, ParamsHistory, type ShortcutKey } from './history';
+
+const base = { seed: 1, scale: 13, l1_length: 0.3 };
+
+describe('ParamsHistory', () => {
+  it('starts with nothing to undo or redo', () => {
+    const h = new ParamsHistory(base);
+    expect(h.canUndo).toBe(false);
+    expect(h.canRedo).toBe(false);
+    expect(h.undo()).toBeNull();
+    expect(h.redo()).toBeNull();
+    expect(h.current).toBe(base);
+  });
+
+  it('undoes and redoes discrete changes one at a time', () => {
+    const h = new ParamsHistory(base);
+    const a = { ...base, seed: 2 };
+    const b = { ...a, scale: 20 };
+    h.record(a, { key: null, now: 0 });
+    h.record(b, { key: null, now: 1 });
+    expect(h.undoDepth).toBe(2);
+    expect(h.undo()?.params).toBe(a);
+    expect(h.undo()?.params).toBe(base);
+    expect(h.undo()).toBeNull();
+    expect(h.canRedo).toBe(true);
+    expect(h.redo()?.params).toBe(a);
+    expect(h.redo()?.params).toBe(b);
+    expect(h.redo()).toBeNull();
+    expect(h.current).toBe(b);
+  });
+
+  it('a slider drag (rapid changes of one param) is one undo step', () => {
+    const h = new ParamsHistory(base);
+    let now = 0;
+    let last = base;
+    for (let i = 1; i <= 600; i++) {
+      now += 16; // one change per frame for ~10 s
+      last = { ...last, l1_length: 0.3 + i * 0.001 };
+      h.record(last, { key: 'l1_length', now });
+    }
+    expect(h.undoDepth).toBe(1);
+    expect(h.current).toBe(last);
+    expect(h.undo()?.params).toBe(base);
+    expect(h.redo()?.params).toBe(last);
+  });
+
+  it('a pause longer than the window, or another param, starts a new step', () => {
+    const h = new ParamsHistory(base);
+    const a = { ...base, l1_length: 0.4 };
+    const b = { ...a, l1_length: 0.5 };
+    const c = { ...b, scale: 14 };
+    h.record(a, { key: 'l1_length', now: 0 });
+    h.record(b, { key: 'l1_length', now: COALESCE_MS + 1 });
+    h.record(c, { key: 'scale', now: COALESCE_MS + 2 });
+    expect(h.undoDepth).toBe(3);
+    expect(h.undo()?.params).toBe(b);
+    expect(h.undo()?.params).toBe(a);
+  });
+
+  it('discrete changes (presets, Reset) never merge, even with a param edit just before', () => {
+    const h = new ParamsHistory(base);
+    const edited = { ...base, seed: 5 };
+    const preset = { seed: 1, scale: 30, l1_length: 0.5 };
+    h.record(edited, { key: 'seed', now: 0 });
+    h.record(preset, { key: null, frame: true, now: 1 });
+    h.record(base, { key: null, frame: true, now: 2 });
+    expect(h.undoDepth).toBe(3);
+    expect(h.undo()).toEqual({ params: preset, frame: true });
+    expect(h.undo()).toEqual({ params: edited, frame: true });
+    expect(h.undo()).toEqual({ params: base, frame: false });
+    expect(h.redo()).toEqual({ params: edited, frame: false });
+    expect(h.redo()).toEqual({ params: preset, frame: true });
+  });
+
+  it('a new change after undo drops the redo steps', () => {
+    const h = new ParamsHistory(base);
+    h.record({ ...base, seed: 2 }, { key: null, now: 0 });
+    h.undo();
+    h.record({ ...base, seed: 3 }, { key: null, now: 1 });
+    expect(h.canRedo).toBe(false);
+    expect(h.current.seed).toBe(3);
+  });
+
+  it('undo ends the coalescing window: the next drag is its own step', () => {
+    const h = new ParamsHistory(base);
+    h.record({ ...base, l1_length: 0.4 }, { key: 'l1_length', now: 0 });
+    h.undo();
+    h.record({ ...base, l1_length: 0.6 }, { key: 'l1_length', now: 10 });
+    expect(h.undoDepth).toBe(1);
+    expect(h.undo()?.params).toEqual(base);
+  });
+
+  it('recording the same params is a no-op; dragging back to the start removes the step', () => {
+    const h = new ParamsHistory(base);
+    h.record({ ...base }, { key: null, now: 0 });
+    expect(h.canUndo).toBe(false);
+    h.record({ ...base, scale: 15 }, { key: 'scale', now: 1 });
+    h.record({ ...base, scale: 13 }, { key: 'scale', now: 2 });
+    expect(h.canUndo).toBe(false);
+    expect(h.current).toEqual(base);
+  });
+
+  it('keeps at most `limit` steps', () => {
+    const h = new ParamsHistory(base, 5);
+    for (let i = 2; i < 20; i++) h.record({ ...base, seed: i }, { key: null, now: i });
+    expect(h.undoDepth).toBe(5);
+    let last = h.current;
+    while (h.canUndo) last = h.undo()?.params ?? last;
+    expect(last.seed).toBe(14);
+  });
+});
+
+describe('historyShortcut', () => {
+  const key = (k: string, mods: Partial<ShortcutKey> = {}): ShortcutKey => ({
+    key: k,
+    ctrlKey: false,
+    metaKey: false,
+    shiftKey: false,
+    altKey: false,
+    ...mods,
+  });
+
+  it('maps Ctrl+Z, Ctrl+Shift+Z, Ctrl+Y and the ⌘ variants', () => {
+    expect(historyShortcut(key('z', { ctrlKey: true }))).toBe('undo');
+    expect(historyShortcut(key('Z', { ctrlKey: true, shiftKey: true }))).toBe('redo');
+    expect(historyShortcut(key('y', { ctrlKey: true }))).toBe('redo');
+    expect(historyShortcut(key('z', { metaKey: true }))).toBe('undo');
+    expect(historyShortcut(key('z', { metaKey: true, shiftKey: true }))).toBe('redo');
+  });
+
+  it('ignores plain keys, Alt combinations and other letters', () => {
+    expect(historyShortcut(key('z'))).toBeNull();
+    expect(historyShortcut(key('z', { ctrlKey: true, altKey: true }))).toBeNull();
+    expect(historyShortcut(key('y', { ctrlKey: true, shiftKey: true }))).toBeNull();
+    expect(historyShortcut(key('x', { ctrlKey: true }))).toBeNull();
+  });
+});
