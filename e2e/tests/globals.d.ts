@@ -5,6 +5,7 @@ interface Window {
     hang?(ms: number): void;
     setTimeLimit?(ms: number): void;
     geometries?(): number | null;
+    growth?(): { markers: number; volumes: number; dragging: boolean };
   };
   /** Set by the tests' init scripts. */
   __cspViolations?: string[];

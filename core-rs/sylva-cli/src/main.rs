@@ -1,7 +1,7 @@
 //! `sylva`: the command line of Sylva's core.
 //!
 //! ```text
-//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton|mesh]
+//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.obj] [--report skeleton|mesh]
 //! sylva envelope --shape NAME [--samples N]
 //! sylva params [--markdown]
 //! sylva presets
@@ -16,7 +16,7 @@ use sylva_core::params::{registry, ParamKind, TreeParams};
 use sylva_core::{presets, SylvaError};
 
 const USAGE: &str = "usage:
-  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--out FILE.obj] [--report skeleton|mesh]
+  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.obj] [--report skeleton|mesh]
   sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
@@ -73,6 +73,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
     let mut runs = 30;
     let mut json = false;
     let mut report = Vec::new();
+    let mut volumes = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
@@ -83,6 +84,11 @@ fn parse(args: &[String]) -> Result<Opts, String> {
                 let kv = value("--set")?;
                 let (k, v) = kv.split_once('=').ok_or_else(|| format!("--set takes id=value, got '{kv}'"))?;
                 sets.push((k.to_string(), v.to_string()));
+            }
+            "--volumes" => {
+                let path = value("--volumes")?;
+                let text = std::fs::read_to_string(&path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
+                volumes = Some(sylva_core::growth::primitives::from_json(&text).map_err(|e| e.to_string())?);
             }
             "--out" => out = Some(value("--out")?),
             "--runs" => runs = value("--runs")?.parse().map_err(|_| "--runs takes a whole number".to_string())?,
@@ -110,6 +116,9 @@ fn parse(args: &[String]) -> Result<Opts, String> {
     for (k, v) in sets {
         let num = parse_value(&k, &v)?;
         params.set(&k, num).map_err(|e| e.to_string())?;
+    }
+    if let Some(v) = volumes {
+        params.volumes = v;
     }
     Ok(Opts { params, out, runs: runs.max(1), json, report })
 }

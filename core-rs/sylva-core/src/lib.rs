@@ -18,6 +18,7 @@
 pub mod clock;
 pub mod crown;
 pub mod error;
+pub mod foliage;
 pub mod growth;
 pub mod leaf;
 pub mod math;
@@ -70,6 +71,8 @@ pub struct Generated {
     pub envelope: Vec<[f32; 2]>,
     /// Growth mode only: the markers sampled in the crown at the start (for display).
     pub markers: Vec<glam::Vec3>,
+    /// The leaves: one leaf mesh plus per-instance matrices and colours ([`foliage`]).
+    pub foliage: foliage::Foliage,
 }
 
 impl Generated {
@@ -92,6 +95,9 @@ impl Generated {
             "stage_ms": stage_ms,
             "total_ms": self.stats.total_ms,
             "envelope": self.envelope,
+            "leaves": self.foliage.count(),
+            "leaf_hash": format!("{:016x}", self.foliage.leaf_hash()),
+            "leaf_texture": self.foliage.texture().map(|t| [t.width, t.height]),
         })
         .to_string()
     }
@@ -107,28 +113,40 @@ pub fn generate(params: &TreeParams) -> Result<Generated, SylvaError> {
 
 /// [`generate`] with an explicit clock for the stage timings.
 pub fn generate_with_clock(params: &TreeParams, clock: &dyn Clock) -> Result<Generated, SylvaError> {
+    generate_with_progress(params, clock, None)
+}
+
+/// [`generate_with_clock`] reporting the progress of growth (fraction 0..1 of the iteration cap)
+/// to `progress` every few iterations; the tree is the same with or without it.
+pub fn generate_with_progress(
+    params: &TreeParams,
+    clock: &dyn Clock,
+    progress: Option<&mut dyn FnMut(f32)>,
+) -> Result<Generated, SylvaError> {
     params.validate()?;
     let t0 = clock.now_ms();
     let (skeleton, markers) = match params.growth_mode {
         growth::GrowthMode::Parametric => (skeleton::build(params)?, Vec::new()),
         growth::GrowthMode::SpaceColonization => {
-            let grown = growth::grow(params)?;
+            let grown = growth::grow_with_progress(params, progress)?;
             (growth::skeleton(params, &grown), grown.markers)
         }
     };
     let t1 = clock.now_ms();
     let mesh = mesh::tube::build(&skeleton, params)?;
     let t2 = clock.now_ms();
-    let hash = mesh.content_hash();
+    let foliage = foliage::build(&skeleton, params)?;
+    let t_leaves = clock.now_ms();
+    let hash = foliage.hash_into(mesh.content_hash());
     let bounds = mesh.bounds();
     let t3 = clock.now_ms();
     let stats = Stats {
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
         stems: skeleton.stems.len(),
-        stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("hash", t3 - t2)],
+        stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("foliage", t_leaves - t2), ("hash", t3 - t_leaves)],
         total_ms: t3 - t0,
     };
     let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
-    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers })
+    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers, foliage })
 }

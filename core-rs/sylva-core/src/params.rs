@@ -10,7 +10,7 @@
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
 use crate::growth::{CrownVolumeKind, GrowthMode};
-use crate::leaf::options::{LeafMargin, LeafOutline, LeafVenation};
+use crate::leaf::options::{LeafLod, LeafMargin, LeafOutline, LeafVenation};
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -192,6 +192,8 @@ impl ParamValue for CrownVolumeKind {
     fn from_wire(v: f64) -> Self {
         if v == 1.0 {
             CrownVolumeKind::Envelope
+        } else if v == 2.0 {
+            CrownVolumeKind::Primitives
         } else {
             CrownVolumeKind::Ellipsoid
         }
@@ -202,7 +204,7 @@ impl ParamValue for CrownVolumeKind {
 }
 
 /// Panel sections in display order. Every parameter's group is one of these.
-pub const GROUPS: [&str; 14] = [
+pub const GROUPS: [&str; 15] = [
     "Tree",
     "Crown",
     "Trunk",
@@ -212,6 +214,7 @@ pub const GROUPS: [&str; 14] = [
     "Growth",
     "Growth Volume",
     "Environment",
+    "Foliage",
     "Quality",
     "Budget",
     "Leaf",
@@ -245,6 +248,9 @@ macro_rules! define_params {
             )*
             /// Per-level parameters; index 0 is the trunk.
             pub level: [LevelParams; 4],
+            /// Growth mode: the user's volume primitives (crown, shadow and exclusion groups);
+            /// structured data beside the registry, JSON key `"volumes"` (see [`crate::growth::primitives`]).
+            pub volumes: Vec<crate::growth::primitives::VolumePrimitive>,
         }
 
         /// Weber & Penn's per-level parameters (`nLength`, `nDownAngle`, ...).
@@ -259,7 +265,7 @@ macro_rules! define_params {
         impl Default for TreeParams {
             fn default() -> Self {
                 let level = |n: usize| LevelParams { $( $lf: [$d0, $d1, $d2, $d3][n], )* };
-                TreeParams { $( $tf: $td, )* level: [level(0), level(1), level(2), level(3)] }
+                TreeParams { $( $tf: $td, )* level: [level(0), level(1), level(2), level(3)], volumes: Vec::new() }
             }
         }
 
@@ -440,8 +446,8 @@ define_params! {
             "Space colonization: radius of the branch tips; thicker stems follow the pipe model.";
         pipe_power: f32 = 2.0; [1.0, 4.0, 0.05] "", "Growth", "Pipe Power",
             "Space colonization: pipe model exponent D in r_parent^D = sum of r_child^D (2 = da Vinci's rule).";
-        crown_volume: CrownVolumeKind = CrownVolumeKind::Ellipsoid; [0, 1, 1] "", "Growth Volume", "Crown Volume",
-            "Space colonization: markers fill an ellipsoid, or the Crown Shape envelope as a solid of revolution.";
+        crown_volume: CrownVolumeKind = CrownVolumeKind::Ellipsoid; [0, 2, 1] "", "Growth Volume", "Crown Volume",
+            "Space colonization: markers fill an ellipsoid, the Crown Shape envelope as a solid of revolution, or the union of your crown primitives.";
         crown_base: f32 = 2.5; [0.0, 50.0, 0.1] "m", "Growth Volume", "Crown Bottom",
             "Space colonization: height of the bottom of the crown volume above the ground.";
         crown_height: f32 = 6.0; [0.2, 100.0, 0.1] "m", "Growth Volume", "Crown Height",
@@ -452,6 +458,10 @@ define_params! {
             "Space colonization: crowd markers toward the crown's surface (positive) or its axis (negative).";
         marker_top_bias: f32 = 0.0; [-1.0, 1.0, 0.05] "", "Growth Volume", "Top Bias",
             "Space colonization: crowd markers toward the top (positive) or the bottom (negative) of the crown.";
+        show_markers: bool = false; [0, 1, 1] "", "Growth Volume", "Show Markers",
+            "Viewer only: draw the growth markers (attraction points) as dots.";
+        show_volumes: bool = false; [0, 1, 1] "", "Growth Volume", "Show Volumes",
+            "Viewer only: draw the crown volume, the wall and your primitives as wireframes, with drag handles.";
         light_competition: bool = false; [0, 1, 1] "", "Environment", "Light Competition",
             "Space colonization: reject new shoots that would grow in the shade of the canopy above them.";
         shade_depth: f32 = 4.0; [0.5, 50.0, 0.5] "", "Environment", "Shade Depth",
@@ -464,10 +474,34 @@ define_params! {
             "Space colonization: height of the wall.";
         wall_width: f32 = 12.0; [0.5, 200.0, 0.1] "m", "Environment", "Wall Width",
             "Space colonization: length of the wall.";
+        leaves: u32 = 25; [0, 1_000, 1] "", "Foliage", "Leaves",
+            "Leaves per stem of the last branch level (Weber & Penn Leaves; grown trees: per outermost shoot); 0 = bare.";
+        foliage_scale: f32 = 0.17; [0.01, 5.0, 0.01] "m", "Foliage", "Leaf Scale",
+            "Leaf length, base to tip (Weber & Penn LeafScale).";
+        foliage_scale_x: f32 = 1.0; [0.05, 5.0, 0.01] "", "Foliage", "Leaf Scale X",
+            "Extra scale of the leaf width (Weber & Penn LeafScaleX).";
+        foliage_start: f32 = 0.0; [0.0, 0.95, 0.01] "", "Foliage", "Leaf Start",
+            "Fraction of each stem, from its base, that carries no leaves.";
+        foliage_distribution: f32 = 0.0; [-1.0, 1.0, 0.05] "", "Foliage", "Leaf Distribution",
+            "Where leaves crowd along a stem: positive toward the tip, negative toward the base, 0 = even.";
+        foliage_angle: f32 = 45.0; [0.0, 90.0, 1.0] "°", "Foliage", "Leaf Angle",
+            "Angle between a leaf and its stem before it turns toward the light.";
+        foliage_size_v: f32 = 0.2; [0.0, 0.9, 0.01] "", "Foliage", "Size Variation",
+            "Random variation of the leaf size (uniform in +/- this fraction).";
+        foliage_clumping: f32 = 0.0; [0.0, 1.0, 0.01] "", "Foliage", "Clumping",
+            "Pulls leaves together into clumps of about five along the stem (0 = evenly spread).";
+        foliage_twigs3: bool = false; [0, 1, 1] "", "Foliage", "Three-Leaf Twigs",
+            "Each leaf position carries a small twig of three leaves (a centre leaf and two side leaves).";
+        foliage_color_v: f32 = 0.15; [0.0, 1.0, 0.01] "", "Foliage", "Colour Variation",
+            "Random per-leaf tint: brightness and a shift toward yellow.";
+        foliage_lod: LeafLod = LeafLod::Auto; [0, 3, 1] "", "Foliage", "Leaf Mesh",
+            "Geometry drawn for every leaf: Auto (the full blade while the foliage stays under 200,000 triangles, else billboards, else cards), Blade, Billboards or Card.";
         mesh_quality: f32 = 1.0; [0.25, 4.0, 0.05] "", "Quality", "Mesh Quality",
             "Multiplies the number of sides around each stem and rings along bends.";
         max_vertices: u32 = 2_000_000; [1_000, 20_000_000, 1_000] "", "Budget", "Max Vertices",
             "Vertex budget: a tree that would need more stops with an error instead of freezing.";
+        max_leaves: u32 = 500_000; [0, 5_000_000, 1_000] "", "Budget", "Max Leaves",
+            "Leaf budget: a tree that would need more leaves stops with an error instead of freezing.";
         leaf_outline: LeafOutline = LeafOutline::Superformula; [0, 1, 1] "", "Leaf", "Leaf Outline",
             "How the blade outline is drawn: Gielis' superformula, or a mirrored cubic spline (Spline Angle 1, L1, Angle 2, L2).";
         leaf_m: f32 = 2.0; [0.0, 20.0, 0.5] "", "Leaf", "Symmetry (m)",
@@ -616,6 +650,10 @@ impl TreeParams {
             .map_err(|e| SylvaError::Input { message: format!("parameters must be a JSON object of numbers: {e}") })?;
         let mut p = TreeParams::default();
         for (id, value) in &map {
+            if id == "volumes" {
+                p.volumes = crate::growth::primitives::from_json_value(value)?;
+                continue;
+            }
             let v = match value {
                 serde_json::Value::Number(n) => n.as_f64().unwrap_or(f64::NAN),
                 serde_json::Value::Bool(b) => f64::from(u8::from(*b)),
@@ -638,7 +676,7 @@ impl TreeParams {
             let v = self.get(&spec.id).expect("every registry id is gettable");
             spec.check(v)?;
         }
-        Ok(())
+        crate::growth::primitives::validate(&self.volumes)
     }
 
     /// The values that differ from the defaults, by id in registry order.

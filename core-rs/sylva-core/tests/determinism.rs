@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "c9ffeacab08f8a76"),
-    ("quaking_aspen", "10b445fa84b25196"),
-    ("black_tupelo", "527c11f38d54d529"),
-    ("weeping_willow", "18c450af130f2cf4"),
-    ("ca_black_oak", "8df0cc8f6b026b23"),
-    ("fir", "afcccfc9573a5438"),
-    ("oak", "4f1198b299881caa"),
-    ("cypress", "9d3dd43f71380fed"),
-    ("umbrella", "67f2a34e31445d13"),
-    ("weeping", "fb9f9ab2e2273d71"),
-    ("grown_broadleaf", "f3a478a31ca15414"),
-    ("grown_shrub", "c4744761aa0e4891"),
-    ("grown_hedgerow", "6a8921a9ab10b7d1"),
-    ("grown_beside_wall", "4a3d0087b6887de0"),
-    ("grown_bushy", "6e500d6b0b27fba1"),
+    ("default", "d2b61999edbf23df"),
+    ("quaking_aspen", "c50cf1807a9a9ae3"),
+    ("black_tupelo", "507cfd5373a069d3"),
+    ("weeping_willow", "da49d8cef0f8ff90"),
+    ("ca_black_oak", "91dfe3e01ebaca00"),
+    ("fir", "299e7018761dc5de"),
+    ("oak", "82190e7a40a5f91d"),
+    ("cypress", "cc4b0063bb99008f"),
+    ("umbrella", "9b9b3ba4ae758390"),
+    ("weeping", "5f025018215fc10b"),
+    ("grown_broadleaf", "9a06df8265303b9f"),
+    ("grown_shrub", "04fd4947b16ac80e"),
+    ("grown_hedgerow", "d9bd855ced25316d"),
+    ("grown_beside_wall", "a4e6551b0317927d"),
+    ("grown_bushy", "2ebb34802634c975"),
 ];
 
 #[test]

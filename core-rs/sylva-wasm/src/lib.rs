@@ -111,6 +111,34 @@ impl GeneratedTree {
     pub fn meta_json(&self) -> String {
         self.0.meta_json()
     }
+    /// The leaf mesh (leaf units): `x, y, z` per vertex (empty when the tree is bare).
+    pub fn leaf_positions(&self) -> Vec<f32> {
+        self.0.foliage.mesh.positions.clone()
+    }
+    /// The leaf mesh's unit normals.
+    pub fn leaf_normals(&self) -> Vec<f32> {
+        self.0.foliage.mesh.normals.clone()
+    }
+    /// The leaf mesh's `u, v` per vertex (over the baked leaf texture).
+    pub fn leaf_uvs(&self) -> Vec<f32> {
+        self.0.foliage.mesh.uvs.clone()
+    }
+    /// The leaf mesh's triangle list (u32).
+    pub fn leaf_indices(&self) -> Vec<u32> {
+        self.0.foliage.mesh.indices.clone()
+    }
+    /// Per-leaf 4x4 matrices, column-major, 16 floats per leaf.
+    pub fn leaf_matrices(&self) -> Vec<f32> {
+        self.0.foliage.matrices.clone()
+    }
+    /// Per-leaf RGB tint, 3 floats per leaf.
+    pub fn leaf_colors(&self) -> Vec<f32> {
+        self.0.foliage.colors.clone()
+    }
+    /// The baked leaf colour texture (RGBA8, row 0 = v 0; size in `meta_json().leaf_texture`).
+    pub fn leaf_texture(&self) -> Vec<u8> {
+        self.0.foliage.texture().map(|t| t.color.clone()).unwrap_or_default()
+    }
 }
 
 /// Generate a tree from a JSON object of parameter values (`{"id": number}`); missing ids take
@@ -119,6 +147,26 @@ impl GeneratedTree {
 pub fn generate(params_json: &str) -> Result<GeneratedTree, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
     sylva_core::generate_with_clock(&params, &PerfClock).map(GeneratedTree).map_err(|e| JsValue::from_str(&e.to_json()))
+}
+
+#[wasm_bindgen]
+extern "C" {
+    /// A JS function `(fraction: number) => void` that receives growth progress.
+    #[wasm_bindgen(typescript_type = "(fraction: number) => void")]
+    pub type ProgressFn;
+    #[wasm_bindgen(method, js_name = call)]
+    fn call_with(this: &ProgressFn, this_arg: &JsValue, fraction: f32);
+}
+
+/// [`generate`], calling `progress(fraction)` every few growth iterations (growth mode only),
+/// so the worker can post progress while it is busy.
+#[wasm_bindgen]
+pub fn generate_with_progress(params_json: &str, progress: &ProgressFn) -> Result<GeneratedTree, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let mut report = |f: f32| progress.call_with(&JsValue::NULL, f);
+    sylva_core::generate_with_progress(&params, &PerfClock, Some(&mut report))
+        .map(GeneratedTree)
+        .map_err(|e| JsValue::from_str(&e.to_json()))
 }
 
 /// A leaf as JSON (outline, triangulation, auxins, vein graph, loops, timings): the same object
@@ -145,6 +193,20 @@ pub fn leaf_svg(params_json: &str, step: i32) -> Result<String, JsValue> {
         ..sylva_core::leaf::svg::SvgOptions::default()
     };
     Ok(sylva_core::leaf::svg::render(&leaf, &opts))
+}
+
+/// The leaf for the inspector in one call: `{"svg": string, "iterations", "nodes", "links",
+/// "segments", "auxins", "triangles", "hash"}` where `segments` counts the vein segments drawn
+/// at `step` (a negative step draws the finished network). `triangulation` draws the triangles.
+#[wasm_bindgen]
+pub fn leaf_inspect(params_json: &str, step: i32, triangulation: bool) -> Result<String, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf =
+        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let step = u32::try_from(step).ok();
+    let opts =
+        sylva_core::leaf::svg::SvgOptions { triangulation, step, ..sylva_core::leaf::svg::SvgOptions::default() };
+    Ok(sylva_core::leaf::svg::inspect_json(&leaf, &opts))
 }
 
 /// The leaf presets as JSON (`[{name, label, description, values}]`).

@@ -4,8 +4,10 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { applyPreset, defaultParams, matchingPreset, randomSeed } from '../core/params';
-import type { Params } from '../core/types';
+import type { Params, VolumePrimitive } from '../core/types';
 import { ErrorBanner } from '../ui/ErrorBanner';
+import { LeafInspector } from '../ui/LeafInspector';
+import { GrowthProgress, GrowthTools } from '../ui/GrowthTools';
 import { ParamPanel } from '../ui/ParamPanel';
 import { StatsOverlay } from '../ui/StatsOverlay';
 import { Viewport } from '../ui/Viewport';
@@ -15,6 +17,7 @@ import { installDebugHook } from './debugHook';
 import { historyShortcut, ParamsHistory } from './history';
 import { browserStorage, loadInitialParams, ParamsSync } from './persistence';
 import { useGenerator } from './useGenerator';
+import { useGrowthEditor, volumesFromUrl } from './useGrowthEditor';
 
 /** The whole application. */
 export function App() {
@@ -27,25 +30,41 @@ export function App() {
   const historyRef = useRef<ParamsHistory | null>(null);
   const [canUndo, setCanUndo] = useState(false);
   const [canRedo, setCanRedo] = useState(false);
+  // Side panel: the tree parameters or the leaf inspector.
+  const [tab, setTab] = useState<'tree' | 'leaf'>('tree');
 
-  const onReady = useCallback((ready: ReadyInfo): Params => {
-    const initial = loadInitialParams(ready.registry, window.location.search, browserStorage());
-    paramsRef.current = initial.params;
-    historyRef.current = new ParamsHistory(initial.params);
-    setInfo(ready);
-    setParams(initial.params);
-    setNotices(initial.messages);
-    syncRef.current ??= new ParamsSync(browserStorage());
-    syncRef.current.schedule(ready.registry, initial.params);
-    return initial.params;
-  }, []);
+  // Growth editor: the user's volume primitives (from the URL's `vol=`), sent with every request.
+  const [volumesInUrl] = useState(volumesFromUrl);
+  const growthVolumesRef = useRef<VolumePrimitive[]>(volumesInUrl.volumes);
+  const growthMessages = volumesInUrl.messages;
 
-  const generator = useGenerator(viewerRef, onReady);
+  const onReady = useCallback(
+    (ready: ReadyInfo): Params => {
+      const initial = loadInitialParams(ready.registry, window.location.search, browserStorage());
+      paramsRef.current = initial.params;
+      historyRef.current = new ParamsHistory(initial.params);
+      setInfo(ready);
+      setParams(initial.params);
+      setNotices([...initial.messages, ...growthMessages]);
+      syncRef.current ??= new ParamsSync(browserStorage());
+      syncRef.current.schedule(ready.registry, initial.params);
+      return initial.params;
+    },
+    [growthMessages],
+  );
+
+  const generator = useGenerator(viewerRef, onReady, growthVolumesRef);
   // The latest generator, for callbacks that must stay stable across renders (memoised controls).
   const generatorRef = useRef(generator);
   useEffect(() => {
     generatorRef.current = generator;
   });
+  // A gizmo drag regrows the current params with the edited volumes.
+  const regrow = useCallback((volumes: VolumePrimitive[]) => {
+    const current = paramsRef.current;
+    if (current) generatorRef.current.request(current, false, volumes);
+  }, []);
+  const growth = useGrowthEditor(viewerRef, params, growthVolumesRef, volumesInUrl.volumes, regrow);
 
   useEffect(
     () => installDebugHook({ geometries: () => viewerRef.current?.gpuGeometries ?? null }),
@@ -65,10 +84,10 @@ export function App() {
     (next: Params, frame: boolean) => {
       paramsRef.current = next;
       setParams(next);
-      generatorRef.current.request(next, frame);
+      generatorRef.current.request(next, frame, growthVolumesRef.current);
       syncRef.current?.schedule(registry, next);
     },
-    [registry],
+    [registry, growthVolumesRef],
   );
 
   const updateHistoryState = useCallback(() => {
@@ -123,6 +142,14 @@ export function App() {
     [apply],
   );
 
+  const onChangeMany = useCallback(
+    (values: Params) => {
+      const current = paramsRef.current;
+      if (current) apply({ ...current, ...values }, null, false);
+    },
+    [apply],
+  );
+
   const activePreset = useMemo(
     () => (params ? (matchingPreset(registry, presets, params)?.name ?? null) : null),
     [registry, presets, params],
@@ -140,6 +167,7 @@ export function App() {
       <main className="stage">
         <Viewport viewerRef={viewerRef} />
         <StatsOverlay stats={generator.stats} busy={generator.busy} />
+        <GrowthProgress progress={generator.progress} onCancel={() => generator.cancel()} />
         <ErrorBanner
           error={generator.error}
           notices={notices}
@@ -149,6 +177,34 @@ export function App() {
         {info === null ? <div className="loading">Loading the generator…</div> : null}
       </main>
       {info && params ? (
+        <nav className="panel-tabs" aria-label="Panels">
+          <button
+            type="button"
+            data-testid="tab-tree"
+            aria-pressed={tab === 'tree'}
+            onClick={() => setTab('tree')}
+          >
+            Tree
+          </button>
+          <button
+            type="button"
+            data-testid="tab-leaf"
+            aria-pressed={tab === 'leaf'}
+            onClick={() => setTab('leaf')}
+          >
+            Leaf
+          </button>
+        </nav>
+      ) : null}
+      {info && params && tab === 'leaf' ? (
+        <LeafInspector
+          registry={registry}
+          params={params}
+          onChange={onChange}
+          onChangeMany={onChangeMany}
+        />
+      ) : null}
+      {info && params && tab === 'tree' ? (
         <ParamPanel
           registry={registry}
           presets={presets}
@@ -171,6 +227,19 @@ export function App() {
           onReset={() => apply(defaultParams(registry), null, true)}
           onUndo={undo}
           onRedo={redo}
+          extras={{
+            'Growth Volume': (
+              <GrowthTools
+                editor={growth}
+                onAdded={(group) => {
+                  const current = paramsRef.current;
+                  if (!current) return;
+                  const next = { ...current, growth_mode: 1, show_volumes: 1 };
+                  apply(group === 'crown' ? { ...next, crown_volume: 2 } : next, null, false);
+                }}
+              />
+            ),
+          }}
         />
       ) : null}
     </div>

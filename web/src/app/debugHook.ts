@@ -10,6 +10,8 @@ export interface SylvaDebugHook {
   setTimeLimit(ms: number): void;
   /** Geometries alive on the GPU (three.js `renderer.info.memory.geometries`), for leak tests. */
   geometries(): number | null;
+  /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */
+  growth(): { markers: number; volumes: number; dragging: boolean };
 }
 
 declare global {

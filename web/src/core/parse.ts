@@ -1,6 +1,7 @@
 /** Runtime validation of the JSON the wasm core returns (registry, presets, meta, errors). */
 import type {
   Bounds,
+  LeafInspection,
   MeshGroup,
   ParamKind,
   ParamSpec,
@@ -140,6 +141,26 @@ export function parseMeta(text: string): TreeMeta {
     stage_ms: o.stage_ms === undefined ? {} : numberRecord(o.stage_ms, 'meta.stage_ms'),
     total_ms: num(o, 'total_ms', 'meta'),
     stems: typeof o.stems === 'number' ? o.stems : 0,
+    leaves: typeof o.leaves === 'number' ? o.leaves : 0,
+    leaf_hash: typeof o.leaf_hash === 'string' ? o.leaf_hash : '',
+    leaf_texture: Array.isArray(o.leaf_texture)
+      ? [Number(o.leaf_texture[0]), Number(o.leaf_texture[1])]
+      : null,
+  };
+}
+
+/** Parses and validates `leaf_inspect()` output. */
+export function parseLeafInspection(text: string): LeafInspection {
+  const o = record(JSON.parse(text), 'leaf');
+  return {
+    svg: str(o, 'svg', 'leaf'),
+    iterations: num(o, 'iterations', 'leaf'),
+    nodes: num(o, 'nodes', 'leaf'),
+    links: num(o, 'links', 'leaf'),
+    segments: num(o, 'segments', 'leaf'),
+    auxins: num(o, 'auxins', 'leaf'),
+    triangles: num(o, 'triangles', 'leaf'),
+    hash: str(o, 'hash', 'leaf'),
   };
 }
 

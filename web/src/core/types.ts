@@ -69,6 +69,35 @@ export interface TreeMeta {
   stage_ms: Record<string, number>;
   total_ms: number;
   stems: number;
+  /** Number of leaves (instances); 0 for a bare tree. */
+  leaves?: number;
+  /** Hash of the leaf shape: changes exactly when the leaf parameters change. */
+  leaf_hash?: string;
+  /** Size of the baked leaf texture `[width, height]`, null when bare. */
+  leaf_texture?: [number, number] | null;
+}
+
+/** The leaf texture (RGBA8, row 0 = v 0), sent only when the leaf shape changed. */
+export interface LeafTextureBuffers {
+  width: number;
+  height: number;
+  rgba: Uint8Array;
+}
+
+/** The leaves of a tree: one leaf mesh (leaf units) drawn once per instance. */
+export interface FoliageBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  uvs: Float32Array;
+  indices: Uint32Array;
+  /** Column-major 4x4 matrix per leaf (16 floats). */
+  matrices: Float32Array;
+  /** RGB tint per leaf (3 floats). */
+  colors: Float32Array;
+  /** The baked texture, or null when it is the same as the previous tree's. */
+  texture: LeafTextureBuffers | null;
+  /** `meta.leaf_hash`: which leaf shape the mesh and texture are. */
+  leafHash: string;
 }
 
 /** The mesh buffers of a generated tree plus its metadata. */
@@ -79,7 +108,28 @@ export interface TreeBuffers {
   indices: Uint32Array;
   /** Crown envelope preview as line segments (x, y, z per point, two points per segment). */
   envelope: Float32Array;
+  /** Growth mode: the markers sampled in the crown (x, y, z each; empty otherwise). */
+  markers?: Float32Array;
   meta: TreeMeta;
+  /** The leaves (absent from hand-made test buffers). */
+  foliage?: FoliageBuffers;
+}
+
+/** Shape of a user volume primitive (growth mode). */
+export type VolumeKind = 'sphere' | 'box' | 'cylinder';
+/** What a volume primitive does: holds markers, holds none, or also stops branches. */
+export type VolumeGroup = 'crown' | 'shadow' | 'exclusion';
+
+/**
+ * A user volume primitive as the app keeps it. `size` is `[radius, radius, radius]` for a
+ * sphere, `[width, height, depth]` for a box and `[radius, height, radius]` for a cylinder
+ * (metres); `volumeToCore` gives the core's JSON form.
+ */
+export interface VolumePrimitive {
+  kind: VolumeKind;
+  group: VolumeGroup;
+  centre: [number, number, number];
+  size: [number, number, number];
 }
 
 /** A `GeneratedTree` instance as exported by the wasm module. */
@@ -89,7 +139,17 @@ export interface WasmTree {
   uvs(): Float32Array;
   indices(): Uint32Array;
   envelope_lines(): Float32Array;
+  /** Growth mode: the markers (x, y, z each); optional so older fakes still type-check. */
+  markers?(): Float32Array;
   meta_json(): string;
+  /** Foliage (optional so that test fakes may leave them out). */
+  leaf_positions?(): Float32Array;
+  leaf_normals?(): Float32Array;
+  leaf_uvs?(): Float32Array;
+  leaf_indices?(): Uint32Array;
+  leaf_matrices?(): Float32Array;
+  leaf_colors?(): Float32Array;
+  leaf_texture?(): Uint8Array;
   free(): void;
 }
 
@@ -99,6 +159,23 @@ export interface WasmApi {
   presets_json(): string;
   core_version(): string;
   generate(paramsJson: string): WasmTree;
+  /** `generate` calling `progress(fraction)` during growth (optional: fakes may omit it). */
+  generate_with_progress?(paramsJson: string, progress: (fraction: number) => void): WasmTree;
   take_panic(): string | undefined;
   debug_panic(): void;
+  leaf_inspect?(paramsJson: string, step: number, triangulation: boolean): string;
+  leaf_presets_json?(): string;
+}
+
+/** The inspector's view of one leaf (`leaf_inspect()`). */
+export interface LeafInspection {
+  svg: string;
+  iterations: number;
+  nodes: number;
+  links: number;
+  /** Vein segments drawn at the requested step. */
+  segments: number;
+  auxins: number;
+  triangles: number;
+  hash: string;
 }

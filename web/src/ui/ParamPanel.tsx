@@ -1,5 +1,6 @@
 /** Side panel generated from the registry: presets, seed, Reset, and one section per group. */
 import { groupParams } from '../core/params';
+import type { ReactNode } from 'react';
 import type { ParamSpec, Params, Preset } from '../core/types';
 import { NumberField } from './NumberField';
 import { ParamControl } from './ParamControl';
@@ -18,6 +19,8 @@ interface Props {
   canRedo: boolean;
   onUndo: () => void;
   onRedo: () => void;
+  /** Extra controls shown at the top of a group's section (e.g. the growth editor's tools). */
+  extras?: Partial<Record<string, ReactNode>>;
 }
 
 /** The parameter editor; seed gets its own field with a Randomize button. */
@@ -108,6 +111,7 @@ export function ParamPanel(props: Props) {
       {groups.map(([group, specs], index) => (
         <details key={group} className="group" open={index < 3} data-group={group}>
           <summary>{group}</summary>
+          {props.extras?.[group] ?? null}
           {specs.map((spec) => (
             <ParamControl
               key={spec.id}

@@ -1,13 +1,14 @@
 /** Share-URL codec: params ⇄ `v=1&id=value…` query strings (non-defaults only), with validation. */
 import { defaultParams, displayValue, normalizeValue } from '../core/params';
-import type { ParamSpec, Params } from '../core/types';
+import type { ParamSpec, Params, VolumeGroup, VolumeKind, VolumePrimitive } from '../core/types';
+import { CENTRE_MAX, MAX_VOLUMES, SIZE_MAX, SIZE_MIN } from '../core/volumes';
 
 /** Current format version written as `v=`. */
 export const FORMAT_VERSION = '1';
 /** Longest query accepted when decoding (characters, without the leading `?`). */
 export const MAX_QUERY_LENGTH = 4096;
 /** Non-parameter query keys carried over when the URL is rewritten. */
-export const KEPT_KEYS: readonly string[] = ['debug'];
+export const KEPT_KEYS: readonly string[] = ['debug', 'vol'];
 /** Most notices one decode reports; the rest are summed up in one more line. */
 export const MAX_MESSAGES = 6;
 
@@ -186,4 +187,105 @@ export function buildSearch(
     if (value !== null) extra.push(`${key}=${encodeURIComponent(value)}`);
   }
   return `?${[encodeParams(registry, params), ...extra].join('&')}`;
+}
+
+/** Query key of the growth volume primitives. */
+export const VOLUMES_KEY = 'vol';
+/** Version prefix of the `vol=` value. */
+export const VOLUMES_VERSION = '1';
+/** Longest `vol=` value accepted (characters). */
+export const MAX_VOLUMES_LENGTH = 1500;
+
+const KIND_CODES: Record<VolumeKind, string> = { sphere: 's', box: 'b', cylinder: 'c' };
+const GROUP_CODES: Record<VolumeGroup, string> = { crown: 'c', shadow: 's', exclusion: 'x' };
+/** Numbers after the centre: sphere r; box w, h, d; cylinder r, h. */
+const SIZE_COUNT: Record<VolumeKind, number> = { sphere: 1, box: 3, cylinder: 2 };
+
+function sizeNumbers(v: VolumePrimitive): number[] {
+  if (v.kind === 'sphere') return [v.size[0]];
+  if (v.kind === 'cylinder') return [v.size[0], v.size[1]];
+  return [...v.size];
+}
+
+/**
+ * Encodes primitives as the compact `vol=` value: `1;s:c:x,y,z,r;b:x:x,y,z,w,h,d;c:s:x,y,z,r,h`
+ * (version, then per primitive its kind s/b/c, group c(rown)/s(hadow)/x (exclusion) and numbers).
+ * Empty list: empty string (no key).
+ */
+export function encodeVolumes(volumes: readonly VolumePrimitive[]): string {
+  if (volumes.length === 0) return '';
+  const items = volumes.map(
+    (v) =>
+      `${KIND_CODES[v.kind]}:${GROUP_CODES[v.group]}:${[...v.centre, ...sizeNumbers(v)].map(formatNumber).join(',')}`,
+  );
+  return [VOLUMES_VERSION, ...items].join(';');
+}
+
+function decodeVolume(item: string): VolumePrimitive | string {
+  const parts = item.split(':');
+  if (parts.length !== 3) return `"${shown(item)}" is not kind:group:numbers`;
+  const [k, g, nums] = parts as [string, string, string];
+  const kind = (Object.keys(KIND_CODES) as VolumeKind[]).find((x) => KIND_CODES[x] === k);
+  if (!kind) return `unknown kind "${shown(k)}" (s = sphere, b = box, c = cylinder)`;
+  const group = (Object.keys(GROUP_CODES) as VolumeGroup[]).find((x) => GROUP_CODES[x] === g);
+  if (!group) return `unknown group "${shown(g)}" (c = crown, s = shadow, x = exclusion)`;
+  const raw = nums.split(',');
+  const want = 3 + SIZE_COUNT[kind];
+  if (raw.length !== want) return `a ${kind} takes ${want} numbers, got ${raw.length}`;
+  const values: number[] = [];
+  for (const text of raw) {
+    if (!NUMBER_RE.test(text)) return `"${shown(text)}" is not a number`;
+    const value = Number(text);
+    if (!Number.isFinite(value)) return `"${shown(text)}" is not a finite number`;
+    values.push(value);
+  }
+  const centre = values.slice(0, 3) as [number, number, number];
+  if (centre.some((c) => Math.abs(c) > CENTRE_MAX)) {
+    return `a centre coordinate is outside -${CENTRE_MAX}–${CENTRE_MAX} m`;
+  }
+  const sizes = values.slice(3);
+  if (sizes.some((x) => x < SIZE_MIN || x > SIZE_MAX)) {
+    return `a size is outside ${SIZE_MIN}–${SIZE_MAX} m`;
+  }
+  const [a = 0, b = 0, c = 0] = sizes;
+  const size: [number, number, number] =
+    kind === 'sphere' ? [a, a, a] : kind === 'cylinder' ? [a, b, a] : [a, b, c];
+  return { kind, group, centre, size };
+}
+
+/**
+ * Decodes a `vol=` value strictly: wrong version or over-long value → no primitives; a bad
+ * primitive is skipped with a message naming it (`vol[2]`); at most 32 are kept. Never throws.
+ */
+export function decodeVolumes(value: string | null): {
+  volumes: VolumePrimitive[];
+  messages: string[];
+} {
+  const notices = new Notices();
+  const volumes: VolumePrimitive[] = [];
+  if (value === null || value === '') return { volumes, messages: [] };
+  if (value.length > MAX_VOLUMES_LENGTH) {
+    notices.add(
+      `Ignored the volumes in the link: too long (${value.length} characters, limit ${MAX_VOLUMES_LENGTH}).`,
+    );
+    return { volumes, messages: notices.done() };
+  }
+  const [version, ...items] = value.split(';');
+  if (version !== VOLUMES_VERSION) {
+    notices.add(
+      `Ignored the volumes in the link: unsupported version "${shown(version ?? '')}" (this app reads ${VOLUMES_VERSION}).`,
+    );
+    return { volumes, messages: notices.done() };
+  }
+  items.forEach((item, i) => {
+    const result = decodeVolume(item);
+    if (typeof result === 'string') {
+      notices.add(`Ignored vol[${i}] from the link: ${result}.`);
+    } else if (volumes.length >= MAX_VOLUMES) {
+      notices.add(`Ignored vol[${i}] from the link: at most ${MAX_VOLUMES} primitives.`);
+    } else {
+      volumes.push(result);
+    }
+  });
+  return { volumes, messages: notices.done() };
 }

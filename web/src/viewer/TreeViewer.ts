@@ -20,6 +20,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { TreeBuffers } from '../core/types';
+import { Foliage } from './Foliage';
 import { buildEnvelopeGeometry, buildTreeGeometry } from './geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
@@ -28,6 +29,16 @@ const BARK_COLOR = '#5b3d26';
 const LEAF_COLOR = '#4c8a34';
 const GROUND_COLOR = '#b9b3a5';
 const VIEW_DIRECTION = new Vector3(0.75, 0.32, 1).normalize();
+
+/** See [`TreeViewer.overlayHost`]. */
+export interface OverlayHost {
+  scene: Scene;
+  camera: PerspectiveCamera;
+  domElement: HTMLCanvasElement;
+  orbit: OrbitControls;
+  requestRender(): void;
+  onTree(listener: (buffers: TreeBuffers) => void): () => void;
+}
 
 /** Owns every three.js object of the viewer; mesh data lives here, never in React state. */
 export class TreeViewer {
@@ -50,7 +61,11 @@ export class TreeViewer {
     new LineBasicMaterial({ color: '#2f6fb0', transparent: true, opacity: 0.45 }),
   );
   private readonly resizeObserver: ResizeObserver;
+  private readonly foliage = new Foliage(this.scene);
   private frameRequested = false;
+  /** Called with every new tree (the growth overlay reads its markers). */
+  private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
+  private frameId = 0;
   private disposed = false;
 
   constructor(private readonly container: HTMLElement) {
@@ -107,10 +122,30 @@ export class TreeViewer {
     }
     this.envelope.geometry.dispose();
     this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
+    this.foliage.set(buffers.foliage);
+    for (const listener of this.treeListeners) listener(buffers);
     const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
     this.fitStage(sphere);
     if (frame) this.frameBounds(sphere);
     this.requestRender();
+  }
+
+  /**
+   * What an overlay (the growth editor) needs: the scene, camera, canvas and orbit controls, a
+   * render request, and a subscription to new trees (returns the unsubscribe function).
+   */
+  overlayHost(): OverlayHost {
+    return {
+      scene: this.scene,
+      camera: this.camera,
+      domElement: this.renderer.domElement,
+      orbit: this.controls,
+      requestRender: () => this.requestRender(),
+      onTree: (listener) => {
+        this.treeListeners.add(listener);
+        return () => this.treeListeners.delete(listener);
+      },
+    };
   }
 
   /** Shows or hides the crown envelope wireframe (the Show Preview parameter). */
@@ -125,6 +160,11 @@ export class TreeViewer {
     return (
       this.envelope.visible && (this.envelope.geometry.getAttribute('position')?.count ?? 0) > 0
     );
+  }
+
+  /** Number of leaves drawn (for tests). */
+  get leafCount(): number {
+    return this.foliage.count;
   }
 
   /** Geometries alive on the GPU (`renderer.info.memory.geometries`; debug hook, leak tests). */
@@ -144,6 +184,7 @@ export class TreeViewer {
     this.resizeObserver.disconnect();
     this.controls.dispose();
     this.tree?.geometry.dispose();
+    this.foliage.dispose();
     this.envelope.geometry.dispose();
     this.envelope.material.dispose();
     this.bark.dispose();
@@ -202,10 +243,17 @@ export class TreeViewer {
     this.requestRender();
   }
 
+  /** Renders immediately (uploading any new geometry to the GPU), replacing a pending frame. */
+  renderNow(): void {
+    if (this.frameRequested) cancelAnimationFrame(this.frameId);
+    this.frameRequested = false;
+    if (!this.disposed) this.renderer.render(this.scene, this.camera);
+  }
+
   private requestRender(): void {
     if (this.frameRequested) return;
     this.frameRequested = true;
-    requestAnimationFrame(() => {
+    this.frameId = requestAnimationFrame(() => {
       this.frameRequested = false;
       if (!this.disposed) this.renderer.render(this.scene, this.camera);
     });

@@ -55,7 +55,11 @@ describe('real wasm through the worker handler', () => {
     expect(maxIndex).toBeLessThan(meta.vertices);
     expect(meta.bounds.min[1]).toBeGreaterThanOrEqual(-1e-3);
     expect(meta.bounds.max[1]).toBeGreaterThan(meta.bounds.min[1]);
-    expect(sent[0]?.transfer).toHaveLength(5);
+    // Every buffer is transferred (the tree's five plus the growth markers, empty here).
+    const buffers = [result.positions, result.normals, result.uvs, result.indices, result.envelope];
+    expect(sent[0]?.transfer).toEqual(
+      expect.arrayContaining([...buffers.map((b) => b.buffer), result.markers?.buffer]),
+    );
   });
 
   it('explicit defaults give the same hash as an empty object (deterministic)', () => {
@@ -108,7 +112,9 @@ describe('real wasm through the worker handler', () => {
     expect(bounds.map(([id]) => id)).toEqual(expect.arrayContaining(['ratio', 'prune_width']));
     for (const [id, value] of bounds) {
       const { sent, handle } = collect();
-      handle({ type: 'generate', id: 1, params: { levels: 1, [id]: value } });
+      // leaves: 0: the range check is what is tested; a leaf shape at a bound may be refused
+      // by the leaf's own rules (e.g. a blade of almost no area) once foliage builds it.
+      handle({ type: 'generate', id: 1, params: { levels: 1, leaves: 0, [id]: value } });
       expect(sent[0]?.message.type, `${id}=${value}`).toBe('result');
     }
   });

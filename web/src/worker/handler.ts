@@ -1,7 +1,14 @@
 /** Worker-side request handling over an initialised wasm API (no Worker globals; testable in Node). */
-import { parseMeta, parsePresets, parseRegistry, toSylvaError } from '../core/parse';
-import type { WasmApi } from '../core/types';
-import type { ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
+import {
+  parseLeafInspection,
+  parseMeta,
+  parsePresets,
+  parseRegistry,
+  toSylvaError,
+} from '../core/parse';
+import type { FoliageBuffers, TreeMeta, WasmApi, WasmTree } from '../core/types';
+import { volumeToCore } from '../core/volumes';
+import type { LeafRequest, ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
 
 /** Sends a response, transferring the given buffers. */
 export type Post = (message: WorkerResponse, transfer: Transferable[]) => void;
@@ -13,6 +20,7 @@ export function readyMessage(wasm: WasmApi): ReadyResponse {
     registry: parseRegistry(wasm.registry_json()),
     presets: parsePresets(wasm.presets_json()),
     version: wasm.core_version(),
+    leafPresets: wasm.leaf_presets_json ? parsePresets(wasm.leaf_presets_json()) : [],
   };
 }
 
@@ -51,6 +59,63 @@ function busyWait(ms: number, now: () => number): void {
   }
 }
 
+/** The leaves of a generated tree; the texture only when the leaf shape differs from `sentHash`. */
+export function foliageOf(tree: WasmTree, meta: TreeMeta, sentHash: string): FoliageBuffers {
+  const leafHash = meta.leaf_hash ?? '';
+  const size = meta.leaf_texture;
+  const none = new Float32Array(0);
+  const rgba = tree.leaf_texture?.() ?? new Uint8Array(0);
+  const texture =
+    size && leafHash !== sentHash && rgba.length > 0
+      ? { width: size[0], height: size[1], rgba }
+      : null;
+  return {
+    positions: tree.leaf_positions?.() ?? none.slice(),
+    normals: tree.leaf_normals?.() ?? none.slice(),
+    uvs: tree.leaf_uvs?.() ?? none.slice(),
+    indices: tree.leaf_indices?.() ?? new Uint32Array(0),
+    matrices: tree.leaf_matrices?.() ?? none.slice(),
+    colors: tree.leaf_colors?.() ?? none.slice(),
+    texture,
+    // A bare tree sent no texture: the next leafy tree must send one.
+    leafHash: size ? leafHash : '',
+  };
+}
+
+function foliageTransfer(f: FoliageBuffers): Transferable[] {
+  const buffers: Transferable[] = [
+    f.positions.buffer,
+    f.normals.buffer,
+    f.uvs.buffer,
+    f.indices.buffer,
+    f.matrices.buffer,
+    f.colors.buffer,
+  ];
+  if (f.texture) buffers.push(f.texture.rgba.buffer);
+  return buffers;
+}
+
+/** Answers a leaf inspector request (an invalid parameter is a typed error, a trap is fatal). */
+function handleLeaf(
+  wasm: WasmApi,
+  request: LeafRequest,
+  post: Post,
+  die: (t: unknown) => void,
+): void {
+  try {
+    if (!wasm.leaf_inspect) throw new Error('this generator has no leaf inspector');
+    const text = wasm.leaf_inspect(
+      JSON.stringify(request.params),
+      request.step,
+      request.triangulation,
+    );
+    post({ type: 'leaf', id: request.id, ...parseLeafInspection(text) }, []);
+  } catch (thrown) {
+    if (isTrap(thrown)) die(thrown);
+    else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
+  }
+}
+
 /** Creates the request handler; after a panic it answers every request with `fatal`. */
 export function createHandler(
   wasm: WasmApi,
@@ -58,6 +123,8 @@ export function createHandler(
   now: () => number = () => performance.now(),
 ): (request: WorkerRequest) => void {
   let deadMessage: string | null = null;
+  // The leaf texture is sent once per leaf shape: the hash of the last one sent.
+  let sentLeafHash = '';
 
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
@@ -83,9 +150,28 @@ export function createHandler(
       }
       return;
     }
-    let tree;
+    if (request.type === 'leaf') {
+      handleLeaf(wasm, request, post, die);
+      return;
+    }
+    let tree: WasmTree;
     try {
-      tree = wasm.generate(JSON.stringify(request.params));
+      const input = request.volumes?.length
+        ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
+        : request.params;
+      const json = JSON.stringify(input);
+      const id = request.id;
+      let lastStep = -1;
+      // Progress while growing: at most 50 messages per request (every 2 %).
+      const progress = (fraction: number): void => {
+        const step = Math.floor(fraction * 50);
+        if (step === lastStep) return;
+        lastStep = step;
+        post({ type: 'progress', id, fraction }, []);
+      };
+      tree = wasm.generate_with_progress
+        ? wasm.generate_with_progress(json, progress)
+        : wasm.generate(json);
     } catch (thrown) {
       if (isTrap(thrown)) die(thrown);
       else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
@@ -97,14 +183,33 @@ export function createHandler(
       const uvs = tree.uvs();
       const indices = tree.indices();
       const envelope = tree.envelope_lines();
+      const markers = tree.markers ? tree.markers() : new Float32Array(0);
       const meta = parseMeta(tree.meta_json());
-      post({ type: 'result', id: request.id, positions, normals, uvs, indices, envelope, meta }, [
-        positions.buffer,
-        normals.buffer,
-        uvs.buffer,
-        indices.buffer,
-        envelope.buffer,
-      ]);
+      const foliage = foliageOf(tree, meta, sentLeafHash);
+      sentLeafHash = foliage.leafHash;
+      post(
+        {
+          type: 'result',
+          id: request.id,
+          positions,
+          normals,
+          uvs,
+          indices,
+          envelope,
+          markers,
+          meta,
+          foliage,
+        },
+        [
+          ...foliageTransfer(foliage),
+          markers.buffer,
+          positions.buffer,
+          normals.buffer,
+          uvs.buffer,
+          indices.buffer,
+          envelope.buffer,
+        ],
+      );
     } catch (thrown) {
       if (isTrap(thrown)) die(thrown);
       else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);

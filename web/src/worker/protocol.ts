@@ -1,11 +1,21 @@
 /** Typed message protocol between the main thread and the generator worker. */
-import type { ParamSpec, Params, Preset, SylvaError, TreeBuffers } from '../core/types';
+import type {
+  LeafInspection,
+  ParamSpec,
+  Params,
+  Preset,
+  SylvaError,
+  TreeBuffers,
+  VolumePrimitive,
+} from '../core/types';
 
 /** Ask the worker to generate a tree; `id` routes the answer. */
 export interface GenerateRequest {
   type: 'generate';
   id: number;
   params: Params;
+  /** Growth mode: the user's volume primitives (sent as the core's `"volumes"` key). */
+  volumes?: VolumePrimitive[];
 }
 
 /** Ask the worker to panic on purpose (tests of the recovery path). */
@@ -19,8 +29,18 @@ export interface DebugHangRequest {
   ms: number;
 }
 
+/** Ask the worker for the leaf inspector's drawing of the `leaf_*` params after growth `step` (-1: finished). */
+export interface LeafRequest {
+  type: 'leaf';
+  id: number;
+  params: Params;
+  step: number;
+  /** Draw the triangulation. */
+  triangulation: boolean;
+}
+
 /** Main thread → worker. */
-export type WorkerRequest = GenerateRequest | DebugPanicRequest | DebugHangRequest;
+export type WorkerRequest = GenerateRequest | DebugPanicRequest | DebugHangRequest | LeafRequest;
 
 /** Sent once after the wasm is initialised. */
 export interface ReadyResponse {
@@ -28,6 +48,8 @@ export interface ReadyResponse {
   registry: ParamSpec[];
   presets: Preset[];
   version: string;
+  /** The leaf presets (`leaf_presets_json`), for the leaf inspector. */
+  leafPresets?: Preset[];
 }
 
 /** A generated tree; the five arrays arrive as transferred buffers. */
@@ -43,6 +65,13 @@ export interface ErrorResponse {
   error: SylvaError;
 }
 
+/** Growth progress of request `id` (fraction 0..1 of the iteration cap), posted while busy. */
+export interface ProgressResponse {
+  type: 'progress';
+  id: number;
+  fraction: number;
+}
+
 /** The worker is unusable (wasm panic or failed init) and must be recreated. */
 export interface FatalResponse {
   type: 'fatal';
@@ -56,7 +85,19 @@ export interface IdleResponse {
 
 /** Worker → main thread. */
 export type WorkerResponse =
-  ReadyResponse | ResultResponse | ErrorResponse | FatalResponse | IdleResponse;
+  | ReadyResponse
+  | ResultResponse
+  | ErrorResponse
+  | FatalResponse
+  | IdleResponse
+  | ProgressResponse
+  | LeafResponse;
+
+/** The leaf inspector's answer to request `id`: the SVG text and counts. */
+export interface LeafResponse extends LeafInspection {
+  type: 'leaf';
+  id: number;
+}
 
 /** What `ready` carries, as seen by the app. */
 export type ReadyInfo = Omit<ReadyResponse, 'type'>;

@@ -3,7 +3,7 @@
  * the worker comes from an injected factory, so this is unit-tested with a fake). A request
  * that runs past the time limit is stopped: the worker is terminated and recreated.
  */
-import type { Params, SylvaError } from '../core/types';
+import type { Params, SylvaError, VolumePrimitive } from '../core/types';
 import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
 
 /** A started worker as the scheduler sees it. */
@@ -28,10 +28,12 @@ export interface SchedulerCallbacks {
   onError(error: SylvaError, id: number | null): void;
   /** Whether a request is in flight or pending. */
   onBusyChange(busy: boolean): void;
+  /** Growth progress (0..1) of the in-flight request `id`; null when nothing is in flight. */
+  onProgress?(fraction: number | null, id: number | null): void;
 }
 
 type Slot =
-  | { type: 'generate'; id: number; params: Params }
+  | { type: 'generate'; id: number; params: Params; volumes?: VolumePrimitive[] }
   | { type: 'debug-panic' }
   | { type: 'debug-hang'; ms: number };
 
@@ -93,11 +95,32 @@ export class GenerationScheduler {
   }
 
   /** Requests a tree; returns the request id. Supersedes any request not yet sent. */
-  request(params: Params): number {
+  request(params: Params, volumes?: VolumePrimitive[]): number {
     const id = this.nextId++;
-    this.pending = { type: 'generate', id, params };
+    this.pending = volumes?.length
+      ? { type: 'generate', id, params, volumes }
+      : { type: 'generate', id, params };
     this.pump();
     return id;
+  }
+
+  /**
+   * Cancels the generation in flight and any pending one: the worker is terminated and a fresh
+   * one started (a blocked wasm call cannot be interrupted otherwise). No error is reported and
+   * the last tree stays. Returns whether there was anything to cancel.
+   */
+  cancel(): boolean {
+    if (this.disposed) return false;
+    const had = this.inFlight?.type === 'generate' || this.pending !== null;
+    if (!had) return false;
+    this.pending = null;
+    if (this.inFlight?.type === 'generate') {
+      this.stopWorker();
+      this.callbacks.onProgress?.(null, null);
+      this.start();
+    }
+    this.updateBusy();
+    return true;
   }
 
   /** Makes the worker panic on purpose once it is idle (debug hook). */
@@ -162,6 +185,11 @@ export class GenerationScheduler {
         this.finishInFlight();
         this.callbacks.onError(response.error, response.id);
         break;
+      case 'progress':
+        if (this.inFlight?.type === 'generate' && this.inFlight.id === response.id) {
+          this.callbacks.onProgress?.(response.fraction, response.id);
+        }
+        return;
       case 'idle':
         if (this.inFlight?.type !== 'debug-hang') return;
         this.finishInFlight();
@@ -175,6 +203,7 @@ export class GenerationScheduler {
 
   private finishInFlight(): void {
     this.clearDeadline();
+    if (this.inFlight?.type === 'generate') this.callbacks.onProgress?.(null, null);
     this.inFlight = null;
   }
 

@@ -7,6 +7,7 @@
 //! `tip_radius * (tips above it)^(1/Δ)`.
 
 pub mod grid;
+pub mod primitives;
 pub mod sca;
 pub mod volume;
 
@@ -15,6 +16,7 @@ use crate::params::TreeParams;
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem};
 use glam::Vec3;
+use primitives::VolumeGroup;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
 
@@ -39,11 +41,14 @@ pub enum CrownVolumeKind {
     Ellipsoid = 0,
     /// The Crown Shape envelope as a solid of revolution.
     Envelope = 1,
+    /// The union of the user's crown-group primitives (`TreeParams::volumes`; the ellipsoid
+    /// when there is none).
+    Primitives = 2,
 }
 
 impl CrownVolumeKind {
     /// Display labels in index order.
-    pub const LABELS: [&'static str; 2] = ["Ellipsoid", "Crown Shape envelope"];
+    pub const LABELS: [&'static str; 3] = ["Ellipsoid", "Crown Shape envelope", "Primitives (user volumes)"];
 }
 
 /// The budget error for growth.
@@ -60,7 +65,7 @@ pub fn node_budget_error(max: usize) -> SylvaError {
 /// The environment described by the parameters: crown (one copy per start point), the wall.
 pub fn environment(p: &TreeParams) -> Environment {
     let crown = match p.crown_volume {
-        CrownVolumeKind::Ellipsoid => {
+        CrownVolumeKind::Ellipsoid | CrownVolumeKind::Primitives => {
             CrownVolume::Ellipsoid { base: p.crown_base, height: p.crown_height, radius: p.crown_radius }
         }
         CrownVolumeKind::Envelope => {
@@ -73,7 +78,18 @@ pub fn environment(p: &TreeParams) -> Environment {
         shadow: Vec::new(),
         exclusion: Vec::new(),
         occluders: Vec::new(),
+        crown_union: Vec::new(),
+        shadow_prims: Vec::new(),
+        exclusion_prims: Vec::new(),
     };
+    for v in &p.volumes {
+        match v.group {
+            VolumeGroup::Crown if p.crown_volume == CrownVolumeKind::Primitives => env.crown_union.push(v.shape),
+            VolumeGroup::Crown => {}
+            VolumeGroup::Shadow => env.shadow_prims.push(v.shape),
+            VolumeGroup::Exclusion => env.exclusion_prims.push(v.shape),
+        }
+    }
     if p.wall {
         // A wall on the -x side, running along z: branches stop at it and it shades the markers near it.
         let x = -p.wall_distance;
@@ -115,8 +131,14 @@ pub fn config(p: &TreeParams) -> GrowthConfig {
 
 /// Grow the tree of `p` (its nodes and markers, before thickness and meshing).
 pub fn grow(p: &TreeParams) -> Result<Growth, SylvaError> {
+    grow_with_progress(p, None)
+}
+
+/// [`grow`] reporting progress (the fraction of the iteration cap run so far, 0..1) to
+/// `progress` every [`sca::PROGRESS_EVERY`] iterations; the result is the same.
+pub fn grow_with_progress(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<Growth, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "growth");
-    sca::grow(&environment(p), &config(p), &mut rng)
+    sca::grow_with_progress(&environment(p), &config(p), &mut rng, progress)
 }
 
 /// Pipe-model radius of every node of `nodes` (parents before children): tips get `tip`,

@@ -209,8 +209,22 @@ impl State {
     }
 }
 
+/// Iterations between two progress reports of [`grow_with_progress`].
+pub const PROGRESS_EVERY: u32 = 16;
+
 /// Grow a tree. Fails only when the node budget is exceeded.
 pub fn grow(env: &Environment, cfg: &GrowthConfig, rng: &mut Rng) -> Result<Growth, SylvaError> {
+    grow_with_progress(env, cfg, rng, None)
+}
+
+/// [`grow`], calling `progress` with the fraction of the iteration cap run so far every
+/// [`PROGRESS_EVERY`] iterations (it only observes: the tree is the same with or without it).
+pub fn grow_with_progress(
+    env: &Environment,
+    cfg: &GrowthConfig,
+    rng: &mut Rng,
+    mut progress: Option<&mut dyn FnMut(f32)>,
+) -> Result<Growth, SylvaError> {
     let markers = env.sample_markers(cfg.markers, cfg.surface_bias, cfg.top_bias, rng);
     let crown = env.bounds();
     let mut lo = crown.min.min(Vec3::ZERO);
@@ -262,6 +276,11 @@ pub fn grow(env: &Environment, cfg: &GrowthConfig, rng: &mut Rng) -> Result<Grow
     let mut attracted_once = false;
     for iter in 1..=cfg.iterations {
         iterations = iter;
+        if iter % PROGRESS_EVERY == 0 {
+            if let Some(report) = progress.as_mut() {
+                report(iter as f32 / cfg.iterations as f32);
+            }
+        }
         // With markers added during growth, a pause (no live marker, nothing grew) is not the end.
         let replenishing = cfg.extra_markers_per_1000 > 0.0;
         if st.alive_count == 0 && !replenishing {

@@ -114,6 +114,86 @@ impl CrownVolume {
     }
 }
 
+/// A user primitive's shape (the SCA add-on's volume objects), centred on `centre`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Primitive {
+    /// A ball.
+    Sphere {
+        /// Centre (m).
+        centre: Vec3,
+        /// Radius (m).
+        radius: f32,
+    },
+    /// An axis-aligned box of full extents `size`.
+    Box {
+        /// Centre (m).
+        centre: Vec3,
+        /// Full width, height and depth (m).
+        size: Vec3,
+    },
+    /// An upright cylinder of `radius` and full `height`.
+    Cylinder {
+        /// Centre (m; the axis runs from `centre.y - height / 2` to `centre.y + height / 2`).
+        centre: Vec3,
+        /// Radius (m).
+        radius: f32,
+        /// Full height (m).
+        height: f32,
+    },
+}
+
+impl Primitive {
+    /// Whether `p` is inside (or on) the primitive.
+    pub fn contains(&self, p: Vec3) -> bool {
+        match *self {
+            Primitive::Sphere { centre, radius } => p.distance_squared(centre) <= radius * radius,
+            Primitive::Box { centre, size } => (p - centre).abs().cmple(0.5 * size).all(),
+            Primitive::Cylinder { centre, radius, height } => {
+                let d = p - centre;
+                d.y.abs() <= 0.5 * height && d.x * d.x + d.z * d.z <= radius * radius
+            }
+        }
+    }
+
+    /// Bounding box.
+    pub fn bounds(&self) -> Aabb {
+        let (c, h) = match *self {
+            Primitive::Sphere { centre, radius } => (centre, Vec3::splat(radius)),
+            Primitive::Box { centre, size } => (centre, 0.5 * size),
+            Primitive::Cylinder { centre, radius, height } => (centre, Vec3::new(radius, 0.5 * height, radius)),
+        };
+        Aabb { min: c - h, max: c + h }
+    }
+
+    /// Normalised depth of `p` from the centre (0 at the centre, 1 on the surface; for the
+    /// surface bias of markers in a primitive crown).
+    pub fn depth(&self, p: Vec3) -> f32 {
+        match *self {
+            Primitive::Sphere { centre, radius } => p.distance(centre) / radius,
+            Primitive::Box { centre, size } => ((p - centre).abs() / (0.5 * size)).max_element(),
+            Primitive::Cylinder { centre, radius, height } => {
+                let d = p - centre;
+                ((d.x * d.x + d.z * d.z).sqrt() / radius).max(d.y.abs() / (0.5 * height))
+            }
+        }
+    }
+
+    /// Whether the segment from `a` to `b` touches the primitive: exact for spheres and boxes,
+    /// for cylinders the closest approach to the axis within the slab, sampled every tenth.
+    pub fn hit_by_segment(&self, a: Vec3, b: Vec3) -> bool {
+        match *self {
+            Primitive::Sphere { centre, radius } => {
+                let d = b - a;
+                let len2 = d.length_squared();
+                let t = if len2 > 0.0 { ((centre - a).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
+                (a + d * t).distance_squared(centre) <= radius * radius
+            }
+            Primitive::Box { .. } => self.bounds().hit_by_segment(a, b) || self.contains(a),
+            Primitive::Cylinder { .. } => (0..=10).any(|k| self.contains(a.lerp(b, k as f32 / 10.0))),
+        }
+    }
+}
+
 /// Everything that shapes where markers are and where branches may go.
 #[derive(Clone, Debug)]
 pub struct Environment {
@@ -127,6 +207,12 @@ pub struct Environment {
     pub exclusion: Vec<Aabb>,
     /// Boxes that block light from the sky: markers that see too little sky past them are removed.
     pub occluders: Vec<Aabb>,
+    /// User crown group: when not empty, the crown is the union of these (and `crown` is unused).
+    pub crown_union: Vec<Primitive>,
+    /// User shadow group: no markers inside.
+    pub shadow_prims: Vec<Primitive>,
+    /// User exclusion group: no markers inside, and branches stop at their surface.
+    pub exclusion_prims: Vec<Primitive>,
 }
 
 /// Sky directions used for the occluder test: straight up and eight at 45° elevation.
@@ -144,8 +230,11 @@ impl Environment {
     /// Whether a marker may exist at `p`: inside a crown copy, outside every shadow box and
     /// exclusion box, and seeing at least 7 of the 9 sky directions past the occluders.
     pub fn marker_allowed(&self, p: Vec3) -> bool {
-        let in_crown = self.crown_offsets.iter().any(|o| self.crown.contains(p - *o));
+        let in_crown = self.crown_offsets.iter().any(|o| self.crown_contains(p - *o));
         if !in_crown || self.shadow.iter().chain(&self.exclusion).any(|b| b.contains(p)) {
+            return false;
+        }
+        if self.shadow_prims.iter().chain(&self.exclusion_prims).any(|v| v.contains(p)) {
             return false;
         }
         if self.occluders.is_empty() {
@@ -158,12 +247,38 @@ impl Environment {
     /// Whether a branch may grow from `a` to `b`: it stops at exclusion boxes and never grows
     /// closer to the ground than [`GROUND_CLEARANCE`] (the trunk starts on the ground).
     pub fn segment_allowed(&self, a: Vec3, b: Vec3) -> bool {
-        b.y >= GROUND_CLEARANCE && !self.exclusion.iter().any(|x| x.hit_by_segment(a, b))
+        b.y >= GROUND_CLEARANCE
+            && !self.exclusion.iter().any(|x| x.hit_by_segment(a, b))
+            && !self.exclusion_prims.iter().any(|x| x.hit_by_segment(a, b))
+    }
+
+    /// Whether `p` (relative to a crown copy's offset) is in the crown: the user crown group's
+    /// union when there is one, else the parametric crown.
+    pub fn crown_contains(&self, p: Vec3) -> bool {
+        if self.crown_union.is_empty() {
+            self.crown.contains(p)
+        } else {
+            self.crown_union.iter().any(|v| v.contains(p))
+        }
+    }
+
+    /// Bounding box of one crown copy (before its offset).
+    pub fn crown_bounds(&self) -> Aabb {
+        if self.crown_union.is_empty() {
+            return self.crown.bounds();
+        }
+        let mut out = Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
+        for v in &self.crown_union {
+            let b = v.bounds();
+            out.min = out.min.min(b.min);
+            out.max = out.max.max(b.max);
+        }
+        out
     }
 
     /// Bounding box of all crown copies.
     pub fn bounds(&self) -> Aabb {
-        let b = self.crown.bounds();
+        let b = self.crown_bounds();
         let mut out = Aabb { min: Vec3::splat(f32::INFINITY), max: Vec3::splat(f32::NEG_INFINITY) };
         for o in &self.crown_offsets {
             out.min = out.min.min(b.min + *o);
@@ -177,7 +292,7 @@ impl Environment {
     /// the bottom, 1: toward the top). Gives up after `50 * count` candidates (a crown hidden by
     /// shadow boxes yields fewer markers, never a hang).
     pub fn sample_markers(&self, count: usize, surface_bias: f32, top_bias: f32, rng: &mut Rng) -> Vec<Vec3> {
-        let b = self.crown.bounds();
+        let b = self.crown_bounds();
         let (base, height) = (b.min.y, b.max.y - b.min.y);
         let mut out = Vec::with_capacity(count);
         let mut tries = 0usize;
@@ -187,11 +302,18 @@ impl Environment {
             let local =
                 Vec3::new(rng.uniform(b.min.x, b.max.x), rng.uniform(b.min.y, b.max.y), rng.uniform(b.min.z, b.max.z));
             let keep = rng.next_f32();
-            if !self.crown.contains(local) {
-                continue;
-            }
-            let rmax = self.crown.radius_at(local.y).max(1e-6);
-            let rho = ((local.x * local.x + local.z * local.z).sqrt() / rmax).min(1.0);
+            let rho = if self.crown_union.is_empty() {
+                if !self.crown.contains(local) {
+                    continue;
+                }
+                let rmax = self.crown.radius_at(local.y).max(1e-6);
+                ((local.x * local.x + local.z * local.z).sqrt() / rmax).min(1.0)
+            } else {
+                match self.crown_union.iter().find(|v| v.contains(local)) {
+                    Some(v) => v.depth(local).min(1.0),
+                    None => continue,
+                }
+            };
             let h = ((local.y - base) / height).clamp(0.0, 1.0);
             let weight = bias(rho, surface_bias) * bias(h, top_bias);
             let p = local + o;
@@ -226,6 +348,9 @@ mod tests {
             shadow: vec![Aabb { min: Vec3::new(0.0, 0.0, -5.0), max: Vec3::new(5.0, 20.0, 5.0) }],
             exclusion: vec![],
             occluders: vec![],
+            crown_union: vec![],
+            shadow_prims: vec![],
+            exclusion_prims: vec![],
         }
     }
 
@@ -261,5 +386,37 @@ mod tests {
         assert!(!b.hit_by_ray(Vec3::new(0.0, 3.0, 0.0), Vec3::Y));
         assert!(b.hit_by_segment(Vec3::new(-2.0, 1.0, 0.0), Vec3::new(0.0, 1.0, 0.0)));
         assert!(!b.hit_by_segment(Vec3::new(-3.0, 1.0, 0.0), Vec3::new(-2.0, 1.0, 0.0)));
+    }
+
+    #[test]
+    fn primitives_contain_and_block_segments() {
+        let s = Primitive::Sphere { centre: Vec3::new(0.0, 5.0, 0.0), radius: 2.0 };
+        assert!(s.contains(Vec3::new(1.9, 5.0, 0.0)) && !s.contains(Vec3::new(1.5, 6.5, 0.0)));
+        assert!(s.hit_by_segment(Vec3::new(-5.0, 5.0, 0.0), Vec3::new(5.0, 5.0, 0.0)));
+        assert!(!s.hit_by_segment(Vec3::new(-5.0, 7.5, 0.0), Vec3::new(5.0, 7.5, 0.0)));
+        let b = Primitive::Box { centre: Vec3::new(1.0, 1.0, 1.0), size: Vec3::new(2.0, 4.0, 6.0) };
+        assert!(b.contains(Vec3::new(1.9, 2.9, 3.9)) && !b.contains(Vec3::new(2.1, 1.0, 1.0)));
+        assert!(b.hit_by_segment(Vec3::new(-3.0, 1.0, 1.0), Vec3::new(5.0, 1.0, 1.0)));
+        assert!(b.hit_by_segment(Vec3::new(1.0, 1.0, 1.0), Vec3::new(1.1, 1.0, 1.0)), "inside");
+        let c = Primitive::Cylinder { centre: Vec3::new(0.0, 2.0, 0.0), radius: 1.0, height: 2.0 };
+        assert!(c.contains(Vec3::new(0.7, 2.9, 0.7)) && !c.contains(Vec3::new(0.0, 3.1, 0.0)));
+        assert!(!c.contains(Vec3::new(0.8, 2.0, 0.8)));
+        assert!(c.hit_by_segment(Vec3::new(-2.0, 2.0, 0.0), Vec3::new(2.0, 2.0, 0.0)));
+        assert!(!c.hit_by_segment(Vec3::new(-2.0, 4.0, 0.0), Vec3::new(2.0, 4.0, 0.0)));
+        assert_eq!(c.bounds(), Aabb { min: Vec3::new(-1.0, 1.0, -1.0), max: Vec3::new(1.0, 3.0, 1.0) });
+    }
+
+    #[test]
+    fn markers_lie_in_the_crown_union_minus_shadow_primitives() {
+        let a = Primitive::Sphere { centre: Vec3::new(-2.0, 5.0, 0.0), radius: 1.5 };
+        let b = Primitive::Box { centre: Vec3::new(2.0, 5.0, 0.0), size: Vec3::splat(2.0) };
+        let shadow = Primitive::Cylinder { centre: Vec3::new(-2.0, 5.0, 0.0), radius: 0.7, height: 10.0 };
+        let e = Environment { shadow: vec![], crown_union: vec![a, b], shadow_prims: vec![shadow], ..env() };
+        let m = e.sample_markers(2000, 0.0, 0.0, &mut Rng::new(4, "t"));
+        assert!(m.len() > 1000);
+        assert!(m.iter().any(|p| a.contains(*p)) && m.iter().any(|p| b.contains(*p)));
+        for p in &m {
+            assert!((a.contains(*p) || b.contains(*p)) && !shadow.contains(*p), "{p}");
+        }
     }
 }

@@ -94,3 +94,18 @@ leaf_enum! {
         Spline = 3, "Spline";
     }
 }
+
+leaf_enum! {
+    /// Which leaf geometry the tree's foliage instances.
+    LeafLod {
+        /// The full blade while leaves × blade triangles stay under the foliage triangle
+        /// budget, else the billboard cloud, else the card.
+        Auto = 0, "Auto";
+        /// The full deformed blade (LOD0).
+        Blade = 1, "Blade";
+        /// Four quads fitted to the blade (the billboard cloud).
+        Billboards = 2, "Billboards";
+        /// One flat textured quad (for far views).
+        Card = 3, "Card";
+    }
+}

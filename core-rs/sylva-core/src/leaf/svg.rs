@@ -142,3 +142,27 @@ pub fn render(leaf: &Leaf, opts: &SvgOptions) -> String {
     s.push_str("</svg>\n");
     s
 }
+
+/// Vein segments drawn at `step` (`None`: all): tree edges plus loop links born by then.
+pub fn segments_at(leaf: &Leaf, step: Option<u32>) -> usize {
+    let s = step.unwrap_or(u32::MAX);
+    let g = &leaf.veins.graph;
+    g.nodes.iter().filter(|n| n.parent != NONE && n.born <= s).count() + g.links.iter().filter(|l| l.born <= s).count()
+}
+
+/// The inspector's answer as JSON: `{"svg", "iterations", "nodes", "links", "segments",
+/// "auxins", "triangles", "hash"}`, where `segments` is [`segments_at`] the options' step.
+pub fn inspect_json(leaf: &Leaf, opts: &SvgOptions) -> String {
+    let g = &leaf.veins.graph;
+    serde_json::json!({
+        "svg": render(leaf, opts),
+        "iterations": g.iterations,
+        "nodes": g.nodes.len(),
+        "links": g.links.len(),
+        "segments": segments_at(leaf, opts.step),
+        "auxins": leaf.veins.auxins.len(),
+        "triangles": leaf.triangulation.triangles.len(),
+        "hash": leaf.hash_hex(),
+    })
+    .to_string()
+}

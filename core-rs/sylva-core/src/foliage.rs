@@ -1,0 +1,269 @@
+//! # Foliage
+//!
+//! Leaves on the tree: one leaf mesh (the generated leaf's LOD0 from [`crate::leaf`], its
+//! billboard cloud or its flat card, see **Leaf Mesh**) drawn once per leaf through a per-instance matrix and colour.
+//!
+//! * **Where**: on every stem of the last branch level present (Weber & Penn: the leaves hang
+//!   on the deepest level), `Leaves` per whole stem shared among its split records, spread
+//!   over the part of the stem above **Leaf Start**, crowded toward the tip or the base by
+//!   **Leaf Distribution**, pulled into clumps by **Clumping**. Grown trees (space
+//!   colonization) carry them on the outermost internodes (the last three) of every shoot.
+//! * **Orientation** ("Top oriented leaves", the maple page): a leaf first leaves its stem at
+//!   **Leaf Angle**, turned about the stem by the golden angle from one leaf to the next. Its
+//!   direction `t` (the midrib, leaf `+y`) is then lowered, `t_y ← t_y (1 − t_y²)`, and
+//!   renormalised, so no leaf points straight up; finally the leaf turns about that direction
+//!   so its front (leaf `+z`) faces the sky as much as it can: the front is the component of
+//!   world up perpendicular to `t`.
+//! * **Size**: `Leaf Scale` (m, base to tip) times `1 ± Size Variation`; the width is further
+//!   times **Leaf Scale X**.
+//! * **Colour**: a per-leaf RGB tint (multiplies the leaf texture): brightness and a shift
+//!   toward yellow, by **Colour Variation**.
+//! * **Leaf Mesh**: the blade (LOD0), its billboard cloud or its card; Auto picks the finest
+//!   that keeps the whole foliage under [`AUTO_TRIANGLES`] triangles.
+//! * **Budget**: more than `max_leaves` leaves stops the generation with an error before any
+//!   instance is written.
+//!
+//! Matrices are column-major 4×4 (`f32 × 16` per leaf, the WebGL / three.js layout) mapping
+//! leaf units to metres. Randomness: the named stream `"foliage"`. Deterministic: the same
+//! skeleton and parameters give byte-identical buffers.
+
+use crate::error::SylvaError;
+use crate::growth::GrowthMode;
+use crate::leaf::{self, options::LeafLod, texture::LeafTexture, Leaf};
+use crate::math;
+use crate::mesh::TreeMesh;
+use crate::params::{registry, TreeParams};
+use crate::rng::Rng;
+use crate::skeleton::{Skeleton, Stem};
+use glam::Vec3;
+use std::sync::{Arc, Mutex};
+
+/// Internodes at the end of each grown shoot that carry leaves.
+const GROWN_LEAF_INTERNODES: usize = 3;
+/// Golden angle (degrees): the turn about the stem from one leaf to the next.
+const GOLDEN_ANGLE: f32 = 137.507_77;
+/// Leaves per clump (Clumping).
+const CLUMP: usize = 5;
+/// Leaf Mesh = Auto: the most triangles the foliage may have before a lighter leaf is used.
+pub const AUTO_TRIANGLES: u64 = 200_000;
+
+/// The leaves of one tree.
+#[derive(Clone, Debug)]
+pub struct Foliage {
+    /// The leaf geometry in leaf units (LOD0 blade or card), one `leaves` group.
+    pub mesh: TreeMesh,
+    /// Per-leaf 4×4 matrices, column-major, 16 floats per leaf.
+    pub matrices: Vec<f32>,
+    /// Per-leaf RGB tint, 3 floats per leaf.
+    pub colors: Vec<f32>,
+    /// The leaf (texture and hash), shared with the cache.
+    pub leaf: Option<Arc<Leaf>>,
+}
+
+impl Foliage {
+    /// Number of leaves.
+    pub fn count(&self) -> usize {
+        self.colors.len() / 3
+    }
+
+    /// The baked leaf colour texture, if there are leaves.
+    pub fn texture(&self) -> Option<&LeafTexture> {
+        self.leaf.as_deref().map(|l| &l.texture)
+    }
+
+    /// Hash of the leaf shape (changes exactly when the leaf parameters change), 0 when bare.
+    pub fn leaf_hash(&self) -> u64 {
+        self.leaf.as_deref().map_or(0, |l| l.hash)
+    }
+
+    /// Feeds the foliage buffers into a content hash (FNV-1a over 32-bit words).
+    pub fn hash_into(&self, mut h: u64) -> u64 {
+        let mut word = |w: u32| h = (h ^ u64::from(w)).wrapping_mul(0x0000_0100_0000_01b3);
+        let m = self.mesh.content_hash();
+        word(m as u32);
+        word((m >> 32) as u32);
+        self.matrices.iter().for_each(|v| word(v.to_bits()));
+        self.colors.iter().for_each(|v| word(v.to_bits()));
+        h
+    }
+}
+
+/// The wire values of the leaf-shape parameters (groups "Leaf", "Leaf Veins", "Leaf Surface").
+fn leaf_key(p: &TreeParams) -> Vec<u64> {
+    registry().iter().filter(|s| s.group.starts_with("Leaf")).map(|s| p.get(&s.id).unwrap_or(0.0).to_bits()).collect()
+}
+
+type LeafCache = Mutex<Option<(Vec<u64>, Arc<Leaf>)>>;
+static LEAF_CACHE: LeafCache = Mutex::new(None);
+
+/// The leaf for these parameters, generated once per leaf-parameter change (the leaf is a pure
+/// function of its parameters, so the cache never changes a result).
+pub fn cached_leaf(p: &TreeParams) -> Result<Arc<Leaf>, SylvaError> {
+    let key = leaf_key(p);
+    if let Ok(slot) = LEAF_CACHE.lock() {
+        if let Some((k, l)) = slot.as_ref() {
+            if *k == key {
+                return Ok(Arc::clone(l));
+            }
+        }
+    }
+    let l = Arc::new(leaf::generate(p)?);
+    if let Ok(mut slot) = LEAF_CACHE.lock() {
+        *slot = Some((key, Arc::clone(&l)));
+    }
+    Ok(l)
+}
+
+/// The budget error for leaves.
+pub fn budget_error(need: u64, max: u32) -> SylvaError {
+    SylvaError::Budget {
+        param: "max_leaves".into(),
+        message: format!(
+            "this tree would need {need} leaves, more than the max_leaves budget of {max}: \
+             lower Leaves or Branches, or raise Max Leaves"
+        ),
+    }
+}
+
+/// The maple page's rule: lower the direction's vertical component, `t_y ← t_y (1 − t_y²)`, and
+/// renormalise.
+pub fn lower(t: Vec3) -> Vec3 {
+    let t = Vec3::new(t.x, t.y * (1.0 - t.y * t.y), t.z);
+    math::unit_or(t, || Vec3::X)
+}
+
+/// The leaf's front after turning about its direction `t` (unit) toward the sky: world up made
+/// perpendicular to `t`; for a horizontal-free (vertical) `t`, any perpendicular.
+pub fn face_up(t: Vec3) -> Vec3 {
+    math::unit_or(Vec3::Y - t * t.y, || math::unit_or(t.cross(Vec3::X), || Vec3::Z))
+}
+
+/// `v` rotated by `angle` (radians) about the unit `axis` (Rodrigues, portable math).
+fn rotate(v: Vec3, axis: Vec3, angle: f32) -> Vec3 {
+    let (s, c) = (math::sin(angle), math::cos(angle));
+    v * c + axis.cross(v) * s + axis * axis.dot(v) * (1.0 - c)
+}
+
+/// Where leaves sit along one stem: `(stem index, first t, last t, count)`.
+fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
+    let stems = &skeleton.stems;
+    let n = p.leaves as f32;
+    if p.leaves == 0 || stems.is_empty() {
+        return Vec::new();
+    }
+    if p.growth_mode == GrowthMode::SpaceColonization {
+        return stems
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.level > 0 && s.points.len() >= 2)
+            .map(|(i, s)| {
+                let segs = s.points.len() - 1;
+                let first = segs.saturating_sub(GROWN_LEAF_INTERNODES) as f32 / segs as f32;
+                (i, first.max(p.foliage_start), 1.0, p.leaves as usize)
+            })
+            .collect();
+    }
+    let last = stems.iter().map(|s| s.level).max().unwrap_or(0);
+    let mut carry = 0.0f32;
+    stems
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.level == last && s.length > 0.0)
+        .filter_map(|(i, s)| {
+            // A split record carries its share of the whole stem's leaves (error diffusion).
+            let share = n * (s.length / s.chain_length.max(s.length)) + carry;
+            let count = share.round().max(0.0);
+            carry = share - count;
+            (count > 0.0).then_some((i, p.foliage_start, 1.0, count as usize))
+        })
+        .collect()
+}
+
+/// Per-leaf frame: position, direction (midrib) and front.
+fn leaf_frame(stem: &Stem, t: f32, k: usize, foliage_angle: f32) -> (Vec3, Vec3, Vec3) {
+    let (pos, tangent) = stem.sample(t);
+    let side0 = math::unit_or(stem.base_normal - tangent * tangent.dot(stem.base_normal), || {
+        math::unit_or(tangent.cross(Vec3::Y), || tangent.cross(Vec3::X).normalize())
+    });
+    let side = rotate(side0, tangent, math::rad(GOLDEN_ANGLE * k as f32));
+    let a = math::rad(foliage_angle);
+    let dir = math::unit_or(tangent * math::cos(a) + side * math::sin(a), || tangent);
+    (pos, dir, side)
+}
+
+/// One leaf's matrix: leaf `x` → side · width, `y` → direction · length, `z` → front · length.
+fn push_matrix(out: &mut Vec<f32>, pos: Vec3, dir: Vec3, front: Vec3, len: f32, width: f32) {
+    let x = dir.cross(front) * width;
+    let y = dir * len;
+    let z = front * len;
+    out.extend_from_slice(&[x.x, x.y, x.z, 0.0, y.x, y.y, y.z, 0.0, z.x, z.y, z.z, 0.0, pos.x, pos.y, pos.z, 1.0]);
+}
+
+/// Places the leaves on `skeleton`.
+pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
+    let spans = spans(skeleton, p);
+    let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
+    let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
+    if need > u64::from(p.max_leaves) {
+        return Err(budget_error(need, p.max_leaves));
+    }
+    if need == 0 {
+        return Ok(Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None });
+    }
+    let leaf = cached_leaf(p)?;
+    let mesh = match p.foliage_lod {
+        LeafLod::Blade => leaf.mesh.clone(),
+        LeafLod::Billboards => leaf.lod.billboards.clone(),
+        LeafLod::Card => leaf.lod.card.clone(),
+        LeafLod::Auto => {
+            let fits = |m: &TreeMesh| (m.triangle_count() as u64) * need <= AUTO_TRIANGLES;
+            [&leaf.mesh, &leaf.lod.billboards].into_iter().find(|m| fits(m)).unwrap_or(&leaf.lod.card).clone()
+        }
+    };
+    let mut rng = Rng::new(u64::from(p.seed), "foliage");
+    let need_n = need as usize;
+    let mut matrices = Vec::with_capacity(need_n * 16);
+    let mut colors = Vec::with_capacity(need_n * 3);
+    let bias = math::pow(2.0, -2.0 * p.foliage_distribution);
+    let mut k = 0usize;
+    for &(si, t0, t1, count) in &spans {
+        let stem = &skeleton.stems[si];
+        let mut clump_t = 0.0f32;
+        for j in 0..count {
+            let mut u = (j as f32 + 0.5 + 0.5 * rng.var(0.5)) / count as f32;
+            if p.foliage_clumping > 0.0 {
+                // Every CLUMP leaves share a clump centre; Clumping pulls them onto it.
+                if j % CLUMP == 0 {
+                    let mid = ((j + CLUMP / 2).min(count - 1) as f32 + 0.5) / count as f32;
+                    clump_t = mid;
+                }
+                u += (clump_t - u) * p.foliage_clumping;
+            }
+            let u = math::pow(u.clamp(0.0, 1.0), bias);
+            let t = t0 + (t1 - t0) * u;
+            let (pos, dir, side) = leaf_frame(stem, t, k, p.foliage_angle);
+            k += 1;
+            let dirs: &[Vec3] = if p.foliage_twigs3 {
+                &[
+                    dir,
+                    rotate(dir, dir.cross(side).normalize_or_zero(), 0.6),
+                    rotate(dir, dir.cross(side).normalize_or_zero(), -0.6),
+                ]
+            } else {
+                &[dir]
+            };
+            for &d in dirs {
+                let d = lower(d);
+                let front = face_up(d);
+                let s = (1.0 + rng.var(p.foliage_size_v)).max(0.05);
+                let len = p.foliage_scale * s;
+                push_matrix(&mut matrices, pos, d, front, len, len * p.foliage_scale_x);
+                let v = p.foliage_color_v;
+                let b = 1.0 + rng.var(0.5 * v);
+                let yellow = 0.5 * v * rng.next_f32();
+                colors.extend_from_slice(&[b * (1.0 + yellow), b * (1.0 + 0.4 * yellow), b * (1.0 - yellow)]);
+            }
+        }
+    }
+    Ok(Foliage { mesh, matrices, colors, leaf: Some(leaf) })
+}

@@ -1,0 +1,218 @@
+/**
+ * The leaf inspector: the core's 2D SVG of the current leaf (outline, margin, triangulation,
+ * auxin sources, veins with pipe widths), a step slider replaying venation growth, an
+ * Open/Closed switch, a leaf preset picker, every leaf parameter, and Export SVG.
+ *
+ * The SVG text comes from the worker; it is parsed with DOMParser as `image/svg+xml` and the
+ * resulting `<svg>` element is adopted into the page (no innerHTML; the SVG has no scripts or
+ * style attributes, so the CSP holds).
+ */
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { groupParams, normalizeValue } from '../core/params';
+import type { LeafInspection, ParamSpec, Params, Preset, SylvaError } from '../core/types';
+import { createModuleWorker } from '../createWorker';
+import { LeafClient } from '../leaf/leafClient';
+import { ParamControl } from './ParamControl';
+
+/** Registry groups the inspector edits. */
+export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
+
+interface Props {
+  registry: readonly ParamSpec[];
+  params: Params;
+  onChange: (id: string, value: number) => void;
+  /** Applies several values at once (a leaf preset). */
+  onChangeMany: (values: Params) => void;
+}
+
+/** Only the leaf parameters (the leaf does not depend on the others). */
+function leafParams(registry: readonly ParamSpec[], params: Params): Params {
+  const out: Params = {};
+  for (const spec of registry) {
+    const v = params[spec.id];
+    if (LEAF_GROUPS.includes(spec.group) && v !== undefined) out[spec.id] = v;
+  }
+  return out;
+}
+
+/** Starts a download of `text` as `name` (Blob + object URL). */
+function download(text: string, name: string): void {
+  const url = URL.createObjectURL(new Blob([text], { type: 'image/svg+xml' }));
+  const a = document.createElement('a');
+  a.href = url;
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 1000);
+}
+
+/** The inspector panel. */
+export function LeafInspector({ registry, params, onChange, onChangeMany }: Props) {
+  const clientRef = useRef<LeafClient | null>(null);
+  const viewRef = useRef<HTMLDivElement | null>(null);
+  const [leaf, setLeaf] = useState<LeafInspection | null>(null);
+  const [error, setError] = useState<SylvaError | null>(null);
+  const [presets, setPresets] = useState<Preset[]>([]);
+  const [step, setStep] = useState(-1);
+  const [triangulation, setTriangulation] = useState(false);
+  const [ready, setReady] = useState(false);
+
+  useEffect(() => {
+    const client = new LeafClient(createModuleWorker, {
+      onLeaf: (next) => {
+        setLeaf(next);
+        setError(null);
+      },
+      onError: setError,
+      onPresets: (list) => {
+        setPresets(list);
+        setReady(true);
+      },
+    });
+    clientRef.current = client;
+    return () => {
+      client.dispose();
+      clientRef.current = null;
+    };
+  }, []);
+
+  const leafValues = useMemo(() => leafParams(registry, params), [registry, params]);
+  const key = JSON.stringify(leafValues);
+  useEffect(() => {
+    if (ready) clientRef.current?.request(JSON.parse(key) as Params, step, triangulation);
+  }, [key, step, triangulation, ready]);
+
+  // Adopt the parsed SVG element into the view.
+  useEffect(() => {
+    const view = viewRef.current;
+    if (!view || !leaf) return;
+    const doc = new DOMParser().parseFromString(leaf.svg, 'image/svg+xml');
+    const svg = doc.documentElement;
+    if (svg.nodeName !== 'svg') return;
+    svg.setAttribute('data-testid', 'leaf-svg');
+    svg.removeAttribute('width');
+    svg.removeAttribute('height');
+    view.replaceChildren(document.importNode(svg, true));
+  }, [leaf]);
+
+  const specs = registry.filter((s) => LEAF_GROUPS.includes(s.group));
+  const groups = groupParams(specs);
+  const venation = registry.find((s) => s.id === 'leaf_venation');
+  const iterations = leaf?.iterations ?? 0;
+  const shownStep = step < 0 ? iterations : Math.min(step, iterations);
+
+  const applyLeafPreset = (name: string) => {
+    const preset = presets.find((p) => p.name === name);
+    if (!preset) return;
+    const values: Params = {};
+    for (const spec of specs) {
+      const v = preset.values[spec.id];
+      values[spec.id] = v === undefined ? spec.default : normalizeValue(spec, v);
+    }
+    setStep(-1);
+    onChangeMany(values);
+  };
+
+  return (
+    <aside
+      className="panel leaf-inspector"
+      aria-label="Leaf inspector"
+      data-testid="leaf-inspector"
+    >
+      <div className="leaf-view" ref={viewRef} />
+      <div className="leaf-counts" data-testid="leaf-counts">
+        {leaf
+          ? `${leaf.segments} vein segments · ${leaf.nodes} nodes · ${leaf.links} loops · ${leaf.auxins} sources · ${leaf.triangles} triangles`
+          : 'Growing the leaf…'}
+      </div>
+      {error ? (
+        <div className="leaf-error" role="alert">
+          {error.message}
+        </div>
+      ) : null}
+      <label className="row">
+        Leaf preset
+        <select
+          data-testid="leaf-preset"
+          defaultValue=""
+          onChange={(e) => applyLeafPreset(e.currentTarget.value)}
+        >
+          <option value="" disabled>
+            Choose…
+          </option>
+          {presets.map((p) => (
+            <option key={p.name} value={p.name} title={p.description}>
+              {p.label}
+            </option>
+          ))}
+        </select>
+      </label>
+      <label className="row">
+        Growth step {shownStep} of {iterations}
+        <input
+          type="range"
+          data-testid="leaf-step"
+          min={0}
+          max={Math.max(iterations, 1)}
+          step={1}
+          value={shownStep}
+          onChange={(e) => {
+            const v = Number(e.currentTarget.value);
+            setStep(v >= iterations ? -1 : v);
+          }}
+        />
+      </label>
+      <div className="row">
+        {venation ? (
+          <span role="group" aria-label="Venation">
+            {['Open', 'Closed'].map((label) => {
+              const index = venation.options?.indexOf(label) ?? -1;
+              return (
+                <button
+                  key={label}
+                  type="button"
+                  data-testid={`leaf-${label.toLowerCase()}`}
+                  aria-pressed={params.leaf_venation === index}
+                  onClick={() => onChange('leaf_venation', index)}
+                >
+                  {label}
+                </button>
+              );
+            })}
+          </span>
+        ) : null}
+        <label>
+          <input
+            type="checkbox"
+            data-testid="leaf-triangulation"
+            checked={triangulation}
+            onChange={(e) => setTriangulation(e.currentTarget.checked)}
+          />{' '}
+          Triangulation
+        </label>
+        <button
+          type="button"
+          data-testid="leaf-export"
+          disabled={!leaf}
+          onClick={() => leaf && download(leaf.svg, `sylva-leaf-${leaf.hash}.svg`)}
+        >
+          Export SVG
+        </button>
+      </div>
+      {groups.map(([group, list]) => (
+        <details key={group} className="group" open={group === 'Leaf'} data-group={group}>
+          <summary>{group}</summary>
+          {list.map((spec) => (
+            <ParamControl
+              key={spec.id}
+              spec={spec}
+              value={params[spec.id] ?? spec.default}
+              onChange={onChange}
+            />
+          ))}
+        </details>
+      ))}
+    </aside>
+  );
+}
