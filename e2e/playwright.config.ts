@@ -2,7 +2,9 @@
 import { defineConfig, devices } from '@playwright/test';
 import { fileURLToPath } from 'node:url';
 
-const PORT = 4317;
+// SYLVA_E2E_PORT / SYLVA_DIST let several builds be tested side by side (default: web/dist on 4317).
+const PORT = Number(process.env.SYLVA_E2E_PORT ?? 4317);
+const DIST = process.env.SYLVA_DIST ? ` --outDir ${process.env.SYLVA_DIST}` : '';
 const repoRoot = fileURLToPath(new URL('..', import.meta.url));
 
 export default defineConfig({
@@ -46,7 +48,7 @@ export default defineConfig({
   ],
   webServer: {
     // web/dist must already be built (`npm run build -w web`); this only serves it.
-    command: `npm run preview -w web -- --port ${PORT} --strictPort`,
+    command: `npm run preview -w web -- --port ${PORT} --strictPort${DIST}`,
     cwd: repoRoot,
     url: `http://127.0.0.1:${PORT}/`,
     reuseExistingServer: !process.env.CI,

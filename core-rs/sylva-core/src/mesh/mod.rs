@@ -48,6 +48,15 @@ pub struct Bounds {
 /// | `normals`   | f32  | 3          | `nx, ny, nz`, unit length, pointing out of the surface     |
 /// | `uvs`       | f32  | 2          | bark: `u` = around the stem 0..1 (seam duplicated at u = 1), `v` = along the stem, continuous, 1 unit per circumference |
 ///
+/// | `wind`      | f32  | 8 (or none)| `pivot_x, pivot_y, pivot_z, level, phase, stiffness, distance, radius` (see below) |
+///
+/// `wind` is either empty or holds 8 floats per vertex for wind animation and exporters:
+/// `pivot` = base point of the stem the vertex belongs to (m), `level` = branch level (0 trunk,
+/// 1, 2, 3 as a float), `phase` = 0..1, one random value per stem (stream `"wind"`), `stiffness` =
+/// 0..1 (1 = rigid trunk base, toward 0 on thin twigs; from the local radius relative to the trunk
+/// base radius), `distance` = path length from the root to the vertex's ring along the stems (m),
+/// `radius` = local stem radius at the ring (m).
+///
 /// `indices` (u32) hold triangles, three per triangle, counter-clockwise seen from outside;
 /// `groups` split them by material. 32-bit indices: trees pass 65,535 vertices easily.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -62,7 +71,12 @@ pub struct TreeMesh {
     pub indices: Vec<u32>,
     /// Index ranges per material.
     pub groups: Vec<MeshGroup>,
+    /// Wind data, 8 floats per vertex (layout above), or empty.
+    pub wind: Vec<f32>,
 }
+
+/// Floats per vertex in [`TreeMesh::wind`].
+pub const WIND_STRIDE: usize = 8;
 
 impl TreeMesh {
     /// Number of vertices.
@@ -91,7 +105,7 @@ impl TreeMesh {
         Bounds { min, max }
     }
 
-    /// Content hash of every buffer (positions, normals, uvs, indices, groups): equal hashes
+    /// Content hash of every buffer (positions, normals, uvs, indices, wind, groups): equal hashes
     /// mean byte-identical meshes. Four interleaved 64-bit FNV-1a-style lanes over pairs of
     /// 32-bit words, then mixed; the value is part of the golden tests, so change it only on purpose.
     pub fn content_hash(&self) -> u64 {
@@ -100,6 +114,9 @@ impl TreeMesh {
         h.words(&self.normals, f32::to_bits);
         h.words(&self.uvs, f32::to_bits);
         h.words(&self.indices, |i| i);
+        if !self.wind.is_empty() {
+            h.words(&self.wind, f32::to_bits);
+        }
         for g in &self.groups {
             h.words(&[g.material as u32, g.start, g.count], |w| w);
         }
@@ -194,6 +211,7 @@ impl MeshBuilder {
                 uvs: Vec::with_capacity(vertices * 2),
                 indices: Vec::with_capacity(indices),
                 groups: Vec::new(),
+                wind: Vec::new(),
             },
         }
     }
