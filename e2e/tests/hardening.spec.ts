@@ -174,128 +174,98 @@ const DEFAULT = '?v=1';
 const SEED5 = '?v=1&seed=5';
 const bad = (key: string): RegExp => new RegExp(`Ignored "${key}" from the link`);
 
+/** A link whose bad `key` is reported and ignored: the default tree. */
+const ignored = (name: string, query: string, key: string): HostileCase => ({
+  name,
+  query,
+  notice: bad(key),
+  same: DEFAULT,
+});
+/** A link that shows `notice` in the banner and draws the tree of `same`. */
+const noticed = (name: string, query: string, notice: RegExp, same = DEFAULT): HostileCase => ({
+  name,
+  query,
+  notice,
+  same,
+});
+/** A link whose junk is dropped without a notice: the tree of `same`. */
+const silent = (name: string, query: string, same: string): HostileCase => ({
+  name,
+  query,
+  notice: null,
+  same,
+});
+
+/** Eight bad values at once: the banner lists six and counts the rest. */
+const EIGHT_BAD = ['scale', 'seed', 'levels', 'ratio', 'l1_length', 'l2_length', 'flare', 'lobes']
+  .map((k) => `${k}=x`)
+  .join('&');
+
 const HOSTILE: HostileCase[] = [
-  { name: 'huge number', query: '?v=1&scale=1e308', notice: bad('scale'), same: DEFAULT },
-  { name: 'huge negative', query: '?v=1&scale=-1e308', notice: bad('scale'), same: DEFAULT },
-  { name: 'overflow to Infinity', query: '?v=1&scale=1e999', notice: bad('scale'), same: DEFAULT },
-  { name: 'underflow to 0', query: '?v=1&scale=1e-400', notice: bad('scale'), same: DEFAULT },
-  { name: 'NaN', query: '?v=1&l1_length=NaN', notice: bad('l1_length'), same: DEFAULT },
-  { name: 'Infinity', query: '?v=1&l1_length=Infinity', notice: bad('l1_length'), same: DEFAULT },
-  { name: '-Infinity', query: '?v=1&l1_length=-Infinity', notice: bad('l1_length'), same: DEFAULT },
-  {
-    name: 'negative count',
-    query: '?v=1&l1_branches=-5',
-    notice: bad('l1_branches'),
-    same: DEFAULT,
-  },
-  {
-    name: 'fractional count',
-    query: '?v=1&l1_branches=2.5',
-    notice: bad('l1_branches'),
-    same: DEFAULT,
-  },
-  { name: 'levels 0', query: '?v=1&levels=0', notice: bad('levels'), same: DEFAULT },
-  {
-    name: '20-digit levels',
-    query: '?v=1&levels=99999999999999999999',
-    notice: bad('levels'),
-    same: DEFAULT,
-  },
-  { name: 'enum out of range', query: '?v=1&shape=8', notice: bad('shape'), same: DEFAULT },
-  { name: 'bool 2', query: '?v=1&show_preview=2', notice: bad('show_preview'), same: DEFAULT },
-  {
-    name: 'budget 1e12',
-    query: '?v=1&max_vertices=1e12',
-    notice: bad('max_vertices'),
-    same: DEFAULT,
-  },
-  { name: 'hex', query: '?v=1&seed=0x10', notice: bad('seed'), same: DEFAULT },
-  { name: 'unknown version', query: '?v=999&seed=5', notice: /version "999"/, same: DEFAULT },
-  { name: 'version 0', query: '?v=0&seed=5', notice: /version "0"/, same: DEFAULT },
-  { name: 'version 1.0', query: '?v=1.0&seed=5', notice: /version "1\.0"/, same: DEFAULT },
-  { name: 'emoji version', query: '?v=%F0%9F%8C%B3&seed=5', notice: /version/, same: DEFAULT },
-  {
-    name: 'script value',
-    query: `?v=1&seed=${encodeURIComponent('<script>window.__xss=1</script>')}`,
-    notice: bad('seed'),
-    same: DEFAULT,
-  },
-  {
-    name: 'img onerror value',
-    query: `?v=1&scale=${encodeURIComponent('"><img src=x onerror="window.__xss=1">')}`,
-    notice: bad('scale'),
-    same: DEFAULT,
-  },
-  {
-    name: 'javascript: value',
-    query: `?v=1&seed=${encodeURIComponent('javascript:window.__xss=1')}`,
-    notice: bad('seed'),
-    same: DEFAULT,
-  },
-  {
-    name: 'script key',
-    query: `?v=1&${encodeURIComponent('<script>window.__xss=1</script>')}=1&seed=5`,
-    notice: null,
-    same: SEED5,
-  },
-  {
-    name: 'statement injection',
-    query: '?v=1&seed=5;window.__xss=1',
-    notice: bad('seed'),
-    same: DEFAULT,
-  },
-  {
-    name: '100 kB value',
-    query: `?v=1&seed=${'9'.repeat(100_000)}`,
-    notice: /too long/,
-    same: DEFAULT,
-  },
-  { name: 'lone %', query: '?v=1&seed=%', notice: bad('seed'), same: DEFAULT },
-  { name: 'truncated UTF-8', query: '?v=1&seed=%E0%A4%A', notice: bad('seed'), same: DEFAULT },
-  { name: 'encoded surrogate', query: '?v=1&seed=%ED%A0%80', notice: bad('seed'), same: DEFAULT },
-  { name: 'broken key encoding', query: '?v=1&%ZZ=1&seed=5', notice: /malformed/, same: SEED5 },
-  { name: 'duplicated key', query: '?v=1&seed=5&seed=6', notice: /repeated "seed"/, same: SEED5 },
-  { name: 'empty key', query: '?v=1&=5&seed=5', notice: null, same: SEED5 },
-  { name: 'stray separators', query: '?&&v=1&&&seed=5&&', notice: null, same: SEED5 },
-  {
-    name: 'prototype keys',
-    query: '?v=1&__proto__=1&constructor=2&__proto__%5Bx%5D=3&seed=5',
-    notice: null,
-    same: SEED5,
-  },
-  { name: 'wrong-case key', query: '?v=1&SEED=5', notice: null, same: DEFAULT },
-  { name: 'full-width digit', query: '?v=1&seed=%EF%BC%95', notice: bad('seed'), same: DEFAULT },
-  { name: 'Arabic-Indic digit', query: '?v=1&seed=%D9%A5', notice: bad('seed'), same: DEFAULT },
-  { name: 'null byte after', query: '?v=1&seed=5%00', notice: bad('seed'), same: DEFAULT },
-  { name: 'null byte alone', query: '?v=1&seed=%00', notice: bad('seed'), same: DEFAULT },
-  { name: 'bidi override', query: '?v=1&seed=%E2%80%AE5', notice: bad('seed'), same: DEFAULT },
-  { name: 'leading space (+)', query: '?v=1&seed=+5', notice: bad('seed'), same: DEFAULT },
-  {
-    name: 'hostile debug flag',
-    query: '?v=1&seed=5&debug=%3Cscript%3E',
-    notice: null,
-    same: SEED5,
-  },
-  {
-    name: 'junk fragment',
-    query: '?v=1&seed=5#%3Cscript%3Ewindow.__xss=1',
-    notice: null,
-    same: SEED5,
-  },
-  {
-    name: '300 unknown keys',
-    query: `?v=1&${Array.from({ length: 300 }, (_, i) => `k${i}=${i}`).join('&')}&seed=5`,
-    notice: null,
-    same: SEED5,
-  },
-  {
-    name: 'many bad values (capped)',
-    query: `?v=1&${['scale', 'seed', 'levels', 'ratio', 'l1_length', 'l2_length', 'flare', 'lobes']
-      .map((k) => `${k}=x`)
-      .join('&')}`,
-    notice: /…and 2 more problems/,
-    same: DEFAULT,
-  },
+  ignored('huge number', '?v=1&scale=1e308', 'scale'),
+  ignored('huge negative', '?v=1&scale=-1e308', 'scale'),
+  ignored('overflow to Infinity', '?v=1&scale=1e999', 'scale'),
+  ignored('underflow to 0', '?v=1&scale=1e-400', 'scale'),
+  ignored('NaN', '?v=1&l1_length=NaN', 'l1_length'),
+  ignored('Infinity', '?v=1&l1_length=Infinity', 'l1_length'),
+  ignored('-Infinity', '?v=1&l1_length=-Infinity', 'l1_length'),
+  ignored('negative count', '?v=1&l1_branches=-5', 'l1_branches'),
+  ignored('fractional count', '?v=1&l1_branches=2.5', 'l1_branches'),
+  ignored('levels 0', '?v=1&levels=0', 'levels'),
+  ignored('20-digit levels', '?v=1&levels=99999999999999999999', 'levels'),
+  ignored('enum out of range', '?v=1&shape=8', 'shape'),
+  ignored('bool 2', '?v=1&show_preview=2', 'show_preview'),
+  ignored('budget 1e12', '?v=1&max_vertices=1e12', 'max_vertices'),
+  ignored('hex', '?v=1&seed=0x10', 'seed'),
+  noticed('unknown version', '?v=999&seed=5', /version "999"/),
+  noticed('version 0', '?v=0&seed=5', /version "0"/),
+  noticed('version 1.0', '?v=1.0&seed=5', /version "1\.0"/),
+  noticed('emoji version', '?v=%F0%9F%8C%B3&seed=5', /version/),
+  ignored(
+    'script value',
+    `?v=1&seed=${encodeURIComponent('<script>window.__xss=1</script>')}`,
+    'seed',
+  ),
+  ignored(
+    'img onerror value',
+    `?v=1&scale=${encodeURIComponent('"><img src=x onerror="window.__xss=1">')}`,
+    'scale',
+  ),
+  ignored(
+    'javascript: value',
+    `?v=1&seed=${encodeURIComponent('javascript:window.__xss=1')}`,
+    'seed',
+  ),
+  silent(
+    'script key',
+    `?v=1&${encodeURIComponent('<script>window.__xss=1</script>')}=1&seed=5`,
+    SEED5,
+  ),
+  ignored('statement injection', '?v=1&seed=5;window.__xss=1', 'seed'),
+  noticed('100 kB value', `?v=1&seed=${'9'.repeat(100_000)}`, /too long/),
+  ignored('lone %', '?v=1&seed=%', 'seed'),
+  ignored('truncated UTF-8', '?v=1&seed=%E0%A4%A', 'seed'),
+  ignored('encoded surrogate', '?v=1&seed=%ED%A0%80', 'seed'),
+  noticed('broken key encoding', '?v=1&%ZZ=1&seed=5', /malformed/, SEED5),
+  noticed('duplicated key', '?v=1&seed=5&seed=6', /repeated "seed"/, SEED5),
+  silent('empty key', '?v=1&=5&seed=5', SEED5),
+  silent('stray separators', '?&&v=1&&&seed=5&&', SEED5),
+  silent('prototype keys', '?v=1&__proto__=1&constructor=2&__proto__%5Bx%5D=3&seed=5', SEED5),
+  silent('wrong-case key', '?v=1&SEED=5', DEFAULT),
+  ignored('full-width digit', '?v=1&seed=%EF%BC%95', 'seed'),
+  ignored('Arabic-Indic digit', '?v=1&seed=%D9%A5', 'seed'),
+  ignored('null byte after', '?v=1&seed=5%00', 'seed'),
+  ignored('null byte alone', '?v=1&seed=%00', 'seed'),
+  ignored('bidi override', '?v=1&seed=%E2%80%AE5', 'seed'),
+  ignored('leading space (+)', '?v=1&seed=+5', 'seed'),
+  silent('hostile debug flag', '?v=1&seed=5&debug=%3Cscript%3E', SEED5),
+  silent('junk fragment', '?v=1&seed=5#%3Cscript%3Ewindow.__xss=1', SEED5),
+  silent(
+    '300 unknown keys',
+    `?v=1&${Array.from({ length: 300 }, (_, i) => `k${i}=${i}`).join('&')}&seed=5`,
+    SEED5,
+  ),
+  noticed('many bad values (capped)', `?v=1&${EIGHT_BAD}`, /…and 2 more problems/),
 ];
 
 /** Opens each link of `cases` in `page` and checks it against the reference trees. */
@@ -355,7 +325,9 @@ test.describe('hostile share links', () => {
       (url) => url.search.length > 8000,
       async (route) =>
         route.fulfill({
-          response: await route.fetch({ url: new URL('/', route.request().url()).href }),
+          response: await route.fetch({
+            url: new URL('/', route.request().url()).href,
+          }),
         }),
     );
     const reference = new Map<string, string>();

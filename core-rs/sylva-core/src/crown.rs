@@ -4,65 +4,31 @@
 //! preview in the app draws [`envelope_profile`], which calls this very function.
 
 use crate::math::{sin, PI};
-use serde::Serialize;
+use crate::param_enum::param_enum;
 
-/// The eight crown envelopes of the Crown Shape guide, in Weber & Penn's numbering.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub enum CrownShape {
-    /// Christmas tree: longest branches at the crown base (fir, spruce).
-    Conical = 0,
-    /// Ball: longest in the middle (oak, maple).
-    Spherical = 1,
-    /// Dome: longest at the base, rounding to the top (umbrella trees).
-    Hemispherical = 2,
-    /// All branches the same length (the default).
-    Cylindrical = 3,
-    /// A gentle taper from base to top.
-    TaperedCylindrical = 4,
-    /// Widest at 70% of the crown from the top, pointed tip (cedar, cypress).
-    Flame = 5,
-    /// Widest at the top: fan or mushroom.
-    InverseConical = 6,
-    /// A softer flame.
-    TendFlame = 7,
+param_enum! {
+    /// The eight crown envelopes of the Crown Shape guide, in Weber & Penn's numbering.
+    CrownShape {
+        /// Christmas tree: longest branches at the crown base (fir, spruce).
+        Conical = 0, "Conical";
+        /// Ball: longest in the middle (oak, maple).
+        Spherical = 1, "Spherical";
+        /// Dome: longest at the base, rounding to the top (umbrella trees).
+        Hemispherical = 2, "Hemispherical";
+        /// All branches the same length (the default).
+        Cylindrical = 3, "Cylindrical";
+        /// A gentle taper from base to top.
+        TaperedCylindrical = 4, "Tapered Cylindrical";
+        /// Widest at 70% of the crown from the top, pointed tip (cedar, cypress).
+        Flame = 5, "Flame";
+        /// Widest at the top: fan or mushroom.
+        InverseConical = 6, "Inverse Conical";
+        /// A softer flame.
+        TendFlame = 7, "Tend Flame";
+    }
 }
 
 impl CrownShape {
-    /// All shapes in index order.
-    pub const ALL: [CrownShape; 8] = [
-        CrownShape::Conical,
-        CrownShape::Spherical,
-        CrownShape::Hemispherical,
-        CrownShape::Cylindrical,
-        CrownShape::TaperedCylindrical,
-        CrownShape::Flame,
-        CrownShape::InverseConical,
-        CrownShape::TendFlame,
-    ];
-    /// Display labels in index order (the registry's enum options).
-    pub const LABELS: [&'static str; 8] = [
-        "Conical",
-        "Spherical",
-        "Hemispherical",
-        "Cylindrical",
-        "Tapered Cylindrical",
-        "Flame",
-        "Inverse Conical",
-        "Tend Flame",
-    ];
-
-    /// The shape with this index (clamped into range).
-    pub fn from_index(i: usize) -> CrownShape {
-        CrownShape::ALL[i.min(7)]
-    }
-
-    /// Look a shape up by label, case- and separator-insensitively (`"inverse-conical"` works).
-    pub fn from_name(name: &str) -> Option<CrownShape> {
-        let norm = |s: &str| s.chars().filter(|c| c.is_ascii_alphanumeric()).collect::<String>().to_ascii_lowercase();
-        let want = norm(name);
-        CrownShape::LABELS.iter().position(|l| norm(l) == want).map(CrownShape::from_index)
-    }
-
     /// Weber & Penn's ShapeRatio(shape, r) for `r` in [0, 1] (1 = crown base, 0 = top).
     pub fn ratio(self, r: f32) -> f32 {
         let r = r.clamp(0.0, 1.0);

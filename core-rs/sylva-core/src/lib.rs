@@ -23,6 +23,7 @@ pub mod growth;
 pub mod leaf;
 pub mod math;
 pub mod mesh;
+pub mod param_enum;
 pub mod params;
 pub mod presets;
 pub mod rng;

@@ -154,55 +154,6 @@ impl ParamValue for bool {
         v != 0.0
     }
 }
-impl ParamValue for CrownShape {
-    const KIND: ParamKind = ParamKind::Enum;
-    fn to_wire(self) -> f64 {
-        f64::from(self as u8)
-    }
-    fn from_wire(v: f64) -> Self {
-        CrownShape::from_index(v as usize)
-    }
-    fn options() -> Option<Vec<String>> {
-        Some(CrownShape::LABELS.iter().map(|s| s.to_string()).collect())
-    }
-}
-
-impl ParamValue for GrowthMode {
-    const KIND: ParamKind = ParamKind::Enum;
-    fn to_wire(self) -> f64 {
-        f64::from(self as u8)
-    }
-    fn from_wire(v: f64) -> Self {
-        if v == 1.0 {
-            GrowthMode::SpaceColonization
-        } else {
-            GrowthMode::Parametric
-        }
-    }
-    fn options() -> Option<Vec<String>> {
-        Some(GrowthMode::LABELS.iter().map(|s| s.to_string()).collect())
-    }
-}
-
-impl ParamValue for CrownVolumeKind {
-    const KIND: ParamKind = ParamKind::Enum;
-    fn to_wire(self) -> f64 {
-        f64::from(self as u8)
-    }
-    fn from_wire(v: f64) -> Self {
-        if v == 1.0 {
-            CrownVolumeKind::Envelope
-        } else if v == 2.0 {
-            CrownVolumeKind::Primitives
-        } else {
-            CrownVolumeKind::Ellipsoid
-        }
-    }
-    fn options() -> Option<Vec<String>> {
-        Some(CrownVolumeKind::LABELS.iter().map(|s| s.to_string()).collect())
-    }
-}
-
 /// Panel sections in display order. Every parameter's group is one of these.
 pub const GROUPS: [&str; 15] = [
     "Tree",

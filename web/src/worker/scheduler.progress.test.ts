@@ -1,48 +1,14 @@
 /** Growth progress and Cancel in the scheduler (fake worker, fake timers). */
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { SylvaError, TreeMeta } from '../core/types';
-import type { ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
-import { GenerationScheduler, type WorkerFactory } from './scheduler';
+import type { SylvaError } from '../core/types';
+import { GenerationScheduler } from './scheduler';
+import { fakeWorkers, result } from './scheduler.fixtures';
 
 beforeEach(() => vi.useFakeTimers());
 afterEach(() => vi.useRealTimers());
 
-const META: TreeMeta = {
-  vertices: 0,
-  triangles: 0,
-  hash: '0000000000000000',
-  bounds: { min: [0, 0, 0], max: [1, 1, 1] },
-  groups: [],
-  stage_ms: {},
-  total_ms: 1,
-  stems: 0,
-};
-
-function result(id: number): ResultResponse {
-  const f = () => new Float32Array(0);
-  return {
-    type: 'result',
-    id,
-    positions: f(),
-    normals: f(),
-    uvs: f(),
-    indices: new Uint32Array(0),
-    envelope: f(),
-    meta: META,
-  };
-}
-
 function setup() {
-  const workers: {
-    posted: WorkerRequest[];
-    terminated: boolean;
-    emit: (r: WorkerResponse) => void;
-  }[] = [];
-  const factory: WorkerFactory = (onMessage) => {
-    const w = { posted: [] as WorkerRequest[], terminated: false, emit: onMessage };
-    workers.push(w);
-    return { post: (r) => w.posted.push(r), terminate: () => void (w.terminated = true) };
-  };
+  const { factory, workers, current } = fakeWorkers();
   const log = {
     progress: [] as [number | null, number | null][],
     results: [] as number[],
@@ -56,8 +22,7 @@ function setup() {
     onBusyChange: (b) => log.busy.push(b),
     onProgress: (f, id) => log.progress.push([f, id]),
   });
-  const current = () => workers[workers.length - 1]!;
-  const ready = () => current().emit({ type: 'ready', registry: [], presets: [], version: 't' });
+  const ready = () => current().ready();
   return { scheduler, workers, log, current, ready };
 }
 

@@ -1,13 +1,13 @@
 /** Unit tests of the latest-wins scheduler with a fake worker factory (and fake timers). */
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import type { SylvaError, TreeMeta } from '../core/types';
-import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
+import type { SylvaError } from '../core/types';
+import type { ReadyInfo } from './protocol';
+import { fakeWorkers, result } from './scheduler.fixtures';
 import {
   DEFAULT_TIME_LIMIT_MS,
   GenerationScheduler,
   type SchedulerCallbacks,
   type SchedulerOptions,
-  type WorkerFactory,
 } from './scheduler';
 
 beforeEach(() => {
@@ -18,60 +18,8 @@ afterEach(() => {
   vi.useRealTimers();
 });
 
-/** A fake worker: records posts, lets the test push responses and error events. */
-class FakeWorker {
-  posted: WorkerRequest[] = [];
-  terminated = false;
-  constructor(
-    readonly emit: (response: WorkerResponse) => void,
-    readonly fail: (message: string) => void,
-  ) {}
-  ready(): void {
-    this.emit({ type: 'ready', registry: [], presets: [], version: 'test' });
-  }
-  lastGenerateId(): number {
-    const last = this.posted[this.posted.length - 1];
-    if (last?.type !== 'generate') throw new Error('last post is not a generate');
-    return last.id;
-  }
-}
-
-const META: TreeMeta = {
-  vertices: 0,
-  triangles: 0,
-  hash: '0000000000000000',
-  bounds: { min: [0, 0, 0], max: [1, 1, 1] },
-  groups: [],
-  stage_ms: {},
-  total_ms: 1,
-  stems: 0,
-};
-
-function result(id: number): ResultResponse {
-  return {
-    type: 'result',
-    id,
-    positions: new Float32Array(0),
-    normals: new Float32Array(0),
-    uvs: new Float32Array(0),
-    indices: new Uint32Array(0),
-    envelope: new Float32Array(0),
-    meta: META,
-  };
-}
-
 function setup(options?: SchedulerOptions) {
-  const workers: FakeWorker[] = [];
-  const factory: WorkerFactory = (onMessage, onError) => {
-    const w = new FakeWorker(onMessage, onError);
-    workers.push(w);
-    return {
-      post: (r) => w.posted.push(r),
-      terminate: () => {
-        w.terminated = true;
-      },
-    };
-  };
+  const { factory, workers, current } = fakeWorkers();
   const log = {
     ready: [] as [ReadyInfo, number][],
     results: [] as number[],
@@ -85,11 +33,6 @@ function setup(options?: SchedulerOptions) {
     onBusyChange: (b) => log.busy.push(b),
   };
   const scheduler = new GenerationScheduler(factory, callbacks, options);
-  const current = (): FakeWorker => {
-    const w = workers[workers.length - 1];
-    if (!w) throw new Error('no worker');
-    return w;
-  };
   return { scheduler, workers, log, current };
 }
 

@@ -12,6 +12,7 @@ pub mod sca;
 pub mod volume;
 
 use crate::error::SylvaError;
+use crate::param_enum::param_enum;
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem};
@@ -20,35 +21,27 @@ use primitives::VolumeGroup;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
 
-/// How the tree is made.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub enum GrowthMode {
-    /// Weber & Penn's parametric model.
-    Parametric = 0,
-    /// Space colonization growth.
-    SpaceColonization = 1,
+param_enum! {
+    /// How the tree is made.
+    GrowthMode {
+        /// Weber & Penn's parametric model.
+        Parametric = 0, "Parametric (Weber & Penn)";
+        /// Space colonization growth.
+        SpaceColonization = 1, "Space Colonization";
+    }
 }
 
-impl GrowthMode {
-    /// Display labels in index order.
-    pub const LABELS: [&'static str; 2] = ["Parametric (Weber & Penn)", "Space Colonization"];
-}
-
-/// The shape of the marker volume.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
-pub enum CrownVolumeKind {
-    /// An ellipsoid.
-    Ellipsoid = 0,
-    /// The Crown Shape envelope as a solid of revolution.
-    Envelope = 1,
-    /// The union of the user's crown-group primitives (`TreeParams::volumes`; the ellipsoid
-    /// when there is none).
-    Primitives = 2,
-}
-
-impl CrownVolumeKind {
-    /// Display labels in index order.
-    pub const LABELS: [&'static str; 3] = ["Ellipsoid", "Crown Shape envelope", "Primitives (user volumes)"];
+param_enum! {
+    /// The shape of the marker volume.
+    CrownVolumeKind {
+        /// An ellipsoid.
+        Ellipsoid = 0, "Ellipsoid";
+        /// The Crown Shape envelope as a solid of revolution.
+        Envelope = 1, "Crown Shape envelope";
+        /// The union of the user's crown-group primitives (`TreeParams::volumes`; the ellipsoid
+        /// when there is none).
+        Primitives = 2, "Primitives (user volumes)";
+    }
 }
 
 /// The budget error for growth.

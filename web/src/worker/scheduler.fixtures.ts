@@ -1,0 +1,72 @@
+/** Test fixtures for the scheduler: a fake worker factory and empty results (no real Worker). */
+import type { TreeMeta } from '../core/types';
+import type { ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
+import type { WorkerFactory } from './scheduler';
+
+/** A fake worker: records posts, lets the test push responses and error events. */
+export class FakeWorker {
+  posted: WorkerRequest[] = [];
+  terminated = false;
+  constructor(
+    readonly emit: (response: WorkerResponse) => void,
+    readonly fail: (message: string) => void,
+  ) {}
+  ready(): void {
+    this.emit({ type: 'ready', registry: [], presets: [], version: 'test' });
+  }
+  lastGenerateId(): number {
+    const last = this.posted[this.posted.length - 1];
+    if (last?.type !== 'generate') throw new Error('last post is not a generate');
+    return last.id;
+  }
+}
+
+/** A factory that makes [`FakeWorker`]s, and the list of those made so far (oldest first). */
+export function fakeWorkers(): {
+  factory: WorkerFactory;
+  workers: FakeWorker[];
+  current: () => FakeWorker;
+} {
+  const workers: FakeWorker[] = [];
+  const factory: WorkerFactory = (onMessage, onError) => {
+    const w = new FakeWorker(onMessage, onError);
+    workers.push(w);
+    return {
+      post: (r) => w.posted.push(r),
+      terminate: () => {
+        w.terminated = true;
+      },
+    };
+  };
+  const current = (): FakeWorker => {
+    const w = workers[workers.length - 1];
+    if (!w) throw new Error('no worker');
+    return w;
+  };
+  return { factory, workers, current };
+}
+
+const META: TreeMeta = {
+  vertices: 0,
+  triangles: 0,
+  hash: '0000000000000000',
+  bounds: { min: [0, 0, 0], max: [1, 1, 1] },
+  groups: [],
+  stage_ms: {},
+  total_ms: 1,
+  stems: 0,
+};
+
+/** An empty result for request `id`. */
+export function result(id: number): ResultResponse {
+  return {
+    type: 'result',
+    id,
+    positions: new Float32Array(0),
+    normals: new Float32Array(0),
+    uvs: new Float32Array(0),
+    indices: new Uint32Array(0),
+    envelope: new Float32Array(0),
+    meta: META,
+  };
+}
