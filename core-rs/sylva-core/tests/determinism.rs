@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "d2b61999edbf23df"),
-    ("quaking_aspen", "c50cf1807a9a9ae3"),
-    ("black_tupelo", "507cfd5373a069d3"),
-    ("weeping_willow", "da49d8cef0f8ff90"),
-    ("ca_black_oak", "91dfe3e01ebaca00"),
-    ("fir", "299e7018761dc5de"),
-    ("oak", "82190e7a40a5f91d"),
-    ("cypress", "cc4b0063bb99008f"),
-    ("umbrella", "9b9b3ba4ae758390"),
-    ("weeping", "5f025018215fc10b"),
-    ("grown_broadleaf", "9a06df8265303b9f"),
-    ("grown_shrub", "04fd4947b16ac80e"),
-    ("grown_hedgerow", "d9bd855ced25316d"),
-    ("grown_beside_wall", "a4e6551b0317927d"),
-    ("grown_bushy", "2ebb34802634c975"),
+    ("default", "f8604965f3dcb5e4"),
+    ("quaking_aspen", "ffcf97061e516815"),
+    ("black_tupelo", "b94a0ce247cf74f5"),
+    ("weeping_willow", "1951b7036e71d0c7"),
+    ("ca_black_oak", "371956810a71d21c"),
+    ("fir", "390499712995ad75"),
+    ("oak", "bd41319917b9264f"),
+    ("cypress", "ef4e755937d4726d"),
+    ("umbrella", "29f954fd46562601"),
+    ("weeping", "8a0faba003cdd746"),
+    ("grown_broadleaf", "f14639c078d44fe7"),
+    ("grown_shrub", "839c9205f41e4c18"),
+    ("grown_hedgerow", "2c72c177817fce61"),
+    ("grown_beside_wall", "1b1d6e9ee09b5ce5"),
+    ("grown_bushy", "f0810a70a52776ab"),
 ];
 
 #[test]

@@ -160,3 +160,61 @@ fn the_guide_curve_moves_trunk_points_sideways_within_the_limit() {
     }
     assert!(a.iter().zip(b.iter()).skip(1).any(|(p, q)| (p.x - q.x).abs() > 0.01));
 }
+
+#[test]
+fn wind_attributes_follow_the_stems() {
+    use sylva_core::mesh::WIND_STRIDE;
+    for name in ["default", "ca_black_oak", "grown_broadleaf"] {
+        let g = generate(&sylva_core::presets::find(name).unwrap().params().unwrap()).unwrap();
+        let (m, stems) = (&g.mesh, &g.skeleton.stems);
+        assert_eq!(m.wind.len(), WIND_STRIDE * m.vertex_count(), "{name}: wind length");
+        assert!(m.wind.iter().all(|w| w.is_finite()), "{name}: non-finite wind");
+        let w = |i: usize| &m.wind[i * WIND_STRIDE..(i + 1) * WIND_STRIDE];
+        // Each stem: its pivot is its base point, its level its level, one phase for all its
+        // vertices, so there are exactly as many (pivot, level, phase) keys as stems.
+        let key = |i: usize| {
+            let r = w(i);
+            (r[0].to_bits(), r[1].to_bits(), r[2].to_bits(), r[3].to_bits(), r[4].to_bits())
+        };
+        let mut keys = std::collections::BTreeSet::new();
+        for i in 0..m.vertex_count() {
+            let phase = w(i)[4];
+            assert!((0.0..1.0).contains(&phase), "{name}: phase {phase}");
+            assert!((0.0..=1.0).contains(&w(i)[5]), "{name}: stiffness {}", w(i)[5]);
+            assert!(w(i)[7] >= 0.0, "{name}: radius {}", w(i)[7]);
+            keys.insert(key(i));
+        }
+        assert_eq!(keys.len(), stems.len(), "{name}: one (pivot, level, phase) per stem");
+        let pivots: std::collections::BTreeSet<_> = keys.iter().map(|k| (k.0, k.1, k.2, k.3)).collect();
+        let mut base = vec![0.0f32; stems.len()];
+        for (k, s) in stems.iter().enumerate() {
+            base[k] = s.parent.map_or(0.0, |p| base[p as usize] + s.offset);
+            let b = s.base();
+            let bits = (b.x.to_bits(), b.y.to_bits(), b.z.to_bits(), f32::from(s.level).to_bits());
+            assert!(pivots.contains(&bits), "{name}: no vertex carries stem {k}'s pivot and level");
+        }
+        assert_eq!(w(0)[3], 0.0, "{name}: the first vertices are the trunk's");
+        assert!(w(0)[5] > 0.99, "{name}: the trunk base is stiff");
+        // Distance grows along each stem: on every edge inside one stem, distance and v agree.
+        let mut checked = 0;
+        for t in m.indices.chunks_exact(3) {
+            for e in 0..3 {
+                let (a, b) = (t[e] as usize, t[(e + 1) % 3] as usize);
+                if key(a) != key(b) {
+                    continue;
+                }
+                let dd = w(b)[6] - w(a)[6];
+                if dd.abs() > 1e-5 {
+                    let dv = m.uvs[b * 2 + 1] - m.uvs[a * 2 + 1];
+                    assert!(dd * dv > 0.0, "{name}: distance and v disagree on edge {a}-{b}");
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 1000, "{name}: only {checked} edges checked");
+        // Distances start at the root: the largest is about the longest root-to-tip path.
+        let max = m.wind.chunks_exact(WIND_STRIDE).map(|r| r[6]).fold(0.0f32, f32::max);
+        let longest = stems.iter().enumerate().map(|(k, s)| base[k] + s.length).fold(0.0f32, f32::max);
+        assert!((max - longest).abs() < 1e-3 * longest.max(1.0), "{name}: max distance {max} vs {longest}");
+    }
+}

@@ -99,6 +99,13 @@ impl GeneratedTree {
     pub fn indices(&self) -> Vec<u32> {
         self.0.mesh.indices.clone()
     }
+    /// Wind attributes, 8 floats per bark vertex: `pivot_x, pivot_y, pivot_z, level, phase,
+    /// stiffness, distance, radius` (pivot = the stem's base point; level 0 = trunk; phase 0..1
+    /// per stem; stiffness 0..1, `sqrt(min(1, radius / trunk base radius))`; distance = path length
+    /// from the root in m; radius = local stem radius in m). See `sylva_core::TreeMesh::wind`.
+    pub fn wind(&self) -> Vec<f32> {
+        self.0.mesh.wind.clone()
+    }
     /// Growth mode: the markers sampled in the crown (`x, y, z` per marker; empty otherwise).
     pub fn markers(&self) -> Vec<f32> {
         self.0.markers.iter().flat_map(|m| m.to_array()).collect()

@@ -138,6 +138,12 @@ export interface WasmTree {
   normals(): Float32Array;
   uvs(): Float32Array;
   indices(): Uint32Array;
+  /**
+   * Wind attributes, 8 floats per bark vertex: pivot x, y, z (the stem's base), level, phase
+   * (0..1 per stem), stiffness (0..1), distance from the root (m), local radius (m). Optional so
+   * older fakes still type-check.
+   */
+  wind?(): Float32Array;
   envelope_lines(): Float32Array;
   /** Growth mode: the markers (x, y, z each); optional so older fakes still type-check. */
   markers?(): Float32Array;

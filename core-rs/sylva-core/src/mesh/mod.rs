@@ -196,9 +196,26 @@ impl Hasher {
     }
 }
 
-/// Appends geometry to a [`TreeMesh`] and keeps the material groups.
+/// Appends geometry to a [`TreeMesh`] and keeps the material groups. A builder made with
+/// [`MeshBuilder::with_wind`] keeps [`TreeMesh::wind`] in step with the vertices: every way of
+/// adding vertices adds their wind records too (zeros unless given).
 pub struct MeshBuilder {
     mesh: TreeMesh,
+    wind: bool,
+}
+
+/// A block of freshly appended, zeroed vertices (see [`MeshBuilder::alloc_vertices`]).
+pub struct VertexBlock<'a> {
+    /// Index of the first vertex of the block.
+    pub first: u32,
+    /// `3n` position floats.
+    pub positions: &'a mut [f32],
+    /// `3n` normal floats.
+    pub normals: &'a mut [f32],
+    /// `2n` uv floats.
+    pub uvs: &'a mut [f32],
+    /// `8n` wind floats ([`WIND_STRIDE`] per vertex), or empty when the builder has no wind.
+    pub wind: &'a mut [f32],
 }
 
 impl MeshBuilder {
@@ -213,7 +230,16 @@ impl MeshBuilder {
                 groups: Vec::new(),
                 wind: Vec::new(),
             },
+            wind: false,
         }
+    }
+
+    /// Like [`MeshBuilder::with_capacity`], with a [`TreeMesh::wind`] record for every vertex.
+    pub fn with_wind(vertices: usize, indices: usize) -> Self {
+        let mut b = Self::with_capacity(vertices, indices);
+        b.mesh.wind = Vec::with_capacity(vertices * WIND_STRIDE);
+        b.wind = true;
+        b
     }
 
     /// Index the next vertex will get.
@@ -221,25 +247,64 @@ impl MeshBuilder {
         (self.mesh.positions.len() / 3) as u32
     }
 
-    /// Append one vertex; returns its index.
+    /// Append one vertex (with a zero wind record if the builder keeps wind); returns its index.
     #[inline]
     pub fn vertex(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2]) -> u32 {
+        self.vertex_with_wind(p, n, uv, &[0.0; WIND_STRIDE])
+    }
+
+    /// Append one vertex with its wind record (ignored if the builder keeps no wind).
+    #[inline]
+    pub fn vertex_with_wind(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2], wind: &[f32; WIND_STRIDE]) -> u32 {
         let i = self.next_index();
         self.mesh.positions.extend_from_slice(&p);
         self.mesh.normals.extend_from_slice(&n);
         self.mesh.uvs.extend_from_slice(&uv);
+        if self.wind {
+            self.mesh.wind.extend_from_slice(wind);
+        }
         i
     }
 
-    /// Append `n` zeroed vertices and return the first index with mutable views of their
-    /// positions (`3n`), normals (`3n`) and uvs (`2n`), for stages that fill whole blocks.
-    pub fn alloc_vertices(&mut self, n: usize) -> (u32, &mut [f32], &mut [f32], &mut [f32]) {
+    /// Append `n` zeroed vertices (and wind records) and return mutable views of them, for
+    /// stages that fill whole blocks.
+    pub fn alloc_vertices(&mut self, n: usize) -> VertexBlock<'_> {
         let first = self.next_index();
-        let (p, q, u) = (self.mesh.positions.len(), self.mesh.normals.len(), self.mesh.uvs.len());
-        self.mesh.positions.resize(p + 3 * n, 0.0);
-        self.mesh.normals.resize(q + 3 * n, 0.0);
-        self.mesh.uvs.resize(u + 2 * n, 0.0);
-        (first, &mut self.mesh.positions[p..], &mut self.mesh.normals[q..], &mut self.mesh.uvs[u..])
+        let m = &mut self.mesh;
+        let (p, q, u, w) = (m.positions.len(), m.normals.len(), m.uvs.len(), m.wind.len());
+        m.positions.resize(p + 3 * n, 0.0);
+        m.normals.resize(q + 3 * n, 0.0);
+        m.uvs.resize(u + 2 * n, 0.0);
+        if self.wind {
+            m.wind.resize(w + WIND_STRIDE * n, 0.0);
+        }
+        VertexBlock {
+            first,
+            positions: &mut m.positions[p..],
+            normals: &mut m.normals[q..],
+            uvs: &mut m.uvs[u..],
+            wind: &mut m.wind[w..],
+        }
+    }
+
+    /// Drop every vertex from index `first` on (and its wind record): undoes a block whose
+    /// triangles were never written.
+    pub fn truncate_vertices(&mut self, first: u32) {
+        let n = first as usize;
+        self.mesh.positions.truncate(n * 3);
+        self.mesh.normals.truncate(n * 3);
+        self.mesh.uvs.truncate(n * 2);
+        if self.wind {
+            self.mesh.wind.truncate(n * WIND_STRIDE);
+        }
+    }
+
+    /// Vertex `i`'s position and normal.
+    #[inline]
+    pub fn vertex_at(&self, i: u32) -> (glam::Vec3, glam::Vec3) {
+        let k = i as usize * 3;
+        let (p, n) = (&self.mesh.positions[k..k + 3], &self.mesh.normals[k..k + 3]);
+        (glam::Vec3::new(p[0], p[1], p[2]), glam::Vec3::new(n[0], n[1], n[2]))
     }
 
     /// Append `n` zeroed indices (a multiple of 3) and return them for filling.

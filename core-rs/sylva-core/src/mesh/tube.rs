@@ -7,7 +7,7 @@
 //! the trunk's base with a fan, so the only open edges are the buried bases of child stems.
 
 use super::trunk::{ring_circles, union_outline};
-use super::{Material, MeshBuilder, TreeMesh};
+use super::{Material, MeshBuilder, TreeMesh, WIND_STRIDE};
 use crate::error::SylvaError;
 use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
@@ -134,30 +134,84 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
         return Err(budget_error("", vertices, p.max_vertices));
     }
     let indices: u64 = plans.iter().map(|pl| pl.rings.len() as u64 * u64::from(pl.sides) * 6).sum();
-    let mut out = MeshBuilder::with_capacity(vertices as usize, indices as usize);
+    let mut out = MeshBuilder::with_wind(vertices as usize, indices as usize);
     out.begin_group(Material::Bark);
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
-    for (stem, plan) in skeleton.stems.iter().zip(&plans) {
+    let winds = stem_winds(skeleton, p.seed);
+    for ((stem, plan), wind) in skeleton.stems.iter().zip(&plans).zip(&winds) {
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
         let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
         match profile {
-            Some(tp) => sweep_trunk(stem, &ts[plan.rings.clone()], table, &tp, &mut out),
-            None => sweep(stem, &ts[plan.rings.clone()], table, lobes, &mut out),
+            Some(tp) => sweep_trunk(stem, &ts[plan.rings.clone()], table, &tp, wind, &mut out),
+            None => sweep(stem, &ts[plan.rings.clone()], table, lobes, wind, &mut out),
         }
     }
     Ok(out.finish())
 }
 
-fn sweep(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], lobes: Option<(u32, f32)>, out: &mut MeshBuilder) {
+/// Per-stem constants of the wind attributes ([`TreeMesh::wind`]).
+#[derive(Clone, Copy, Debug)]
+pub struct StemWind {
+    /// The stem's base point (the pivot it sways about).
+    pub pivot: Vec3,
+    /// Branch level.
+    pub level: f32,
+    /// Random phase 0..1, one per stem.
+    pub phase: f32,
+    /// Path length from the root to the stem's base (m).
+    pub distance: f32,
+    /// Trunk base radius (m), the reference for stiffness.
+    pub trunk_radius: f32,
+}
+
+impl StemWind {
+    /// The wind record of a ring at fraction `t` of `stem` with local radius `radius`.
+    /// Stiffness is `sqrt(min(1, radius / trunk_radius))`: 1 at the trunk base (and in the flare),
+    /// about 0.3 where a stem is a tenth of the trunk, 0.1 at a hundredth: thin twigs sway most.
+    #[inline]
+    pub fn record(&self, stem: &Stem, t: f32, radius: f32) -> [f32; WIND_STRIDE] {
+        let stiffness = (radius / self.trunk_radius).clamp(0.0, 1.0).sqrt();
+        let p = self.pivot;
+        [p.x, p.y, p.z, self.level, self.phase, stiffness, self.distance + t * stem.length, radius]
+    }
+}
+
+/// Wind constants of every stem: phases from the `"wind"` stream (one draw per stem, in stem
+/// order), base distances from the parent's base distance plus the offset along it.
+pub fn stem_winds(skeleton: &Skeleton, seed: u32) -> Vec<StemWind> {
+    let mut rng = Rng::new(u64::from(seed), "wind");
+    let trunk_radius = skeleton.stems.first().map_or(1.0, |s| s.radius).max(1e-6);
+    let mut out: Vec<StemWind> = Vec::with_capacity(skeleton.stems.len());
+    for s in &skeleton.stems {
+        let distance = s.parent.map_or(0.0, |i| out[i as usize].distance + s.offset);
+        out.push(StemWind {
+            pivot: s.base(),
+            level: f32::from(s.level),
+            phase: rng.next_f32(),
+            distance,
+            trunk_radius,
+        });
+    }
+    out
+}
+
+fn sweep(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    lobes: Option<(u32, f32)>,
+    wind: &StemWind,
+    out: &mut MeshBuilder,
+) {
     match lobes {
         Some((n, depth)) => {
             let sides = circle.len() - 1;
             let lobe: Vec<f32> =
                 (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
-            sweep_with(stem, ts, circle, &|_, j| lobe[j], out)
+            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, out)
         }
-        None => sweep_with(stem, ts, circle, &|_, _| 1.0, out),
+        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, out),
     }
 }
 
@@ -168,6 +222,7 @@ fn sweep_with(
     ts: &[f32],
     circle: &[(f32, f32, f32)],
     factor: &dyn Fn(usize, usize) -> f32,
+    wind: &StemWind,
     out: &mut MeshBuilder,
 ) {
     let sides = circle.len() - 1;
@@ -175,7 +230,8 @@ fn sweep_with(
     let rings = ts.len();
     let trunk = stem.parent.is_none();
     let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
-    let (first, pos, nrm, uv) = out.alloc_vertices(count);
+    let block = out.alloc_vertices(count);
+    let (first, pos, nrm, uv, wnd) = (block.first, block.positions, block.normals, block.uvs, block.wind);
     let mut ring_factor = vec![1.0f32; stride];
     let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
     let mut seg = (0, stem.segment(0));
@@ -204,6 +260,10 @@ fn sweep_with(
         let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
         let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
         let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
+        let record = wind.record(stem, t, radius);
+        for w in wnd[block * WIND_STRIDE..(block + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+            w.copy_from_slice(&record);
+        }
         let tilt = tan * slope;
         for (j, f) in ring_factor.iter_mut().enumerate() {
             *f = factor(r, j);
@@ -258,6 +318,7 @@ fn sweep_with(
     pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
     nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&tip_tan.to_array());
     uv[apex_slot * 2..apex_slot * 2 + 2].copy_from_slice(&[0.5, v_apex]);
+    wnd[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));
     let apex = first + apex_slot as u32;
     if trunk {
         // Trunk base: a flat cap with its own downward-facing copy of the bottom ring (a hard edge).
@@ -274,6 +335,11 @@ fn sweep_with(
         pos[centre * 3..centre * 3 + 3].copy_from_slice(&stem.base().to_array());
         nrm[centre * 3..centre * 3 + 3].copy_from_slice(&down);
         uv[centre * 2..centre * 2 + 2].copy_from_slice(&[0.5, 0.5]);
+        // The cap's ring copy and centre sway like the bottom ring.
+        let record: [f32; WIND_STRIDE] = wnd[..WIND_STRIDE].try_into().expect("ring 0 exists");
+        for w in wnd[cap * WIND_STRIDE..(centre + 1) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+            w.copy_from_slice(&record);
+        }
     }
     // Indices: quads between rings, the tip fan, and the trunk's bottom fan.
     let s = sides as u32;
@@ -354,7 +420,14 @@ impl TrunkProfile {
 
 /// Sweep of the trunk record with a complex cross-section: each ring's outline is the union of
 /// its circles resampled per column (then lobes and the base ripple), as factors on the radius.
-fn sweep_trunk(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], tp: &TrunkProfile, out: &mut MeshBuilder) {
+fn sweep_trunk(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    tp: &TrunkProfile,
+    wind: &StemWind,
+    out: &mut MeshBuilder,
+) {
     let sides = circle.len() - 1;
     let dirs: Vec<(f32, f32)> = circle.iter().map(|&(c, s, _)| (c, s)).collect();
     let mut jitter = Vec::new();
@@ -376,5 +449,5 @@ fn sweep_trunk(stem: &Stem, ts: &[f32], circle: &[(f32, f32, f32)], tp: &TrunkPr
         }
         rings.push(rho.clone());
     }
-    sweep_with(stem, ts, circle, &|r, j| rings[r][j], out);
+    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, out);
 }
