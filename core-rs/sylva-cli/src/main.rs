@@ -1,26 +1,40 @@
 //! `sylva`: the command line of Sylva's core.
 //!
 //! ```text
-//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.obj] [--report skeleton|mesh]
+//! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.glb|FILE.obj]
+//!                [--leaves instanced|baked|none] [--no-textures] [--no-wind] [--report skeleton|mesh]
 //! sylva envelope --shape NAME [--samples N]
 //! sylva params [--markdown]
 //! sylva presets
-//! sylva bench [--preset NAME] [--runs N] [--json]
+//! sylva bench [--preset NAME] [--runs N] [--json] [--glb]
 //! ```
+//! `--out` writes the tree as glTF binary (`.glb`, `sylva_core::export::glb`) or Wavefront OBJ
+//! (`.obj` plus `NAME.mtl` and `NAME_*.png` textures next to it, `sylva_core::export::obj`).
 //! Errors (unknown flags, invalid parameters, budgets) print a message to stderr and exit 2.
 
 mod leaf;
 
 use std::process::ExitCode;
+use sylva_core::export::{ExportOptions, LeafMode};
 use sylva_core::params::{registry, ParamKind, TreeParams};
 use sylva_core::{presets, SylvaError};
 
 const USAGE: &str = "usage:
-  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.obj] [--report skeleton|mesh]
+  sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.glb|FILE.obj]
+                 [--leaves instanced|baked|none] [--no-textures] [--no-wind] [--report skeleton|mesh]
   sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
-  sylva bench [--preset NAME] [--runs N] [--json]";
+  sylva bench [--preset NAME] [--runs N] [--json] [--glb]
+
+export (generate --out):
+  FILE.glb      glTF 2.0 binary: bark + leaf meshes, PBR materials, embedded PNG textures,
+                vertex colours, wind attributes (_WIND_PIVOT, _WIND_PARAMS)
+  FILE.obj      Wavefront OBJ + FILE.mtl + FILE_*.png textures (leaves baked)
+  --leaves M    instanced (GLB: EXT_mesh_gpu_instancing, default), baked (one mesh), none
+  --no-textures no images (plain material colours)
+  --no-wind     no wind attributes
+bench --glb: also time the GLB export (median, and the first export with PNG encoding).";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -64,6 +78,8 @@ struct Opts {
     runs: usize,
     json: bool,
     report: Vec<String>,
+    export: ExportOptions,
+    glb: bool,
 }
 
 fn parse(args: &[String]) -> Result<Opts, String> {
@@ -74,6 +90,8 @@ fn parse(args: &[String]) -> Result<Opts, String> {
     let mut json = false;
     let mut report = Vec::new();
     let mut volumes = None;
+    let mut export = ExportOptions::default();
+    let mut glb = false;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         let mut value = |name: &str| it.next().cloned().ok_or_else(|| format!("{name} needs a value"));
@@ -93,6 +111,14 @@ fn parse(args: &[String]) -> Result<Opts, String> {
             "--out" => out = Some(value("--out")?),
             "--runs" => runs = value("--runs")?.parse().map_err(|_| "--runs takes a whole number".to_string())?,
             "--json" => json = true,
+            "--glb" => glb = true,
+            "--leaves" => {
+                let v = value("--leaves")?;
+                export.leaves = LeafMode::from_name(&v)
+                    .ok_or_else(|| format!("--leaves takes 'instanced', 'baked' or 'none', got '{v}'"))?;
+            }
+            "--no-textures" => export.textures = false,
+            "--no-wind" => export.wind = false,
             "--report" => {
                 let what = value("--report")?;
                 if what != "skeleton" && what != "mesh" {
@@ -120,7 +146,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
     if let Some(v) = volumes {
         params.volumes = v;
     }
-    Ok(Opts { params, out, runs: runs.max(1), json, report })
+    Ok(Opts { params, out, runs: runs.max(1), json, report, export, glb })
 }
 
 /// A `--set` value: a number, `true`/`false`, or an enum option label.
@@ -149,12 +175,10 @@ fn parse_value(id: &str, v: &str) -> Result<f64, String> {
 fn generate(args: &[String]) -> Result<String, String> {
     let opts = parse(args)?;
     let g = sylva_core::generate(&opts.params).map_err(|e| e.to_string())?;
-    if let Some(path) = &opts.out {
-        if !path.ends_with(".obj") {
-            return Err(format!("--out: only .obj is supported for now, got '{path}'"));
-        }
-        std::fs::write(path, g.mesh.to_obj()).map_err(|e| format!("cannot write {path}: {e}"))?;
-    }
+    let written = match &opts.out {
+        Some(path) => Some(write_export(&g, &opts.export, path)?),
+        None => None,
+    };
     let ms: serde_json::Map<String, serde_json::Value> =
         g.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
     let mut out = serde_json::json!({
@@ -165,6 +189,9 @@ fn generate(args: &[String]) -> Result<String, String> {
         "ms": ms,
         "total_ms": g.stats.total_ms,
     });
+    if let Some(files) = written {
+        out["written"] = serde_json::json!(files);
+    }
     if opts.report.iter().any(|r| r == "mesh") {
         let t = sylva_core::mesh::topology::topology(&g.mesh);
         out["non_manifold_edges"] = t.non_manifold_edges.into();
@@ -191,6 +218,36 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["skeleton"] = serde_json::Value::Array(stems);
     }
     Ok(out.to_string())
+}
+
+/// Writes `g` to `path` as GLB or OBJ (+ MTL + PNGs, named after the OBJ's stem, next to it);
+/// returns `[file, bytes]` of every file written.
+fn write_export(g: &sylva_core::Generated, export: &ExportOptions, path: &str) -> Result<Vec<(String, usize)>, String> {
+    let write = |file: &str, bytes: &[u8]| std::fs::write(file, bytes).map_err(|e| format!("cannot write {file}: {e}"));
+    let lower = path.to_ascii_lowercase();
+    if lower.ends_with(".glb") {
+        let bytes = sylva_core::export::to_glb(g, export);
+        write(path, &bytes)?;
+        Ok(vec![(path.to_string(), bytes.len())])
+    } else if lower.ends_with(".obj") {
+        let p = std::path::Path::new(path);
+        let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("tree").to_string();
+        let dir = p.parent().unwrap_or(std::path::Path::new(""));
+        let files = sylva_core::export::obj::write(g, export, &stem);
+        let mut written = Vec::new();
+        write(path, files.obj.as_bytes())?;
+        written.push((path.to_string(), files.obj.len()));
+        let mut side = vec![(format!("{stem}.mtl"), files.mtl.into_bytes())];
+        side.extend(files.textures);
+        for (name, bytes) in side {
+            let file = dir.join(&name).to_string_lossy().into_owned();
+            write(&file, &bytes)?;
+            written.push((file, bytes.len()));
+        }
+        Ok(written)
+    } else {
+        Err(format!("--out: the file must end in .glb or .obj, got '{path}'"))
+    }
 }
 
 /// `sylva envelope --shape NAME [--samples N]`: `[[r, ShapeRatio(r)], ...]`, r from 0 (top) to 1 (crown base).
@@ -249,11 +306,12 @@ fn bench(args: &[String]) -> Result<String, String> {
         last = Some(g);
     }
     let g = last.expect("runs >= 1");
+    let glb = opts.glb.then(|| bench_glb(&g, &opts.export, opts.runs));
     let total = median(&mut totals);
     let stage: serde_json::Map<String, serde_json::Value> =
         stages.iter_mut().map(|(k, v)| (k.to_string(), serde_json::json!(median(v)))).collect();
     let vps = g.stats.vertices as f64 / (total / 1000.0);
-    let report = serde_json::json!({
+    let mut report = serde_json::json!({
         "target": "native",
         "runs": opts.runs,
         "vertices": g.stats.vertices,
@@ -263,17 +321,48 @@ fn bench(args: &[String]) -> Result<String, String> {
         "vertices_per_second": vps,
         "hash": g.hash_hex(),
     });
+    if let Some(b) = &glb {
+        report["glb"] = b.clone();
+    }
     if opts.json {
         Ok(report.to_string())
     } else {
-        Ok(format!(
+        let mut s = format!(
             "native: {} vertices, median {:.3} ms over {} runs ({:.1} M vertices/s)",
             g.stats.vertices,
             total,
             opts.runs,
             vps / 1e6
-        ))
+        );
+        if let Some(b) = &glb {
+            s.push_str(&format!(
+                "\nGLB export: median {:.3} ms, first (with PNG encoding) {:.3} ms, {} bytes",
+                b["median_ms"].as_f64().unwrap_or(0.0),
+                b["first_ms"].as_f64().unwrap_or(0.0),
+                b["bytes"]
+            ));
+        }
+        Ok(s)
     }
+}
+
+/// Times `runs` GLB exports of `g`: the first (encodes the PNG textures, which later exports
+/// reuse from the cache) and the median of the rest.
+fn bench_glb(g: &sylva_core::Generated, export: &ExportOptions, runs: usize) -> serde_json::Value {
+    let now = std::time::Instant::now;
+    let t0 = now();
+    let first = sylva_core::export::to_glb(g, export);
+    let first_ms = t0.elapsed().as_secs_f64() * 1000.0;
+    let mut times = Vec::with_capacity(runs);
+    let mut bytes = first.len();
+    drop(first);
+    for _ in 0..runs {
+        let t = now();
+        let b = sylva_core::export::to_glb(g, export);
+        times.push(t.elapsed().as_secs_f64() * 1000.0);
+        bytes = b.len();
+    }
+    serde_json::json!({"median_ms": median(&mut times), "first_ms": first_ms, "bytes": bytes, "runs": runs})
 }
 
 /// The parameter reference for the README, generated from the registry.

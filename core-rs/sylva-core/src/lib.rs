@@ -18,6 +18,7 @@
 pub mod clock;
 pub mod crown;
 pub mod error;
+pub mod export;
 pub mod foliage;
 pub mod growth;
 pub mod leaf;

@@ -146,6 +146,41 @@ impl GeneratedTree {
     pub fn leaf_texture(&self) -> Vec<u8> {
         self.0.foliage.texture().map(|t| t.color.clone()).unwrap_or_default()
     }
+    /// The tree as a glTF 2.0 binary (`.glb`, see `sylva_core::export::glb`). `options_json` is
+    /// a JSON object of `sylva_core::export::ExportOptions` fields (`leaves`: `"instanced"` |
+    /// `"baked"` | `"none"`, `wind`, `textures`, `normal_maps`, `vertex_colors`,
+    /// `bark_texture_size`); `""` or `"{}"` takes the defaults. Throws a JSON `SylvaError` string
+    /// on bad options.
+    pub fn to_glb(&self, options_json: &str) -> Result<Vec<u8>, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(sylva_core::export::to_glb(&self.0, &opts))
+    }
+    /// The tree as Wavefront OBJ text (bark and baked leaves; `mtllib NAME.mtl`, see
+    /// `sylva_core::export::obj`). `name` is the file stem the OBJ refers to.
+    pub fn to_obj(&self, name: &str, options_json: &str) -> Result<String, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(sylva_core::export::obj::obj(&self.0, &opts, name))
+    }
+    /// The MTL text for [`GeneratedTree::to_obj`] (texture files named `NAME_bark_color.png`, ...).
+    pub fn to_mtl(&self, name: &str, options_json: &str) -> Result<String, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(sylva_core::export::obj::mtl(&self.0, &opts, name))
+    }
+    /// The names of the PNG files the MTL refers to (`NAME_bark_color.png`, ...), in the order
+    /// of [`GeneratedTree::obj_texture`]'s indices.
+    pub fn obj_texture_names(&self, name: &str, options_json: &str) -> Result<Vec<String>, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(sylva_core::export::obj::texture_names(&self.0, &opts, name))
+    }
+    /// PNG file `index` of [`GeneratedTree::obj_texture_names`] (empty when out of range).
+    pub fn obj_texture(&self, options_json: &str, index: usize) -> Result<Vec<u8>, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(sylva_core::export::obj::texture_png(&self.0, &opts, index).unwrap_or_default())
+    }
+}
+
+fn export_options(json: &str) -> Result<sylva_core::export::ExportOptions, JsValue> {
+    sylva_core::export::ExportOptions::from_json(json).map_err(|e| JsValue::from_str(&e.to_json()))
 }
 
 /// Generate a tree from a JSON object of parameter values (`{"id": number}`); missing ids take

@@ -156,6 +156,21 @@ export interface WasmTree {
   leaf_matrices?(): Float32Array;
   leaf_colors?(): Float32Array;
   leaf_texture?(): Uint8Array;
+  /**
+   * Exporters (optional so that test fakes may leave them out). `optionsJson` is a JSON object of
+   * `ExportOptions` fields (`leaves`: 'instanced' | 'baked' | 'none', `wind`, `textures`,
+   * `normal_maps`, `vertex_colors`, `bark_texture_size`); '' takes the defaults. Bad options throw
+   * a JSON `SylvaError` string.
+   */
+  to_glb?(optionsJson: string): Uint8Array;
+  /** Wavefront OBJ text; `name` is the file stem it refers to (`mtllib name.mtl`). */
+  to_obj?(name: string, optionsJson: string): string;
+  /** The MTL text for `to_obj` (textures `name_bark_color.png`, ...). */
+  to_mtl?(name: string, optionsJson: string): string;
+  /** File names of the PNG textures the MTL refers to, in `obj_texture` index order. */
+  obj_texture_names?(name: string, optionsJson: string): string[];
+  /** PNG file `index` of `obj_texture_names` (rows flipped for OBJ's bottom-up UVs). */
+  obj_texture?(optionsJson: string, index: number): Uint8Array;
   free(): void;
 }
 

@@ -1,0 +1,480 @@
+//! # Export
+//!
+//! Files a generated tree can be saved as, built from [`Generated`] alone (no state, no I/O:
+//! the functions return bytes and strings; the CLI and the wasm binding write or hand them on):
+//!
+//! * [`glb`]: glTF 2.0 binary (Khronos glTF 2.0 specification, §4.4 "GLB File Format"): bark
+//!   and leaf meshes, PBR metallic-roughness materials, the baked bark and leaf textures as
+//!   embedded PNGs, vertex colours, tangents for the normal maps, wind data as custom vertex
+//!   attributes, leaves instanced with `EXT_mesh_gpu_instancing` or baked into one mesh.
+//! * [`obj`]: Wavefront OBJ + MTL (bark and baked leaves), the textures as PNG files.
+//! * [`png`]: the small deterministic PNG encoder both use (PNG spec, 3rd ed., RGBA8).
+//!
+//! What goes in a file is chosen by [`ExportOptions`]; [`ExportOptions::default`] is the one
+//! place the defaults live. Every output is deterministic: the same tree and options give the
+//! same bytes on every target (no hash-map iteration, floats printed in Rust's shortest
+//! round-trip form, a pinned deflate).
+//!
+//! The parts shared by both formats sit here: per-vertex bark colours ([`bark_colors`]),
+//! MikkTSpace-style tangents ([`tangents`]), the leaves baked into one mesh ([`bake_leaves`]),
+//! instance matrices split into translation, rotation and scale ([`decompose`]), and the PNG
+//! textures, encoded once and cached ([`bark_pngs`], [`leaf_pngs`]).
+
+pub mod glb;
+pub mod obj;
+pub mod png;
+
+use crate::error::SylvaError;
+use crate::foliage::Foliage;
+use crate::mesh::TreeMesh;
+use crate::Generated;
+use glam::{Mat3, Quat, Vec3};
+use std::sync::{Arc, Mutex};
+
+/// How the leaves are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LeafMode {
+    /// One leaf mesh drawn once per leaf (GLB: `EXT_mesh_gpu_instancing`, per-leaf TRS and
+    /// colour). OBJ has no instancing and writes the leaves baked instead.
+    #[default]
+    Instanced,
+    /// Every leaf transformed into one mesh, with the per-leaf colour as a vertex colour.
+    Baked,
+    /// No leaves.
+    None,
+}
+
+impl LeafMode {
+    /// The mode for a name: `instanced`, `baked` or `none` (any case).
+    pub fn from_name(name: &str) -> Option<LeafMode> {
+        match name.to_ascii_lowercase().as_str() {
+            "instanced" => Some(LeafMode::Instanced),
+            "baked" => Some(LeafMode::Baked),
+            "none" => Some(LeafMode::None),
+            _ => None,
+        }
+    }
+}
+
+/// What an export contains. The defaults ([`ExportOptions::default`]) give the complete file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExportOptions {
+    /// How leaves are written. Default [`LeafMode::Instanced`].
+    pub leaves: LeafMode,
+    /// Write the wind attributes (`_WIND_PIVOT`, `_WIND_PARAMS`) when the mesh has wind data.
+    /// Default `true`.
+    pub wind: bool,
+    /// Embed (GLB) or reference (OBJ) the baked textures. Default `true`.
+    pub textures: bool,
+    /// With `textures`: the normal maps and, for them, per-vertex tangents (GLB `TANGENT`).
+    /// Default `true`.
+    pub normal_maps: bool,
+    /// Per-vertex colours (`COLOR_0`): bark tint, baked leaf colours. Default `true`.
+    pub vertex_colors: bool,
+    /// Edge of the square bark textures in texels, a power of two from 16 to 2048. Default 512.
+    pub bark_texture_size: u32,
+}
+
+impl Default for ExportOptions {
+    fn default() -> Self {
+        ExportOptions {
+            leaves: LeafMode::Instanced,
+            wind: true,
+            textures: true,
+            normal_maps: true,
+            vertex_colors: true,
+            bark_texture_size: 512,
+        }
+    }
+}
+
+impl ExportOptions {
+    /// Options from a JSON object; missing fields keep their defaults, e.g.
+    /// `{"leaves": "baked", "wind": false, "bark_texture_size": 256}`. An empty string means
+    /// all defaults. Unknown fields and wrong types are errors.
+    pub fn from_json(json: &str) -> Result<ExportOptions, SylvaError> {
+        let mut o = ExportOptions::default();
+        if json.trim().is_empty() {
+            return Ok(o);
+        }
+        let bad = |message: String| SylvaError::Input { message };
+        let v: serde_json::Value =
+            serde_json::from_str(json).map_err(|e| bad(format!("export options are not JSON: {e}")))?;
+        let map = v.as_object().ok_or_else(|| bad("export options must be a JSON object".into()))?;
+        for (k, v) in map {
+            let flag = || v.as_bool().ok_or_else(|| bad(format!("export option '{k}' must be true or false")));
+            match k.as_str() {
+                "leaves" => {
+                    o.leaves = v.as_str().and_then(LeafMode::from_name).ok_or_else(|| {
+                        bad(format!("export option 'leaves' must be \"instanced\", \"baked\" or \"none\", got {v}"))
+                    })?
+                }
+                "wind" => o.wind = flag()?,
+                "textures" => o.textures = flag()?,
+                "normal_maps" => o.normal_maps = flag()?,
+                "vertex_colors" => o.vertex_colors = flag()?,
+                "bark_texture_size" => {
+                    o.bark_texture_size =
+                        v.as_u64().filter(|&s| (16..=2048).contains(&s) && s.is_power_of_two()).ok_or_else(|| {
+                            bad(format!("export option 'bark_texture_size' must be a power of two 16..2048, got {v}"))
+                        })? as u32
+                }
+                other => return Err(bad(format!("unknown export option '{other}'"))),
+            }
+        }
+        Ok(o)
+    }
+}
+
+/// The glTF GLB bytes of a tree ([`glb::write`]).
+pub fn to_glb(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
+    glb::write(g, opts)
+}
+
+/// Per-vertex bark tint, RGBA8 (A = 255), multiplied with the bark texture by viewers: old bark
+/// at the foot of the tree is darker and a little greener (soil splash, moss), young bark
+/// higher up and on thin stems lighter and greyer. With wind data the "age" is the stem's
+/// stiffness (local radius relative to the trunk base); without it, the height above the
+/// ground relative to the tree's height. The tint is a function of two numbers in 0..1
+/// (youth, nearness to the ground), tabulated at [`TINT_STEPS`] steps each: the export pays
+/// one table look-up per vertex.
+pub fn bark_colors(mesh: &TreeMesh) -> Vec<u8> {
+    let mut out = vec![0u8; mesh.vertex_count() * 4];
+    bark_colors_into(mesh, &mut out);
+    out
+}
+
+/// [`bark_colors`] written into `out` (4 bytes per vertex).
+pub fn bark_colors_into(mesh: &TreeMesh, out: &mut [u8]) {
+    let n = mesh.vertex_count();
+    let b = mesh.bounds();
+    let height = (b.max[1] - b.min[1]).max(1e-6);
+    let foot = 0.08 * height;
+    let steps = (TINT_STEPS - 1) as f32;
+    // Table [young][ground] of RGBA words.
+    let mut table = vec![[0u8; 4]; TINT_STEPS * TINT_STEPS];
+    for (k, e) in table.iter_mut().enumerate() {
+        let (young, ground) = ((k / TINT_STEPS) as f32 / steps, (k % TINT_STEPS) as f32 / steps);
+        let light = 0.82 + 0.18 * young - 0.22 * ground;
+        let grey = 0.12 * young; // young bark: less brown
+        let r = light * ((1.0 - 0.10 * ground) * (1.0 - grey) + grey);
+        let g = light * (1.0 + 0.04 * ground);
+        let bl = light * ((1.0 - 0.12 * ground) * (1.0 - grey) + grey * 1.02);
+        *e = [unorm8(r), unorm8(g), unorm8(bl), 255];
+    }
+    let (y_young, y_ground) = (steps / height, steps / foot.max(1e-6));
+    let step = |x: f32| (x.clamp(0.0, steps) + 0.5) as usize;
+    let ys = mesh.positions.chunks_exact(3).map(|p| p[1] - b.min[1]);
+    if mesh.wind.len() == n * crate::mesh::WIND_STRIDE && n > 0 {
+        let stiff = mesh.wind.chunks_exact(crate::mesh::WIND_STRIDE).map(|w| w[5]);
+        for ((c, y), s) in out.chunks_exact_mut(4).zip(ys).zip(stiff) {
+            let young = step((1.0 - s) * steps);
+            c.copy_from_slice(&table[young * TINT_STEPS + step(steps - y * y_ground)]);
+        }
+    } else {
+        for (c, y) in out.chunks_exact_mut(4).zip(ys) {
+            c.copy_from_slice(&table[step(y * y_young) * TINT_STEPS + step(steps - y * y_ground)]);
+        }
+    }
+}
+
+/// Steps per axis of the bark tint table ([`bark_colors`]).
+pub const TINT_STEPS: usize = 64;
+
+/// 0..1 to 0..255, rounded, clamped.
+#[inline]
+fn unorm8(x: f32) -> u8 {
+    (x.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+/// Per-vertex tangents, 4 floats each (glTF `TANGENT`): `xyz` = the unit direction of
+/// increasing `u` in the surface, `w` = ±1 such that `cross(normal, xyz) · w` points along
+/// increasing `v` (so a tangent-space normal map whose `x` runs along `u` and `y` along `v`,
+/// as the baked bark and leaf maps do, is read the right way up by the glTF formula
+/// `bitangent = cross(normal, tangent.xyz) * tangent.w`).
+///
+/// Lengyel's method: each triangle adds its `dP/du` (weighted by its UV area) to its three
+/// vertices and votes for the handedness `sign(du1·dv2 − du2·dv1)`; the sum is made
+/// perpendicular to the normal and normalised. Vertices no triangle gives a direction get any
+/// unit vector perpendicular to the normal.
+pub fn tangents(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32]) -> Vec<f32> {
+    let mut bytes = vec![0u8; positions.len() / 3 * 16];
+    tangents_into(positions, normals, uvs, indices, &mut bytes);
+    bytes.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect()
+}
+
+/// [`tangents`] written as little-endian `f32` bytes into `out` (16 bytes per vertex, which must
+/// be zero on entry: it is the accumulator). The GLB writer computes the tangents straight into
+/// its output buffer this way, without a temporary array.
+pub fn tangents_into(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32], out: &mut [u8]) {
+    #[inline(always)]
+    fn get(o: &[u8; 16]) -> [f32; 4] {
+        let f = |k: usize| f32::from_le_bytes([o[k], o[k + 1], o[k + 2], o[k + 3]]);
+        [f(0), f(4), f(8), f(12)]
+    }
+    #[inline(always)]
+    fn put(o: &mut [u8; 16], v: [f32; 4]) {
+        for (k, x) in v.iter().enumerate() {
+            o[4 * k..4 * k + 4].copy_from_slice(&x.to_le_bytes());
+        }
+    }
+    #[inline(always)]
+    fn slot(out: &mut [u8], v: usize) -> &mut [u8; 16] {
+        (&mut out[16 * v..16 * v + 16]).try_into().expect("16 bytes per vertex")
+    }
+    let p = |i: usize| Vec3::new(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+    for tri in indices.chunks_exact(3) {
+        let (a, b, c) = (tri[0] as usize, tri[1] as usize, tri[2] as usize);
+        let (pa, pb, pc) = (p(a), p(b), p(c));
+        let (e1, e2) = (pb - pa, pc - pa);
+        let (du1, dv1) = (uvs[2 * b] - uvs[2 * a], uvs[2 * b + 1] - uvs[2 * a + 1]);
+        let (du2, dv2) = (uvs[2 * c] - uvs[2 * a], uvs[2 * c + 1] - uvs[2 * a + 1]);
+        let r = du1 * dv2 - du2 * dv1;
+        if r == 0.0 || !r.is_finite() {
+            continue;
+        }
+        let s = if r > 0.0 { 1.0 } else { -1.0 };
+        let dir = (e1 * dv2 - e2 * dv1) * s;
+        for v in [a, b, c] {
+            let o = slot(out, v);
+            let [x, y, z, w] = get(o);
+            put(o, [x + dir.x, y + dir.y, z + dir.z, w + s]);
+        }
+    }
+    for (o, nn) in out.chunks_exact_mut(16).zip(normals.chunks_exact(3)) {
+        let o: &mut [u8; 16] = o.try_into().expect("16 bytes per vertex");
+        let [x, y, z, w] = get(o);
+        let nv = Vec3::new(nn[0], nn[1], nn[2]);
+        let d = Vec3::new(x, y, z);
+        let u = crate::math::unit_or(d - nv * nv.dot(d), || {
+            crate::math::unit_or(nv.cross(Vec3::Y), || crate::math::unit_or(nv.cross(Vec3::X), || Vec3::X))
+        });
+        put(o, [u.x, u.y, u.z, if w < 0.0 { -1.0 } else { 1.0 }]);
+    }
+}
+
+/// One leaf instance matrix (column-major 4×4) as glTF TRS: translation, unit rotation
+/// quaternion `[x, y, z, w]` and scale. The columns of the upper 3×3 are taken as the scaled
+/// axes; a mirroring matrix gets a negative `x` scale. Exact for the foliage's matrices, whose
+/// axes are perpendicular.
+pub fn decompose(m: &[f32]) -> ([f32; 3], [f32; 4], [f32; 3]) {
+    let c0 = Vec3::new(m[0], m[1], m[2]);
+    let c1 = Vec3::new(m[4], m[5], m[6]);
+    let c2 = Vec3::new(m[8], m[9], m[10]);
+    let mut s = Vec3::new(c0.length(), c1.length(), c2.length());
+    if c0.cross(c1).dot(c2) < 0.0 {
+        s.x = -s.x;
+    }
+    let safe = |v: Vec3, l: f32| if l != 0.0 { v / l } else { v };
+    let (x, y) = (safe(c0, s.x), safe(c1, s.y));
+    // Re-orthonormalise (Gram-Schmidt) so the quaternion is a proper rotation.
+    let x = crate::math::unit_or(x, || Vec3::X);
+    let y = crate::math::unit_or(y - x * x.dot(y), || crate::math::unit_or(x.cross(Vec3::Z), || Vec3::Y));
+    let z = x.cross(y);
+    let q = Quat::from_mat3(&Mat3::from_cols(x, y, z)).normalize();
+    ([m[12], m[13], m[14]], q.to_array(), s.to_array())
+}
+
+/// The leaves as one mesh in tree space: each instance's copy of the leaf mesh transformed by
+/// its matrix (normals by the inverse transpose), plus per-vertex RGBA8 colours from the
+/// per-leaf tint (clamped to 0..1) and, when asked, tangents.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct BakedLeaves {
+    /// The geometry (one `leaves` group).
+    pub mesh: TreeMesh,
+    /// RGBA8 per vertex.
+    pub colors: Vec<u8>,
+    /// 4 floats per vertex (see [`tangents`]), empty unless asked for.
+    pub tangents: Vec<f32>,
+}
+
+/// Bakes the instanced foliage into one mesh ([`BakedLeaves`]); `with_tangents` also transforms
+/// the leaf mesh's tangents.
+pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
+    let leaf = &f.mesh;
+    let (nv, count) = (leaf.vertex_count(), f.count());
+    let leaf_t =
+        if with_tangents { tangents(&leaf.positions, &leaf.normals, &leaf.uvs, &leaf.indices) } else { Vec::new() };
+    let total = nv * count;
+    let mut mesh = TreeMesh {
+        positions: Vec::with_capacity(total * 3),
+        normals: Vec::with_capacity(total * 3),
+        uvs: Vec::with_capacity(total * 2),
+        indices: Vec::with_capacity(leaf.indices.len() * count),
+        groups: Vec::new(),
+        wind: Vec::new(),
+    };
+    let mut colors = Vec::with_capacity(total * 4);
+    let mut tan = Vec::with_capacity(if with_tangents { total * 4 } else { 0 });
+    for (k, (m, rgb)) in f.matrices.chunks_exact(16).zip(f.colors.chunks_exact(3)).enumerate() {
+        let lin =
+            Mat3::from_cols(Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]), Vec3::new(m[8], m[9], m[10]));
+        let t = Vec3::new(m[12], m[13], m[14]);
+        let det = lin.determinant();
+        let normal_m = if det != 0.0 { lin.inverse().transpose() } else { lin };
+        for v in 0..nv {
+            let p = Vec3::from_slice(&leaf.positions[3 * v..3 * v + 3]);
+            mesh.positions.extend_from_slice(&(lin * p + t).to_array());
+            let n = Vec3::from_slice(&leaf.normals[3 * v..3 * v + 3]);
+            let n = crate::math::unit_or(normal_m * n, || Vec3::Y);
+            mesh.normals.extend_from_slice(&n.to_array());
+            mesh.uvs.extend_from_slice(&leaf.uvs[2 * v..2 * v + 2]);
+            if with_tangents {
+                let d = Vec3::from_slice(&leaf_t[4 * v..4 * v + 3]);
+                let d = lin * d;
+                let d = crate::math::unit_or(d - n * n.dot(d), || crate::math::unit_or(n.cross(Vec3::Y), || Vec3::X));
+                let w = if det < 0.0 { -leaf_t[4 * v + 3] } else { leaf_t[4 * v + 3] };
+                tan.extend_from_slice(&[d.x, d.y, d.z, w]);
+            }
+        }
+        let first = (k * nv) as u32;
+        for tri in leaf.indices.chunks_exact(3) {
+            let (a, b, c) = (tri[0] + first, tri[1] + first, tri[2] + first);
+            // A mirroring matrix flips the winding; keep the front counter-clockwise.
+            if det < 0.0 {
+                mesh.indices.extend_from_slice(&[a, c, b]);
+            } else {
+                mesh.indices.extend_from_slice(&[a, b, c]);
+            }
+        }
+        let c = [unorm8(rgb[0]), unorm8(rgb[1]), unorm8(rgb[2]), 255];
+        for _ in 0..nv {
+            colors.extend_from_slice(&c);
+        }
+    }
+    if !mesh.indices.is_empty() {
+        mesh.groups.push(crate::mesh::MeshGroup {
+            material: crate::mesh::Material::Leaves,
+            start: 0,
+            count: mesh.indices.len() as u32,
+        });
+    }
+    BakedLeaves { mesh, colors, tangents: tan }
+}
+
+/// Encoded PNG textures: colour and normal map.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TexturePngs {
+    /// Width in texels.
+    pub width: u32,
+    /// Height in texels.
+    pub height: u32,
+    /// The colour map as a PNG file (RGBA8).
+    pub color: Vec<u8>,
+    /// The tangent-space normal map as a PNG file (RGBA8, A = height).
+    pub normal: Vec<u8>,
+}
+
+type PngCache = Mutex<Option<(u64, Arc<TexturePngs>)>>;
+static BARK_PNGS: PngCache = Mutex::new(None);
+static LEAF_PNGS: PngCache = Mutex::new(None);
+
+/// `make()` once per `key` (the last key is kept; the textures are pure functions of the key,
+/// so the cache never changes a result, it only saves the encoding time of repeated exports).
+fn cached(cache: &PngCache, key: u64, make: impl FnOnce() -> TexturePngs) -> Arc<TexturePngs> {
+    if let Ok(slot) = cache.lock() {
+        if let Some((k, v)) = slot.as_ref() {
+            if *k == key {
+                return Arc::clone(v);
+            }
+        }
+    }
+    let v = Arc::new(make());
+    if let Ok(mut slot) = cache.lock() {
+        *slot = Some((key, Arc::clone(&v)));
+    }
+    v
+}
+
+/// The baked bark textures ([`crate::mesh::bark::bake`], seed 1, as the viewer uses) as PNGs,
+/// `size` texels square.
+pub fn bark_pngs(size: u32) -> Arc<TexturePngs> {
+    cached(&BARK_PNGS, u64::from(size), || {
+        let (c, n) = crate::mesh::bark::bake(size as usize, 1);
+        let s = c.size as u32;
+        TexturePngs {
+            width: s,
+            height: s,
+            color: png::encode_rgba(s, s, &c.rgba),
+            normal: png::encode_rgba(s, s, &n.rgba),
+        }
+    })
+}
+
+/// The baked leaf textures of `f` as PNGs (`None` when the tree is bare). Cached by leaf hash.
+pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
+    let leaf = f.leaf.as_deref()?;
+    let t = &leaf.texture;
+    Some(cached(&LEAF_PNGS, leaf.hash, || TexturePngs {
+        width: t.width,
+        height: t.height,
+        color: png::encode_rgba(t.width, t.height, &t.color),
+        normal: png::encode_rgba(t.width, t.height, &t.normal),
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn options_from_json() {
+        assert_eq!(ExportOptions::from_json("").unwrap(), ExportOptions::default());
+        let o = ExportOptions::from_json(r#"{"leaves":"Baked","wind":false,"bark_texture_size":64}"#).unwrap();
+        assert_eq!(o.leaves, LeafMode::Baked);
+        assert!(!o.wind && o.textures);
+        assert_eq!(o.bark_texture_size, 64);
+        for bad in [r#"{"leaves":"some"}"#, r#"{"wind":1}"#, r#"{"size":1}"#, "[1]", r#"{"bark_texture_size":100}"#] {
+            assert!(ExportOptions::from_json(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn decompose_recovers_the_matrix() {
+        // Rotation of 0.7 rad about a tilted axis, scales (0.3, 0.5, 0.5), translation.
+        let q = Quat::from_axis_angle(Vec3::new(1.0, 2.0, 0.5).normalize(), 0.7);
+        let m = glam::Mat4::from_scale_rotation_translation(Vec3::new(0.3, 0.5, 0.5), q, Vec3::new(1.0, 2.0, 3.0));
+        let (t, r, s) = decompose(&m.to_cols_array());
+        let back = glam::Mat4::from_scale_rotation_translation(Vec3::from(s), Quat::from_array(r), Vec3::from(t));
+        for (a, b) in back.to_cols_array().iter().zip(m.to_cols_array()) {
+            assert!((a - b).abs() < 1e-5, "{back} vs {m}");
+        }
+        assert!((Quat::from_array(r).length() - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn tangents_follow_u_and_v() {
+        // A quad in the xy plane facing +z: u along +x, v along +y -> tangent +x, w = +1
+        // (cross(+z, +x) = +y = +v).
+        let pos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0];
+        let nrm = [0.0, 0.0, 1.0].repeat(4);
+        let uv = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+        let t = tangents(&pos, &nrm, &uv, &[0, 1, 2, 0, 2, 3]);
+        for v in t.chunks_exact(4) {
+            assert_eq!(v, [1.0, 0.0, 0.0, 1.0]);
+        }
+        // v running down (-y): the bitangent must flip, w = -1.
+        let uv = [0.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0];
+        let t = tangents(&pos, &nrm, &uv, &[0, 1, 2, 0, 2, 3]);
+        for v in t.chunks_exact(4) {
+            assert_eq!(v, [1.0, 0.0, 0.0, -1.0]);
+        }
+    }
+
+    #[test]
+    fn bark_colors_are_darker_at_the_foot() {
+        let mesh = TreeMesh {
+            positions: vec![0.0, 0.0, 0.0, 0.0, 5.0, 0.0, 0.0, 10.0, 0.0],
+            normals: [1.0, 0.0, 0.0].repeat(3),
+            uvs: vec![0.0; 6],
+            indices: vec![0, 1, 2],
+            groups: Vec::new(),
+            wind: Vec::new(),
+        };
+        let c = bark_colors(&mesh);
+        assert_eq!(c.len(), 12);
+        let lum = |i: usize| c[4 * i] as u32 + c[4 * i + 1] as u32 + c[4 * i + 2] as u32;
+        assert!(lum(0) < lum(1) && lum(1) < lum(2), "{c:?}");
+        assert!(c.chunks_exact(4).all(|p| p[3] == 255));
+    }
+}

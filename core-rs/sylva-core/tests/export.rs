@@ -1,0 +1,318 @@
+//! The exporters (`sylva_core::export`): GLB structure read back with a small test-side parser
+//! (header, chunk alignment and padding, buffer views, accessors, min/max, counts), the three
+//! leaf modes, the wind attributes, determinism, and the OBJ/MTL text.
+
+use serde_json::Value;
+use sylva_core::export::{self, ExportOptions, LeafMode};
+use sylva_core::{generate, presets, Generated, TreeParams};
+
+fn preset(name: &str) -> Generated {
+    generate(&presets::find(name).expect("preset").params().expect("params")).expect("generate")
+}
+
+/// A parsed GLB: the JSON and the BIN chunk.
+struct Glb {
+    json: Value,
+    bin: Vec<u8>,
+}
+
+fn u32_at(b: &[u8], at: usize) -> u32 {
+    u32::from_le_bytes(b[at..at + 4].try_into().unwrap())
+}
+
+/// Parses and checks the container: header, chunk types, lengths, 4-byte alignment, padding.
+fn parse(bytes: &[u8]) -> Glb {
+    assert_eq!(&bytes[0..4], b"glTF");
+    assert_eq!(u32_at(bytes, 4), 2, "version");
+    assert_eq!(u32_at(bytes, 8) as usize, bytes.len(), "total length");
+    let json_len = u32_at(bytes, 12) as usize;
+    assert_eq!(&bytes[16..20], b"JSON");
+    assert_eq!(json_len % 4, 0, "JSON chunk aligned");
+    let text = std::str::from_utf8(&bytes[20..20 + json_len]).unwrap();
+    assert!(text.ends_with('}') || text.ends_with(' '), "JSON padded with spaces");
+    let json: Value = serde_json::from_str(text.trim_end_matches(' ')).unwrap();
+    let at = 20 + json_len;
+    let bin = if at < bytes.len() {
+        let bin_len = u32_at(bytes, at) as usize;
+        assert_eq!(&bytes[at + 4..at + 8], b"BIN\0");
+        assert_eq!(bin_len % 4, 0, "BIN chunk aligned");
+        assert_eq!(at + 8 + bin_len, bytes.len());
+        bytes[at + 8..].to_vec()
+    } else {
+        Vec::new()
+    };
+    let buffer_len = json["buffers"][0]["byteLength"].as_u64().unwrap_or(0) as usize;
+    assert!(buffer_len <= bin.len() && bin.len() <= buffer_len + 3, "buffer {buffer_len} in chunk {}", bin.len());
+    assert!(bin[buffer_len..].iter().all(|&b| b == 0), "BIN padded with zeros");
+    Glb { json, bin }
+}
+
+fn component_size(ct: u64) -> usize {
+    match ct {
+        5121 => 1,
+        5123 => 2,
+        5125 | 5126 => 4,
+        other => panic!("component type {other}"),
+    }
+}
+
+fn components(kind: &str) -> usize {
+    match kind {
+        "SCALAR" => 1,
+        "VEC2" => 2,
+        "VEC3" => 3,
+        "VEC4" => 4,
+        other => panic!("type {other}"),
+    }
+}
+
+impl Glb {
+    fn accessor(&self, i: u64) -> &Value {
+        &self.json["accessors"][i as usize]
+    }
+
+    /// The float values of a float accessor, element by element.
+    fn floats(&self, i: u64) -> Vec<Vec<f32>> {
+        let a = self.accessor(i);
+        assert_eq!(a["componentType"], 5126);
+        let v = &self.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+        let n = components(a["type"].as_str().unwrap());
+        let stride = v["byteStride"].as_u64().map_or(n * 4, |s| s as usize);
+        let base = v["byteOffset"].as_u64().unwrap() as usize + a["byteOffset"].as_u64().unwrap_or(0) as usize;
+        (0..a["count"].as_u64().unwrap() as usize)
+            .map(|e| {
+                (0..n)
+                    .map(|k| f32::from_le_bytes(self.bin[base + e * stride + 4 * k..][..4].try_into().unwrap()))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Every view and accessor fits, is aligned and is consistent.
+    fn check_layout(&self) {
+        let views = self.json["bufferViews"].as_array().cloned().unwrap_or_default();
+        for v in &views {
+            let (o, l) = (v["byteOffset"].as_u64().unwrap() as usize, v["byteLength"].as_u64().unwrap() as usize);
+            assert_eq!(o % 4, 0, "view offset aligned: {v}");
+            assert!(o + l <= self.bin.len());
+            if let Some(s) = v["byteStride"].as_u64() {
+                assert!(s % 4 == 0 && (4..=252).contains(&s), "{v}");
+            }
+        }
+        for a in self.json["accessors"].as_array().cloned().unwrap_or_default() {
+            let v = &views[a["bufferView"].as_u64().unwrap() as usize];
+            let size = component_size(a["componentType"].as_u64().unwrap()) * components(a["type"].as_str().unwrap());
+            let stride = v["byteStride"].as_u64().map_or(size, |s| s as usize);
+            let offset = a["byteOffset"].as_u64().unwrap_or(0) as usize;
+            let count = a["count"].as_u64().unwrap() as usize;
+            assert!(count > 0, "{a}");
+            assert_eq!(offset % 4, 0, "accessor offset aligned {a}");
+            assert!(offset + stride * (count - 1) + size <= v["byteLength"].as_u64().unwrap() as usize, "{a} in {v}");
+        }
+    }
+
+    fn node(&self, name: &str) -> Option<&Value> {
+        self.json["nodes"].as_array().unwrap().iter().find(|n| n["name"] == name)
+    }
+
+    fn mesh_of(&self, node: &str) -> &Value {
+        &self.json["meshes"][self.node(node).unwrap()["mesh"].as_u64().unwrap() as usize]
+    }
+
+    /// Total index count over a mesh's primitives.
+    fn index_count(&self, mesh: &Value) -> u64 {
+        mesh["primitives"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|p| self.accessor(p["indices"].as_u64().unwrap())["count"].as_u64().unwrap())
+            .sum()
+    }
+}
+
+#[test]
+fn glb_container_layout_and_counts() {
+    let g = preset("default");
+    let bytes = export::to_glb(&g, &ExportOptions::default());
+    let glb = parse(&bytes);
+    glb.check_layout();
+    let j = &glb.json;
+    assert_eq!(j["asset"]["version"], "2.0");
+    assert_eq!(j["asset"]["generator"], format!("Sylva {}", sylva_core::VERSION));
+    assert_eq!(j["scenes"][0]["extras"]["sylva_hash"], g.hash_hex());
+    // Bark: counts, min/max exactly the data's bounds, u32 indices (more than 65,535 vertices).
+    let bark = glb.mesh_of("bark");
+    let attrs = &bark["primitives"][0]["attributes"];
+    let pos = attrs["POSITION"].as_u64().unwrap();
+    assert_eq!(glb.accessor(pos)["count"], g.mesh.vertex_count());
+    let b = g.mesh.bounds();
+    let min: Vec<f32> =
+        glb.accessor(pos)["min"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap() as f32).collect();
+    let max: Vec<f32> =
+        glb.accessor(pos)["max"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap() as f32).collect();
+    assert_eq!((min.as_slice(), max.as_slice()), (&b.min[..], &b.max[..]));
+    let back = glb.floats(pos);
+    assert_eq!(back.len() * 3, g.mesh.positions.len());
+    assert_eq!(back[17], g.mesh.positions[51..54].to_vec());
+    assert_eq!(glb.index_count(bark), g.mesh.indices.len() as u64);
+    assert_eq!(glb.accessor(bark["primitives"][0]["indices"].as_u64().unwrap())["componentType"], 5125);
+    for key in ["NORMAL", "TEXCOORD_0", "TANGENT", "COLOR_0"] {
+        assert_eq!(glb.accessor(attrs[key].as_u64().unwrap())["count"], g.mesh.vertex_count(), "{key}");
+    }
+    // Tangents: unit, perpendicular to the normals, w = ±1.
+    let (t, n) = (glb.floats(attrs["TANGENT"].as_u64().unwrap()), glb.floats(attrs["NORMAL"].as_u64().unwrap()));
+    for (t, n) in t.iter().zip(&n).step_by(97) {
+        let len = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
+        assert!(
+            (len - 1.0).abs() < 1e-4 && (t[0] * n[0] + t[1] * n[1] + t[2] * n[2]).abs() < 1e-3 && t[3].abs() == 1.0
+        );
+    }
+    // Leaves, instanced: one TRS + colour per leaf, unit quaternions.
+    let leaves = glb.node("leaves").unwrap();
+    let inst = &leaves["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
+    for key in ["TRANSLATION", "ROTATION", "SCALE", "_COLOR_0"] {
+        assert_eq!(glb.accessor(inst[key].as_u64().unwrap())["count"], g.foliage.count(), "{key}");
+    }
+    for q in glb.floats(inst["ROTATION"].as_u64().unwrap()) {
+        assert!(((q.iter().map(|x| x * x).sum::<f32>()).sqrt() - 1.0).abs() < 1e-5);
+    }
+    let t = glb.floats(inst["TRANSLATION"].as_u64().unwrap());
+    assert_eq!(t[3], g.foliage.matrices[3 * 16 + 12..3 * 16 + 15].to_vec());
+    assert_eq!(j["extensionsUsed"], serde_json::json!(["EXT_mesh_gpu_instancing"]));
+    assert!(j.get("extensionsRequired").is_none());
+    // Materials and embedded PNG images.
+    let mats = j["materials"].as_array().unwrap();
+    assert_eq!(mats[0]["name"], "bark");
+    assert_eq!(mats[0]["pbrMetallicRoughness"]["metallicFactor"], 0.0);
+    assert_eq!(mats[1]["alphaMode"], "MASK");
+    assert_eq!(mats[1]["doubleSided"], true);
+    assert_eq!(j["images"].as_array().unwrap().len(), 4);
+    for img in j["images"].as_array().unwrap() {
+        let v = &j["bufferViews"][img["bufferView"].as_u64().unwrap() as usize];
+        assert_eq!(img["mimeType"], "image/png");
+        assert!(v.get("byteStride").is_none() && v.get("target").is_none());
+        assert_eq!(&glb.bin[v["byteOffset"].as_u64().unwrap() as usize..][..8], b"\x89PNG\r\n\x1a\n");
+    }
+    assert_eq!(j["samplers"][0]["wrapS"], 10497);
+    // Deterministic bytes, and write_into gives the same bytes into a reused buffer.
+    assert_eq!(export::to_glb(&g, &ExportOptions::default()), bytes);
+    let mut reused = vec![7u8; 100];
+    export::glb::write_into(&g, &ExportOptions::default(), &mut reused);
+    assert_eq!(reused, bytes);
+}
+
+#[test]
+fn glb_leaf_modes_and_options() {
+    let g = preset("grown_bushy");
+    // Small tree: u16 indices.
+    let inst = parse(&export::to_glb(&g, &ExportOptions::default()));
+    let bark = inst.mesh_of("bark");
+    assert_eq!(inst.accessor(bark["primitives"][0]["indices"].as_u64().unwrap())["componentType"], 5123);
+    // Baked: one mesh with every leaf, COLOR_0 from the leaf tints.
+    let baked = parse(&export::to_glb(&g, &ExportOptions { leaves: LeafMode::Baked, ..Default::default() }));
+    baked.check_layout();
+    let leaves = baked.mesh_of("leaves");
+    let attrs = &leaves["primitives"][0]["attributes"];
+    let nv = g.foliage.mesh.vertex_count() * g.foliage.count();
+    assert!(nv > 0);
+    assert_eq!(baked.accessor(attrs["POSITION"].as_u64().unwrap())["count"], nv);
+    assert_eq!(baked.accessor(attrs["COLOR_0"].as_u64().unwrap())["normalized"], true);
+    assert_eq!(baked.index_count(leaves), (g.foliage.mesh.indices.len() * g.foliage.count()) as u64);
+    assert!(baked.json.get("extensionsUsed").is_none());
+    // Baked positions are the instance matrices applied to the leaf mesh.
+    let p = baked.floats(attrs["POSITION"].as_u64().unwrap());
+    let m = glam::Mat4::from_cols_slice(&g.foliage.matrices[16..32]);
+    let q = m.transform_point3(glam::Vec3::from_slice(&g.foliage.mesh.positions[0..3]));
+    let got = &p[g.foliage.mesh.vertex_count()];
+    assert!((q - glam::Vec3::new(got[0], got[1], got[2])).length() < 1e-5);
+    // None: no leaf node, no leaf material.
+    let none = parse(&export::to_glb(&g, &ExportOptions { leaves: LeafMode::None, ..Default::default() }));
+    assert!(none.node("leaves").is_none());
+    assert_eq!(none.json["materials"].as_array().unwrap().len(), 1);
+    // No textures: no images, samplers or tangents; plain colour factors.
+    let plain =
+        parse(&export::to_glb(&g, &ExportOptions { textures: false, vertex_colors: false, ..Default::default() }));
+    plain.check_layout();
+    assert!(plain.json.get("images").is_none() && plain.json.get("samplers").is_none());
+    let attrs = &plain.mesh_of("bark")["primitives"][0]["attributes"];
+    assert!(attrs.get("TANGENT").is_none() && attrs.get("COLOR_0").is_none());
+    assert!(plain.json["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"].is_array());
+}
+
+#[test]
+fn glb_wind_attributes_share_one_strided_view() {
+    let mut g = preset("grown_bushy");
+    let n = g.mesh.vertex_count();
+    // Synthetic wind data: 8 distinct floats per vertex.
+    g.mesh.wind = (0..n * 8).map(|i| i as f32 * 0.25).collect();
+    let glb = parse(&export::to_glb(&g, &ExportOptions::default()));
+    glb.check_layout();
+    let bark = glb.mesh_of("bark");
+    let attrs = &bark["primitives"][0]["attributes"];
+    let (pivot, params) = (attrs["_WIND_PIVOT"].as_u64().unwrap(), attrs["_WIND_PARAMS"].as_u64().unwrap());
+    let (a, b) = (glb.accessor(pivot), glb.accessor(params));
+    assert_eq!(a["bufferView"], b["bufferView"]);
+    assert_eq!(glb.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize]["byteStride"], 32);
+    assert_eq!((a["byteOffset"].as_u64().unwrap_or(0), b["byteOffset"].as_u64().unwrap()), (0, 16));
+    assert_eq!((a["type"].as_str(), a["count"].as_u64()), (Some("VEC4"), Some(n as u64)));
+    let (pv, pp) = (glb.floats(pivot), glb.floats(params));
+    assert_eq!(pv[5], g.mesh.wind[40..44].to_vec());
+    assert_eq!(pp[5], g.mesh.wind[44..48].to_vec());
+    assert!(bark["extras"]["wind_attributes"]["_WIND_PARAMS"].as_str().unwrap().contains("stiffness"));
+    // Off by option; and an empty `wind` writes nothing.
+    let off = parse(&export::to_glb(&g, &ExportOptions { wind: false, ..Default::default() }));
+    assert!(off.mesh_of("bark")["primitives"][0]["attributes"].get("_WIND_PIVOT").is_none());
+    g.mesh.wind.clear();
+    let none = parse(&export::to_glb(&g, &ExportOptions::default()));
+    assert!(none.mesh_of("bark")["primitives"][0]["attributes"].get("_WIND_PARAMS").is_none());
+}
+
+#[test]
+fn bare_tree_exports_without_leaves() {
+    let mut p = TreeParams::default();
+    p.leaves = 0;
+    let g = generate(&p).unwrap();
+    assert_eq!(g.foliage.count(), 0);
+    let glb = parse(&export::to_glb(&g, &ExportOptions::default()));
+    glb.check_layout();
+    assert!(glb.node("leaves").is_none());
+    assert!(glb.json.get("extensionsUsed").is_none());
+    assert_eq!(glb.json["images"].as_array().unwrap().len(), 2);
+}
+
+#[test]
+fn obj_and_mtl() {
+    let g = preset("grown_bushy");
+    let o = ExportOptions::default();
+    let files = export::obj::write(&g, &o, "bush");
+    let lines = |p: &str| files.obj.lines().filter(|l| l.starts_with(p)).count();
+    let leaf_v = g.foliage.mesh.vertex_count() * g.foliage.count();
+    let leaf_t = g.foliage.mesh.triangle_count() * g.foliage.count();
+    assert_eq!(lines("v "), g.mesh.vertex_count() + leaf_v);
+    assert_eq!(lines("vt "), g.mesh.vertex_count() + leaf_v);
+    assert_eq!(lines("vn "), g.mesh.vertex_count() + leaf_v);
+    assert_eq!(lines("f "), g.mesh.triangle_count() + leaf_t);
+    assert!(files.obj.contains("mtllib bush.mtl\n") && files.obj.contains("usemtl leaves\n"));
+    // Faces index within range (1-based, global).
+    let total = (g.mesh.vertex_count() + leaf_v) as u64;
+    for l in files.obj.lines().filter(|l| l.starts_with("f ")) {
+        for c in l[2..].split(' ') {
+            let i: u64 = c.split('/').next().unwrap().parse().unwrap();
+            assert!((1..=total).contains(&i), "{l}");
+        }
+    }
+    // Vertex colours as three extra numbers; positions read back exactly.
+    let first = files.obj.lines().find(|l| l.starts_with("v ")).unwrap();
+    let nums: Vec<f32> = first[2..].split(' ').map(|x| x.parse().unwrap()).collect();
+    assert_eq!(nums.len(), 6);
+    assert_eq!(nums[..3], g.mesh.positions[..3]);
+    for name in ["bush_bark_color.png", "bush_bark_normal.png", "bush_leaf_color.png", "bush_leaf_normal.png"] {
+        assert!(files.mtl.contains(name), "{name} in\n{}", files.mtl);
+        let png = &files.textures.iter().find(|(n, _)| n == name).unwrap().1;
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    }
+    assert_eq!(export::obj::write(&g, &o, "bush"), files, "deterministic");
+    // Leaves none: bark only.
+    let bare = export::obj::obj(&g, &ExportOptions { leaves: LeafMode::None, ..o }, "bush");
+    assert_eq!(bare.lines().filter(|l| l.starts_with("f ")).count(), g.mesh.triangle_count());
+}
