@@ -196,7 +196,7 @@ fn generate(args: &[String]) -> Result<String, String> {
         let t = sylva_core::mesh::topology::topology(&g.mesh);
         out["non_manifold_edges"] = t.non_manifold_edges.into();
         out["boundary_edges"] = t.boundary_edges.into();
-        out["holes"] = 0.into(); // tree holes are not generated yet (issue 5)
+        out["holes"] = g.stats.holes.into();
     }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g

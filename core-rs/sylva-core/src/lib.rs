@@ -3,7 +3,7 @@
 //! A pure Rust procedural tree generator. The pipeline is a chain of plain-data stages:
 //!
 //! ```text
-//! TreeParams --validate--> skeleton::build --> mesh::tube::build --> TreeMesh (+ hash, stats)
+//! TreeParams --validate--> skeleton::build --> mesh::tube::build --> mesh::holes::cut --> TreeMesh (+ hash, stats)
 //! ```
 //!
 //! * [`params`]: the parameter registry, the single source of truth for the UI, URLs and docs.
@@ -11,7 +11,7 @@
 //! * [`crown`]: Weber & Penn's ShapeRatio crown envelopes.
 //! * [`skeleton`]: Weber & Penn stems.
 //! * [`growth`]: space-colonization growth, an alternative source of stems.
-//! * [`mesh`]: the output buffer type and the bark tube sweep.
+//! * [`mesh`]: the output buffer type, the bark tube sweep, Bezier twigs and tree holes.
 //!
 //! Same parameters and seed give byte-identical buffers on every target (see `math`).
 
@@ -50,6 +50,8 @@ pub struct Stats {
     pub triangles: usize,
     /// Number of stems in the skeleton.
     pub stems: usize,
+    /// Number of tree holes cut into the bark ([`mesh::holes`]).
+    pub holes: usize,
     /// Milliseconds per stage, in pipeline order (`skeleton`, `mesh`, `hash`).
     pub stage_ms: Vec<(&'static str, f64)>,
     /// Milliseconds for the whole generation.
@@ -91,6 +93,7 @@ impl Generated {
             "vertices": self.stats.vertices,
             "triangles": self.stats.triangles,
             "stems": self.stats.stems,
+            "holes": self.stats.holes,
             "hash": self.hash_hex(),
             "bounds": self.bounds,
             "groups": self.mesh.groups,
@@ -135,7 +138,8 @@ pub fn generate_with_progress(
         }
     };
     let t1 = clock.now_ms();
-    let mesh = mesh::tube::build(&skeleton, params)?;
+    let (mut mesh, blocks) = mesh::tube::build_blocks(&skeleton, params)?;
+    let holes = mesh::holes::cut(&mut mesh, &blocks, &skeleton, params).len();
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
     let t_leaves = clock.now_ms();
@@ -146,6 +150,7 @@ pub fn generate_with_progress(
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
         stems: skeleton.stems.len(),
+        holes,
         stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("foliage", t_leaves - t2), ("hash", t3 - t_leaves)],
         total_ms: t3 - t0,
     };

@@ -11,6 +11,7 @@ use crate::crown::CrownShape;
 use crate::error::SylvaError;
 use crate::growth::{CrownVolumeKind, GrowthMode};
 use crate::leaf::options::{LeafLod, LeafMargin, LeafOutline, LeafVenation};
+use crate::mesh::twig::TwigDetail;
 use serde::Serialize;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -367,6 +368,18 @@ define_params! {
             "Random variation of the roots' directions and lengths (0 = evenly spaced, equal).";
         root_depth: f32 = 0.6; [0.0, 3.0, 0.05] "", "Trunk", "Root Depth",
             "How far the roots dive below the ground toward their tips, in root radii (0 = along the surface).";
+        hole_count: u32 = 0; [0, 16, 1] "", "Trunk", "Holes",
+            "Number of tree holes cut into the trunk (and level-1 stems at least Hole Min Radius thick), at concave spots of the bark, below big branch junctions and between root starts (0 = none).";
+        hole_size: f32 = 0.35; [0.05, 1.0, 0.01] "", "Trunk", "Hole Size",
+            "Half-width of a hole's opening as a fraction of the local stem radius (holes are 1.5 times taller than wide).";
+        hole_depth: f32 = 0.5; [0.05, 0.9, 0.01] "", "Trunk", "Hole Depth",
+            "Depth of the cavity behind a hole, as a fraction of the local stem radius.";
+        hole_min_radius: f32 = 0.1; [0.0, 5.0, 0.01] "m", "Trunk", "Hole Min Radius",
+            "Holes are cut only where the stem's local radius is at least this.";
+        hole_seed: u32 = 0; [0, 4_294_967_295u32, 1] "", "Trunk", "Hole Seed",
+            "Random seed of the hole placement: picks other candidate spots without changing the tree.";
+        twig_detail: TwigDetail = TwigDetail::Four; [0, 3, 1] "", "Quality", "Twig Detail",
+            "Bezier twigs (the thinnest stems): step along the control circle, 1 = four times the sides a tube of that radius gets, 4 = the same, 8 = half.";
         growth_mode: GrowthMode = GrowthMode::Parametric; [0, 1, 1] "", "Growth", "Growth Mode",
             "Parametric draws the tree with Weber & Penn's rules; Space Colonization grows it toward markers in a crown volume.";
         growth_age: f32 = 1.0; [0.0, 1.0, 0.01] "", "Growth", "Age",

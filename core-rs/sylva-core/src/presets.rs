@@ -189,6 +189,9 @@ pub const PRESETS: &[Preset] = &[
             ("lobes", 5.0),
             ("lobe_depth", 0.1),
             ("attraction_up", 0.8),
+            // An old oak: two tree holes in the lobed trunk (issue 5).
+            ("hole_count", 2.0),
+            ("hole_size", 0.3),
             ("l0_length", 1.0),
             ("l1_length", 0.8),
             ("l2_length", 0.2),

@@ -4,6 +4,7 @@ mod common;
 
 use common::{assert_mesh_invariants, edge_uses};
 use sylva_core::mesh::tube::sides_for;
+use sylva_core::mesh::{holes, twig};
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 #[test]
@@ -31,12 +32,24 @@ fn tips_are_closed_only_buried_bases_stay_open() {
         assert!(edges.values().all(|&u| u <= 2), "{}: an edge is shared by more than two triangles", preset.name);
         let open = edges.values().filter(|&&u| u == 1).count();
         // Each child stem's base ring (inside its parent) is the only open loop; the trunk is closed.
+        // Bezier twigs have their own number of sides, stems densified for holes more.
+        let twigs = twig::mask(&g.skeleton, &p);
+        let dense = holes::eligible(&g.skeleton, &p, &twigs);
         let expected: usize = g
             .skeleton
             .stems
             .iter()
-            .filter(|s| s.parent.is_some())
-            .map(|s| sides_for(s.radius, p.mesh_quality, 0) as usize)
+            .enumerate()
+            .filter(|(_, s)| s.parent.is_some())
+            .map(|(i, s)| {
+                if twigs[i] {
+                    twig::sides(s.radius, p.mesh_quality, p.twig_detail) as usize
+                } else if dense.get(i) == Some(&true) {
+                    holes::dense_sides(sides_for(s.radius, p.mesh_quality, 0), &p) as usize
+                } else {
+                    sides_for(s.radius, p.mesh_quality, 0) as usize
+                }
+            })
             .sum();
         assert_eq!(open, expected, "{}: open edges besides the buried stem bases", preset.name);
     }
@@ -165,7 +178,10 @@ fn the_guide_curve_moves_trunk_points_sideways_within_the_limit() {
 fn wind_attributes_follow_the_stems() {
     use sylva_core::mesh::WIND_STRIDE;
     for name in ["default", "ca_black_oak", "grown_broadleaf"] {
-        let g = generate(&sylva_core::presets::find(name).unwrap().params().unwrap()).unwrap();
+        // Without holes: a cavity's vertices copy their rim's records (tests/holes.rs checks
+        // that), so `v` and distance need not agree inside one.
+        let p = TreeParams { hole_count: 0, ..sylva_core::presets::find(name).unwrap().params().unwrap() };
+        let g = generate(&p).unwrap();
         let (m, stems) = (&g.mesh, &g.skeleton.stems);
         assert_eq!(m.wind.len(), WIND_STRIDE * m.vertex_count(), "{name}: wind length");
         assert!(m.wind.iter().all(|w| w.is_finite()), "{name}: non-finite wind");
@@ -217,4 +233,77 @@ fn wind_attributes_follow_the_stems() {
         let longest = stems.iter().enumerate().map(|(k, s)| base[k] + s.length).fold(0.0f32, f32::max);
         assert!((max - longest).abs() < 1e-3 * longest.max(1.0), "{name}: max distance {max} vs {longest}");
     }
+}
+
+#[test]
+fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
+    use sylva_core::mesh::twig::TwigDetail;
+    let mut sides_seen = Vec::new();
+    for i in 0..4 {
+        let p = TreeParams { twig_detail: TwigDetail::from_index(i), ..TreeParams::default() };
+        let g = generate(&p).unwrap();
+        assert_mesh_invariants(&g, &format!("twig detail {i}"));
+        let twigs = twig::mask(&g.skeleton, &p);
+        let count = twigs.iter().filter(|&&t| t).count();
+        assert!(count > 20, "the default tree has Bezier twigs: {count}");
+        // The only open edges are the buried bases: twigs are closed at their tips.
+        let open = edge_uses(&g.mesh).values().filter(|&&u| u == 1).count();
+        let expected: usize = g
+            .skeleton
+            .stems
+            .iter()
+            .zip(&twigs)
+            .filter(|(s, _)| s.parent.is_some())
+            .map(|(s, &t)| {
+                if t {
+                    twig::sides(s.radius, p.mesh_quality, p.twig_detail) as usize
+                } else {
+                    sides_for(s.radius, p.mesh_quality, 0) as usize
+                }
+            })
+            .sum();
+        assert_eq!(open, expected, "detail {i}");
+        let first = g.skeleton.stems.iter().zip(&twigs).find(|(_, &t)| t).unwrap().0;
+        sides_seen.push(twig::sides(first.radius, p.mesh_quality, p.twig_detail));
+        if i == 2 {
+            assert_eq!(sides_seen[2], sides_for(first.radius, p.mesh_quality, 0), "step 4 = the tube's sides");
+        }
+    }
+    assert!(sides_seen.windows(2).all(|w| w[0] > w[1]), "finer steps, more sides: {sides_seen:?}");
+    // One level deeper, the deepest stems are straight (one segment): all of them are twigs.
+    let p = TreeParams { levels: 4, ..TreeParams::default() };
+    let g = generate(&p).unwrap();
+    assert_mesh_invariants(&g, "levels 4");
+    let twigs = twig::mask(&g.skeleton, &p);
+    let deepest = g.skeleton.stems.iter().filter(|s| s.level == 3).count();
+    assert!(deepest > 1000);
+    assert_eq!(twigs.iter().filter(|&&t| t).count(), deepest);
+}
+
+#[test]
+fn twig_rings_follow_the_bezier_span_and_its_radii() {
+    use sylva_core::mesh::twig::{middle_radius, Span};
+    let p = TreeParams::default();
+    let g = generate(&p).unwrap();
+    let twigs = twig::mask(&g.skeleton, &p);
+    let (i, stem) = g.skeleton.stems.iter().enumerate().find(|(i, _)| twigs[*i]).unwrap();
+    let span = Span::fit(stem);
+    let l0 = (span.p[1] - span.p[0]).length();
+    let l1 = (span.p[2] - span.p[1]).length();
+    assert_eq!(span.r[1], middle_radius(l0, l1, span.r[0], span.r[2]));
+    // The span passes through the stem's base, the centre curve's midpoint and its tip.
+    assert!((span.point(0.5) - stem.sample(0.5).0).length() < 1e-5);
+    assert_eq!(span.point(0.0), stem.base());
+    assert!((span.point(1.0) - stem.tip()).length() < 1e-5);
+    // The twig's first ring is the control circle R0 around the base, across the first leg.
+    let (mesh, blocks) = sylva_core::mesh::tube::build_blocks(&g.skeleton, &p).unwrap();
+    let sides = twig::sides(stem.radius, p.mesh_quality, p.twig_detail) as usize;
+    let d0 = (span.p[1] - span.p[0]).normalize();
+    for v in blocks[i].start as usize..blocks[i].start as usize + sides + 1 {
+        let x = glam::Vec3::from_slice(&mesh.positions[v * 3..v * 3 + 3]);
+        assert!(((x - span.p[0]).length() - span.r[0]).abs() < 1e-4 * (1.0 + span.r[0]));
+        assert!((x - span.p[0]).dot(d0).abs() < 1e-4);
+    }
+    // Its block: rings of sides + 1 vertices and the apex.
+    assert_eq!((blocks[i].len() - 1) % (sides + 1), 0);
 }

@@ -3,9 +3,11 @@
 //! [`MeshBuilder`] (lyon's `GeometryBuilder` idea), so there is one layout to document and check.
 
 pub mod bark;
+pub mod holes;
 pub mod topology;
 pub mod trunk;
 pub mod tube;
+pub mod twig;
 
 use serde::Serialize;
 

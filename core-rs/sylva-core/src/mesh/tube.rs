@@ -7,13 +7,14 @@
 //! the trunk's base with a fan, so the only open edges are the buried bases of child stems.
 
 use super::trunk::{ring_circles, union_outline};
-use super::{Material, MeshBuilder, TreeMesh, WIND_STRIDE};
+use super::{holes, twig, Material, MeshBuilder, TreeMesh, WIND_STRIDE};
 use crate::error::SylvaError;
 use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use crate::skeleton::{budget_error, Skeleton, Stem};
 use glam::Vec3;
+use std::ops::Range;
 
 /// How one stem will be meshed: its ring positions along the stem and its number of sides.
 struct StemPlan {
@@ -117,16 +118,33 @@ fn circle(sides: u32) -> Vec<(f32, f32, f32)> {
 /// Sweep all stems into bark tubes. Fails with a budget error before allocating if the exact
 /// vertex count would pass `max_vertices`.
 pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError> {
+    build_blocks(skeleton, p).map(|(mesh, _)| mesh)
+}
+
+/// [`build`], also returning each stem's block of vertices (one index range per stem, in
+/// skeleton order), which [`super::holes::cut`] needs.
+pub fn build_blocks(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh, Vec<Range<u32>>), SylvaError> {
     let q = p.mesh_quality;
     let mut ts = Vec::with_capacity(skeleton.stems.len() * 8);
+    let twigs = twig::mask(skeleton, p);
+    let dense = holes::eligible(skeleton, p, &twigs);
     let plans: Vec<StemPlan> = skeleton
         .stems
         .iter()
-        .map(|s| {
+        .enumerate()
+        .map(|(i, s)| {
             let start = ts.len();
+            if twigs[i] {
+                let sides = twig::plan(s, p, &mut ts);
+                return StemPlan { rings: start..ts.len(), sides };
+            }
             plan_rings(s, q, &mut ts);
             let lobes = if s.lobed { p.lobes } else { 0 };
-            StemPlan { rings: start..ts.len(), sides: sides_for(s.radius, q, lobes) }
+            let mut sides = sides_for(s.radius, q, lobes);
+            if dense.get(i) == Some(&true) {
+                sides = holes::densify(s, sides, p, &mut ts, start);
+            }
+            StemPlan { rings: start..ts.len(), sides }
         })
         .collect();
     let vertices: u64 = plans.iter().zip(&skeleton.stems).map(|(pl, s)| pl.vertices(s.parent.is_none())).sum();
@@ -138,16 +156,24 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError
     out.begin_group(Material::Bark);
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
     let winds = stem_winds(skeleton, p.seed);
-    for ((stem, plan), wind) in skeleton.stems.iter().zip(&plans).zip(&winds) {
+    let mut blocks = Vec::with_capacity(plans.len());
+    for (i, ((stem, plan), wind)) in skeleton.stems.iter().zip(&plans).zip(&winds).enumerate() {
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
+        let first = out.next_index();
+        if twigs[i] {
+            twig::sweep(stem, &ts[plan.rings.clone()], table, wind, &mut out);
+            blocks.push(first..out.next_index());
+            continue;
+        }
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
         let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
         match profile {
             Some(tp) => sweep_trunk(stem, &ts[plan.rings.clone()], table, &tp, wind, &mut out),
             None => sweep(stem, &ts[plan.rings.clone()], table, lobes, wind, &mut out),
         }
+        blocks.push(first..out.next_index());
     }
-    Ok(out.finish())
+    Ok((out.finish(), blocks))
 }
 
 /// Per-stem constants of the wind attributes ([`TreeMesh::wind`]).

@@ -1,0 +1,224 @@
+//! Tree holes (issue 5): cut when asked, absent at count 0, closed and manifold, deterministic,
+//! candidates from both of the thesis' methods.
+
+mod common;
+
+use common::{assert_mesh_invariants, edge_uses};
+use glam::Vec3;
+use sylva_core::mesh::holes::{candidates, cut, Source};
+use sylva_core::mesh::topology::topology;
+use sylva_core::mesh::tube::build_blocks;
+use sylva_core::mesh::{TreeMesh, WIND_STRIDE};
+use sylva_core::{generate, skeleton, TreeParams};
+
+/// A thick, lobed trunk with big branches: room for holes.
+fn thick(count: u32) -> TreeParams {
+    TreeParams { hole_count: count, ratio: 0.035, hole_min_radius: 0.1, ..TreeParams::default() }
+}
+
+fn pos(m: &TreeMesh, v: usize) -> Vec3 {
+    Vec3::new(m.positions[v * 3], m.positions[v * 3 + 1], m.positions[v * 3 + 2])
+}
+
+/// The mesh without holes, the same mesh with them cut, and the holes (same densified plan).
+fn before_after(p: &TreeParams) -> (TreeMesh, TreeMesh, Vec<sylva_core::mesh::holes::Hole>) {
+    let sk = skeleton::build(p).unwrap();
+    let (before, blocks) = build_blocks(&sk, p).unwrap();
+    let mut after = before.clone();
+    let holes = cut(&mut after, &blocks, &sk, p);
+    (before, after, holes)
+}
+
+#[test]
+fn holes_are_cut_when_asked_and_reach_their_depth() {
+    let p = thick(3);
+    let (before, after, holes) = before_after(&p);
+    assert_eq!(holes.len(), 3, "{holes:?}");
+    let g = generate(&p).unwrap();
+    assert_eq!(g.stats.holes, 3);
+    assert!(g.meta_json().contains("\"holes\":3"));
+    assert_mesh_invariants(&g, "holes");
+    assert_ne!(before, after);
+    for h in &holes {
+        assert!((h.depth - p.hole_depth * h.radius / p.hole_size).abs() <= 0.35 * h.depth, "{h:?}");
+        // The cavity's vertices (moved or new) near this hole reach about `depth` inward.
+        let moved = |v: usize| {
+            v >= before.vertex_count() || before.positions[v * 3..v * 3 + 3] != after.positions[v * 3..v * 3 + 3]
+        };
+        let deepest = (0..after.vertex_count())
+            .filter(|&v| moved(v) && (pos(&after, v) - h.centre).length() < h.depth * 1.2 + 2.0 * h.radius)
+            .map(|v| (h.centre - pos(&after, v)).dot(h.normal))
+            .fold(f32::MIN, f32::max);
+        assert!((deepest - h.depth).abs() < 0.05 * h.depth, "deepest {deepest} vs depth {}", h.depth);
+        // Before cutting nothing there was that deep: the bark was displaced inward.
+        let deepest_before = (0..before.vertex_count())
+            .filter(|&v| (pos(&before, v) - h.centre).length() < 1.6 * h.radius)
+            .map(|v| (h.centre - pos(&before, v)).dot(h.normal))
+            .fold(f32::MIN, f32::max);
+        assert!(deepest_before < 0.6 * h.depth, "{deepest_before} vs {}", h.depth);
+    }
+}
+
+#[test]
+fn no_holes_at_count_zero() {
+    let p = thick(0);
+    let (before, after, holes) = before_after(&p);
+    assert!(holes.is_empty());
+    assert_eq!(before, after);
+    let g = generate(&p).unwrap();
+    assert_eq!(g.stats.holes, 0);
+    // Count 0 is the plain tree: no densified rings, nothing else changed.
+    let plain = generate(&TreeParams { ratio: 0.035, ..TreeParams::default() }).unwrap();
+    assert_eq!(g.hash, plain.hash);
+}
+
+#[test]
+fn cutting_keeps_the_surface_closed_and_manifold() {
+    for (name, p) in [
+        ("thick", thick(6)),
+        ("fluted", TreeParams { refine_curves: 5, lobes: 0, ..thick(6) }),
+        ("roots", TreeParams { root_count: 5, ..thick(6) }),
+        ("wide", TreeParams { hole_size: 0.9, hole_depth: 0.9, ..thick(4) }),
+        ("tiny", TreeParams { hole_size: 0.05, ..thick(4) }),
+        ("quality", TreeParams { mesh_quality: 2.5, ..thick(5) }),
+    ] {
+        let (before, after, holes) = before_after(&p);
+        assert!(!holes.is_empty(), "{name}: no hole cut");
+        let (tb, ta) = (topology(&before), topology(&after));
+        assert_eq!(ta.boundary_edges, tb.boundary_edges, "{name}: open edges changed");
+        assert_eq!(ta.non_manifold_edges, tb.non_manifold_edges, "{name}: non-manifold edges changed");
+        assert_eq!(ta.non_manifold_edges, 0, "{name}");
+        assert!(edge_uses(&after).values().all(|&u| u <= 2), "{name}");
+        let g = generate(&p).unwrap();
+        assert_mesh_invariants(&g, name);
+        assert!(after.positions.iter().chain(&after.normals).chain(&after.uvs).all(|v| v.is_finite()), "{name}");
+    }
+}
+
+#[test]
+fn holes_are_deterministic_and_follow_their_seed() {
+    let a = generate(&thick(2)).unwrap();
+    let b = generate(&thick(2)).unwrap();
+    assert_eq!(a.hash, b.hash);
+    let c = generate(&TreeParams { hole_seed: 7, ..thick(2) }).unwrap();
+    assert_ne!(a.hash, c.hash, "another hole seed picks other places");
+    assert_eq!(c.stats.holes, 2);
+    // The hole seed moves holes only: the tree's stems stay.
+    assert_eq!(a.skeleton.stems.len(), c.skeleton.stems.len());
+}
+
+#[test]
+fn holes_respect_the_minimum_radius() {
+    let g = generate(&TreeParams { hole_min_radius: 5.0, ..thick(3) }).unwrap();
+    assert_eq!(g.stats.holes, 0);
+}
+
+#[test]
+fn surface_candidates_come_from_concave_clusters_on_a_fluted_trunk() {
+    let p = TreeParams { refine_curves: 6, lobes: 0, flare: 0.0, ..thick(1) };
+    let sk = skeleton::build(&p).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &p).unwrap();
+    let cands = candidates(&mesh, &blocks, &sk, &p);
+    let surface: Vec<_> = cands.iter().filter(|c| c.source == Source::Surface && c.stem == 0).collect();
+    assert!(surface.len() >= 6, "six flutes give concave valleys: {}", surface.len());
+    // Each is concave: its neighbours lie, on average, above its tangent plane (computed here
+    // independently from the triangles).
+    for c in &surface {
+        let v = c.vertex;
+        let x = pos(&mesh, v as usize);
+        let n = Vec3::from_slice(&mesh.normals[v as usize * 3..v as usize * 3 + 3]);
+        let mut nb: Vec<u32> =
+            mesh.indices.chunks_exact(3).filter(|t| t.contains(&v)).flatten().copied().filter(|&w| w != v).collect();
+        nb.sort_unstable();
+        nb.dedup();
+        let lift: f32 =
+            nb.iter().map(|&w| (pos(&mesh, w as usize) - x).normalize().dot(n)).sum::<f32>() / nb.len() as f32;
+        assert!(lift > 0.0, "candidate {v} is not concave: {lift}");
+    }
+    // Most sit in the creases where the refinement circles meet the main circle (radius ~ r),
+    // not out on the bulges (up to 1.33 r).
+    let trunk = &sk.stems[0];
+    let in_crease = surface
+        .iter()
+        .filter(|c| {
+            let x = pos(&mesh, c.vertex as usize);
+            let t = (x.y / trunk.length).clamp(0.0, 1.0);
+            let (centre, tan) = trunk.sample(t);
+            let d = x - centre;
+            (d - tan * d.dot(tan)).length() < 1.15 * trunk.radius_at(t)
+        })
+        .count();
+    assert!(2 * in_crease >= surface.len(), "{in_crease} of {} in creases", surface.len());
+    // A plain round trunk has no concave clusters (bent level-1 branches may: the inside of a
+    // bend is concave along the stem).
+    let round = TreeParams { lobes: 0, flare: 0.0, ..thick(1) };
+    let sk = skeleton::build(&round).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &round).unwrap();
+    assert!(candidates(&mesh, &blocks, &sk, &round).iter().all(|c| c.source != Source::Surface || c.stem != 0));
+}
+
+#[test]
+fn structural_candidates_sit_below_big_junctions_and_between_roots() {
+    let p = TreeParams { root_count: 4, root_spread: 0.0, ..thick(1) };
+    let sk = skeleton::build(&p).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &p).unwrap();
+    let cands = candidates(&mesh, &blocks, &sk, &p);
+    let junctions: Vec<_> = cands.iter().filter(|c| c.source == Source::Junction).collect();
+    let roots: Vec<_> = cands.iter().filter(|c| c.source == Source::Root).collect();
+    assert!(!junctions.is_empty(), "no junction candidates");
+    assert_eq!(roots.len(), 4, "one between each pair of neighbouring roots");
+    let trunk = &sk.stems[0];
+    // Each junction candidate is below some level-1 branch base on the trunk, on its side.
+    for c in &junctions {
+        let x = pos(&mesh, c.vertex as usize);
+        let below_a_branch = sk.stems.iter().filter(|s| s.parent == Some(0) && s.level == 1).any(|s| {
+            let b = s.base();
+            let dir = s.sample(0.0).1;
+            let side = Vec3::new(x.x - b.x, 0.0, x.z - b.z)
+                .normalize_or_zero()
+                .dot(Vec3::new(dir.x, 0.0, dir.z).normalize_or_zero());
+            x.y < b.y - s.radius && x.y > b.y - 4.0 * trunk.radius && side > 0.5
+        });
+        assert!(below_a_branch, "junction candidate at {x} is below no branch");
+    }
+    // Root candidates are low on the trunk, away from every root's direction.
+    let root_dirs: Vec<Vec3> =
+        sk.stems[sk.stems.len() - 4..].iter().map(|s| (s.tip() - s.base()).with_y(0.0).normalize()).collect();
+    for c in &roots {
+        let x = pos(&mesh, c.vertex as usize);
+        assert!(x.y > 0.0 && x.y < 0.2 * trunk.length, "{x}");
+        let d = x.with_y(0.0).normalize();
+        assert!(root_dirs.iter().all(|r| r.dot(d) < 0.9), "root candidate on a root");
+    }
+}
+
+#[test]
+fn new_vertices_get_wind_from_the_rim() {
+    let p = thick(2);
+    let sk = skeleton::build(&p).unwrap();
+    let (mut mesh, blocks) = build_blocks(&sk, &p).unwrap();
+    // Fake wind data: each vertex's own index in every float, so copies are traceable.
+    let n = mesh.vertex_count();
+    mesh.wind = (0..n).flat_map(|v| [v as f32; WIND_STRIDE]).collect();
+    let before = mesh.clone();
+    let holes = cut(&mut mesh, &blocks, &sk, &p);
+    assert_eq!(holes.len(), 2);
+    assert_eq!(mesh.wind.len(), mesh.vertex_count() * WIND_STRIDE);
+    // Every vertex whose wind changed copied the entry of an untouched vertex used by the cut
+    // surface (a rim vertex), and that vertex is near it.
+    let mut changed = 0;
+    for v in 0..mesh.vertex_count() {
+        let w = &mesh.wind[v * WIND_STRIDE..(v + 1) * WIND_STRIDE];
+        if v < n && w[0] == v as f32 {
+            continue;
+        }
+        changed += 1;
+        let src = w[0] as usize;
+        assert!(w.iter().all(|&x| x == w[0]));
+        assert_eq!(before.positions[src * 3..src * 3 + 3], mesh.positions[src * 3..src * 3 + 3], "source moved");
+        let d = (pos(&mesh, v) - pos(&mesh, src)).length();
+        let h = holes.iter().map(|h| h.depth + 2.0 * h.radius).fold(0.0f32, f32::max);
+        assert!(d <= h, "wind copied from a far vertex: {d} > {h}");
+    }
+    assert!(changed > 0);
+}
