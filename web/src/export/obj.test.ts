@@ -4,7 +4,8 @@
  * binding hands out as PNGs, and the GLB starts with a well-formed header.
  */
 import { describe, expect, it } from 'vitest';
-import { Mesh, type BufferGeometry, type Object3D } from 'three';
+import { InstancedMesh, Mesh, type BufferGeometry, type Object3D } from 'three';
+import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
 import { loadWasm, realPresets } from '../testing/realWasm';
 import type { WasmTree } from '../core/types';
@@ -116,6 +117,32 @@ describe('GLB export', () => {
       expect(json.asset.generator).toMatch(/^Sylva /);
       expect(json.nodes.map((n) => n.name)).toEqual(['sylva_tree', 'bark', 'leaves']);
       expect(() => tree.to_glb('{"leaves":"sideways"}')).toThrow(/"kind":"input"/);
+    } finally {
+      tree.free();
+    }
+  });
+
+  it("three.js's GLTFLoader reads the instanced leaves (textures off: no image decoding in Node)", async () => {
+    const tree = generate({});
+    try {
+      const meta = JSON.parse(tree.meta_json()) as { leaves: number; triangles: number };
+      const glb = tree.to_glb('{"textures":false}');
+      const buffer = glb.buffer.slice(
+        glb.byteOffset,
+        glb.byteOffset + glb.byteLength,
+      ) as ArrayBuffer;
+      const gltf = await new GLTFLoader().parseAsync(buffer, '');
+      const meshes: Mesh[] = [];
+      gltf.scene.traverse((o) => {
+        if (o instanceof Mesh) meshes.push(o as Mesh);
+      });
+      const leaves = meshes.find((m) => m.name === 'leaves');
+      expect(leaves).toBeInstanceOf(InstancedMesh);
+      expect((leaves as InstancedMesh).count).toBe(meta.leaves);
+      expect((leaves as InstancedMesh).instanceColor).not.toBeNull();
+      const bark = meshes.find((m) => m.name === 'bark') as Mesh<BufferGeometry>;
+      expect(bark.geometry.getAttribute('color')).toBeDefined();
+      expect((bark.geometry.index?.count ?? 0) / 3).toBe(meta.triangles);
     } finally {
       tree.free();
     }
