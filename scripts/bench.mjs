@@ -113,6 +113,49 @@ if (asJson) {
   }
 }
 
+// GLB export (issue 7): the largest preset by vertices, native (`sylva bench --glb`: the first
+// export encodes the PNG textures, later ones reuse them from the cache; the median is over the
+// later ones, each into a fresh buffer) and wasm (`to_glb`, including the copy of the bytes out
+// to JS). Budget: 100 ms.
+if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
+  const largest = results.reduce((a, b) => (b.vertices > a.vertices ? b : a));
+  const preset = cases.find((c) => c.name === largest.preset);
+  const native = JSON.parse(
+    execFileSync(`${root}/target/release/sylva`, ['bench', ...preset.args, '--glb', '--runs', String(runs), '--json'], {
+      encoding: 'utf8',
+    }),
+  ).glb;
+  const tree = wasm.generate(JSON.stringify(preset.values));
+  const times = [];
+  let bytes = 0;
+  let first = 0;
+  for (let i = 0; i <= runs; i++) {
+    const t0 = performance.now();
+    bytes = tree.to_glb('').length;
+    const ms = performance.now() - t0;
+    if (i === 0) first = ms;
+    else times.push(ms);
+  }
+  tree.free();
+  const glb = {
+    preset: preset.name,
+    vertices: largest.vertices,
+    bytes,
+    budget_ms: 100,
+    native: native,
+    wasm: { median_ms: median(times), first_ms: first, runs },
+  };
+  if (asJson) {
+    console.log(JSON.stringify({ glb }, null, 2));
+  } else {
+    console.log(
+      `\nGLB export, ${glb.preset} (${glb.vertices} vertices, ${(bytes / 1e6).toFixed(1)} MB), median of ${runs} ` +
+        `(first export incl. PNG encoding in brackets): native ${native.median_ms.toFixed(1)} ms (${native.first_ms.toFixed(1)}), ` +
+        `wasm ${glb.wasm.median_ms.toFixed(1)} ms (${first.toFixed(1)}); budget 100 ms`,
+    );
+  }
+}
+
 // Leaves (issue 4): a full leaf with 5,000 auxin sources, Open venation (Oak, budget 5 ms) and
 // Closed (Maple, budget 10 ms), native (`sylva bench-leaf`, the same parameters) and wasm
 // (`leaf_json`; core = the module's own stage clock, e2e = the call including the JSON). With

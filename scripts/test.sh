@@ -8,6 +8,8 @@ step "lint (rustfmt, clippy -D warnings, eslint, prettier)"
 bash scripts/lint.sh
 step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
+step "glTF: every preset's GLB (instanced and baked leaves) through the Khronos validator"
+node scripts/validate-gltf.mjs
 step "wasm vs native: same content hashes"
 node scripts/wasm-parity.mjs
 step "Vitest"

@@ -77,6 +77,17 @@ enum Data<'a> {
     Tangents(&'a TreeMesh),
     /// Bark tint of a mesh, computed into the output ([`super::bark_colors_into`]).
     BarkColors(&'a TreeMesh),
+    /// Instance matrices (16 floats each) decomposed ([`super::decompose`]) into the output:
+    /// translation (`VEC3`), rotation (`VEC4`) or scale (`VEC3`).
+    Trs(&'a [f32], Part),
+}
+
+/// Which part of a decomposed matrix [`Data::Trs`] writes.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Part {
+    Translation,
+    Rotation,
+    Scale,
 }
 
 impl Data<'_> {
@@ -88,6 +99,7 @@ impl Data<'_> {
             Data::Bytes(s) => s.len(),
             Data::Tangents(m) => m.vertex_count() * 16,
             Data::BarkColors(m) => m.vertex_count() * 4,
+            Data::Trs(m, part) => m.len() / 16 * if *part == Part::Rotation { 16 } else { 12 },
         }
     }
 
@@ -105,7 +117,7 @@ impl Data<'_> {
             Data::U32(s) => s.chunks(BLOCK).for_each(|c| put(c.len() * 4, &|d| Data::U32(c).write(d))),
             Data::U16(s) => s.chunks(BLOCK).for_each(|c| put(c.len() * 2, &|d| Data::U16(c).write(d))),
             Data::Bytes(s) => out.extend_from_slice(s),
-            Data::Tangents(_) | Data::BarkColors(_) => put(self.byte_len(), &|d| self.write(d)),
+            Data::Tangents(_) | Data::BarkColors(_) | Data::Trs(..) => put(self.byte_len(), &|d| self.write(d)),
         }
     }
 
@@ -127,6 +139,17 @@ impl Data<'_> {
                 super::tangents_into(&m.positions, &m.normals, &m.uvs, &m.indices, dst)
             }
             Data::BarkColors(m) => super::bark_colors_into(m, dst),
+            Data::Trs(m, part) => {
+                let width = if *part == Part::Rotation { 16 } else { 12 };
+                for (d, m) in dst.chunks_exact_mut(width).zip(m.chunks_exact(16)) {
+                    let v: &[f32] = match part {
+                        Part::Translation => &m[12..15],
+                        Part::Rotation => &super::decompose(m).1,
+                        Part::Scale => &super::decompose_scale(m),
+                    };
+                    d.chunks_exact_mut(4).zip(v).for_each(|(d, x)| d.copy_from_slice(&x.to_le_bytes()));
+                }
+            }
         }
     }
 }
@@ -302,8 +325,6 @@ struct Owned {
     leaf_pngs: Option<Arc<TexturePngs>>,
     baked: Option<super::BakedLeaves>,
     leaf_tangents: Option<Vec<f32>>,
-    /// Instanced: translation (3), rotation (4), scale (3) per leaf.
-    trs: Option<(Vec<f32>, Vec<f32>, Vec<f32>)>,
 }
 
 /// The GLB file of a generated tree (layout: module docs).
@@ -329,18 +350,6 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
             .then(|| super::bake_leaves(f, normal_maps && leaf_pngs.is_some())),
         leaf_tangents: (instanced && normal_maps && leaf_pngs.is_some())
             .then(|| super::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
-        trs: instanced.then(|| {
-            let n = f.count();
-            let (mut t, mut r, mut s) =
-                (Vec::with_capacity(3 * n), Vec::with_capacity(4 * n), Vec::with_capacity(3 * n));
-            for m in f.matrices.chunks_exact(16) {
-                let (a, b, c) = super::decompose(m);
-                t.extend_from_slice(&a);
-                r.extend_from_slice(&b);
-                s.extend_from_slice(&c);
-            }
-            (t, r, s)
-        }),
         leaf_pngs,
     };
     let mut doc = Doc::default();
@@ -424,14 +433,18 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
         doc.nodes.push(json!({"name": "leaves", "mesh": mesh}));
         children.push(doc.nodes.len());
     }
-    if let Some((t, r, s)) = &owned.trs {
+    if instanced {
+        let m = &f.matrices[..];
         let extra = VertexExtras { tangents: owned.leaf_tangents.as_deref().map(Data::F32), ..VertexExtras::default() };
         let mesh = doc.mesh("leaf", &f.mesh, &extra, |_| pick(Material::Leaves));
         let n = f.count();
         let mut attrs = Map::new();
-        attrs.insert("TRANSLATION".into(), json!(doc.array(Data::F32(t), None, Acc::new(FLOAT, "VEC3", n))));
-        attrs.insert("ROTATION".into(), json!(doc.array(Data::F32(r), None, Acc::new(FLOAT, "VEC4", n))));
-        attrs.insert("SCALE".into(), json!(doc.array(Data::F32(s), None, Acc::new(FLOAT, "VEC3", n))));
+        let mut trs = |key: &str, part: Part, kind: &'static str| {
+            attrs.insert(key.into(), json!(doc.array(Data::Trs(m, part), None, Acc::new(FLOAT, kind, n))));
+        };
+        trs("TRANSLATION", Part::Translation, "VEC3");
+        trs("ROTATION", Part::Rotation, "VEC4");
+        trs("SCALE", Part::Scale, "VEC3");
         if opts.vertex_colors {
             attrs.insert("_COLOR_0".into(), json!(doc.array(Data::F32(&f.colors), None, Acc::new(FLOAT, "VEC3", n))));
         }

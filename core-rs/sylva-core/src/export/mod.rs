@@ -258,13 +258,8 @@ pub fn tangents_into(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &
 /// axes; a mirroring matrix gets a negative `x` scale. Exact for the foliage's matrices, whose
 /// axes are perpendicular.
 pub fn decompose(m: &[f32]) -> ([f32; 3], [f32; 4], [f32; 3]) {
-    let c0 = Vec3::new(m[0], m[1], m[2]);
-    let c1 = Vec3::new(m[4], m[5], m[6]);
-    let c2 = Vec3::new(m[8], m[9], m[10]);
-    let mut s = Vec3::new(c0.length(), c1.length(), c2.length());
-    if c0.cross(c1).dot(c2) < 0.0 {
-        s.x = -s.x;
-    }
+    let (c0, c1) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]));
+    let s = Vec3::from(decompose_scale(m));
     let safe = |v: Vec3, l: f32| if l != 0.0 { v / l } else { v };
     let (x, y) = (safe(c0, s.x), safe(c1, s.y));
     // Re-orthonormalise (Gram-Schmidt) so the quaternion is a proper rotation.
@@ -273,6 +268,16 @@ pub fn decompose(m: &[f32]) -> ([f32; 3], [f32; 4], [f32; 3]) {
     let z = x.cross(y);
     let q = Quat::from_mat3(&Mat3::from_cols(x, y, z)).normalize();
     ([m[12], m[13], m[14]], q.to_array(), s.to_array())
+}
+
+/// The scale part of [`decompose`]: the lengths of the three axis columns, the first negative
+/// when the matrix mirrors.
+pub fn decompose_scale(m: &[f32]) -> [f32; 3] {
+    let c0 = Vec3::new(m[0], m[1], m[2]);
+    let c1 = Vec3::new(m[4], m[5], m[6]);
+    let c2 = Vec3::new(m[8], m[9], m[10]);
+    let sx = c0.length();
+    [if c0.cross(c1).dot(c2) < 0.0 { -sx } else { sx }, c1.length(), c2.length()]
 }
 
 /// The leaves as one mesh in tree space: each instance's copy of the leaf mesh transformed by

@@ -9,8 +9,10 @@
 //! textures store `v = 0` in row 0, which is exactly glTF's convention (UV `(0, 0)` is the
 //! top-left corner of the image), so glTF files use them as they are.
 
-/// Deflate level: 6 is zlib's default; the bark maps are noise-like and gain little beyond it.
-const LEVEL: u8 = 6;
+/// Deflate level. The bark maps are noise-like: measured on the 512² bark maps, level 2 encodes
+/// both in about a third of level 6's time for files about 20 % larger (≈ 0.6 MB together), small
+/// next to the meshes they dress.
+const LEVEL: u8 = 2;
 
 /// CRC-32 (ISO 3309, polynomial 0xEDB88320) table, built at compile time.
 const CRC_TABLE: [u32; 256] = {
@@ -82,6 +84,11 @@ fn filter_row(kind: u8, row: &[u8], prev: &[u8], bpp: usize, out: &mut [u8]) {
 /// # Panics
 /// If `rgba` does not hold `width * height * 4` bytes or a side is zero (a caller bug).
 pub fn encode_rgba(width: u32, height: u32, rgba: &[u8]) -> Vec<u8> {
+    encode_rgba_with(width, height, rgba, LEVEL)
+}
+
+/// [`encode_rgba`] at deflate `level` (0 = stored .. 10 = smallest).
+pub fn encode_rgba_with(width: u32, height: u32, rgba: &[u8], level: u8) -> Vec<u8> {
     let (w, h) = (width as usize, height as usize);
     assert!(w > 0 && h > 0 && rgba.len() == w * h * 4, "PNG: {width}x{height} needs {} bytes", w * h * 4);
     let stride = w * 4;
@@ -107,7 +114,7 @@ pub fn encode_rgba(width: u32, height: u32, rgba: &[u8]) -> Vec<u8> {
         filtered.push(best_kind);
         filtered.extend_from_slice(&best);
     }
-    let idat = miniz_oxide::deflate::compress_to_vec_zlib(&filtered, LEVEL);
+    let idat = miniz_oxide::deflate::compress_to_vec_zlib(&filtered, level);
     let mut out = Vec::with_capacity(idat.len() + 64);
     out.extend_from_slice(&[0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n']);
     let mut ihdr = Vec::with_capacity(13);

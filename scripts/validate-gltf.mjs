@@ -1,0 +1,79 @@
+// `node scripts/validate-gltf.mjs [--preset NAME]... [--keep DIR]`: exports every preset as GLB
+// through the native CLI (`sylva generate --preset NAME --out FILE.glb --leaves MODE`), in both
+// leaf modes (instanced, baked), and validates each file with the Khronos glTF Validator
+// (npm `gltf-validator`, `validateBytes`). Prints one line per file with the error, warning and
+// info counts and the messages of any error or warning; exits 1 if any file has an error.
+// Infos are expected for instanced leaves: the validator does not implement
+// EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
+//
+// Then, when the wasm build exists (web/src/wasm), checks that the wasm exporter writes the same
+// bytes as the native one (default tree, both leaf modes).
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { validateBytes } from 'gltf-validator';
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const args = process.argv.slice(2);
+const only = args.flatMap((a, i) => (a === '--preset' ? [args[i + 1]] : []));
+const keepAt = args.indexOf('--keep');
+const dir = keepAt >= 0 ? args[keepAt + 1] : mkdtempSync(join(tmpdir(), 'sylva-gltf-'));
+
+execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
+const sylva = join(root, 'target/release/sylva');
+const presets = JSON.parse(execFileSync(sylva, ['presets'], { encoding: 'utf8', maxBuffer: 1 << 26 }))
+  .map((p) => p.name)
+  .filter((n) => only.length === 0 || only.includes(n));
+
+let failed = 0;
+let warnings = 0;
+const mb = (n) => (n / 1e6).toFixed(1).padStart(6);
+console.log('preset              leaves      size MB  errors warnings infos');
+for (const name of presets) {
+  for (const leaves of ['instanced', 'baked']) {
+    const file = join(dir, `${name}-${leaves}.glb`);
+    execFileSync(sylva, ['generate', '--preset', name, '--leaves', leaves, '--out', file], { stdio: 'ignore' });
+    const bytes = new Uint8Array(readFileSync(file));
+    if (keepAt < 0) rmSync(file);
+    const report = await validateBytes(bytes, { maxIssues: 100 });
+    const { numErrors, numWarnings, numInfos } = report.issues;
+    if (numErrors > 0) failed++;
+    warnings += numWarnings;
+    console.log(
+      `${name.padEnd(19)} ${leaves.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
+        (numErrors ? '  FAIL' : ''),
+    );
+    for (const m of report.issues.messages) {
+      if (m.severity <= 1) console.log(`    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message} (${m.pointer ?? ''})`);
+    }
+  }
+}
+if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
+
+// Native and wasm exporters write identical bytes (standing rule: same output on every target).
+const glue = new URL('../web/src/wasm/sylva_wasm.js', import.meta.url);
+if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
+  const wasm = await import(glue);
+  wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+  const tree = wasm.generate('{}');
+  if (typeof tree.to_glb !== 'function') {
+    console.log('wasm parity: skipped (the wasm build predates to_glb; run scripts/setup.sh)');
+  } else {
+    for (const leaves of ['instanced', 'baked']) {
+      const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
+      execFileSync(sylva, ['generate', '--leaves', leaves, '--out', file], { stdio: 'ignore' });
+      const native = readFileSync(file);
+      rmSync(file);
+      const fromWasm = tree.to_glb(JSON.stringify({ leaves }));
+      const same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
+      if (!same) failed++;
+      console.log(`wasm parity (default, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`);
+    }
+  }
+  tree.free();
+}
+
+console.log(`${presets.length * 2} files, ${failed} failed, ${warnings} warnings`);
+process.exit(failed ? 1 : 0);
