@@ -51,19 +51,32 @@ fn enum_values_by_name_and_obj_output() {
     let dir = std::env::temp_dir().join(format!("sylva-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("t.obj");
+    let p = path.to_str().unwrap();
+    // Bark only: the OBJ has exactly the tree's vertices and triangles.
     let (code, out, err) =
-        sylva(&["generate", "--set", "shape=inverse-conical", "--set", "levels=2", "--out", path.to_str().unwrap()]);
+        sylva(&["generate", "--set", "shape=inverse-conical", "--set", "levels=2", "--leaves", "none", "--out", p]);
     assert_eq!(code, 0, "{err}");
     let v = json(&out);
     let obj = std::fs::read_to_string(&path).unwrap();
-    // The bark object holds the mesh the JSON counts; the baked leaves follow as their own object.
-    let (bark, leaves) = obj.split_once("\no leaves\n").expect("a leaves object");
-    let count = |text: &str, tag: &str| text.lines().filter(|l| l.starts_with(tag)).count() as u64;
-    assert_eq!(count(bark, "v "), v["vertices"].as_u64().unwrap());
-    assert_eq!(count(bark, "f "), v["triangles"].as_u64().unwrap());
-    assert!(count(leaves, "f ") > 0);
-    assert!(obj.starts_with("# ") && obj.contains("mtllib t.mtl"), "the OBJ names its MTL");
-    assert!(std::fs::read_to_string(dir.join("t.mtl")).unwrap().contains("newmtl bark"));
+    assert_eq!(obj.lines().filter(|l| l.starts_with("v ")).count() as u64, v["vertices"].as_u64().unwrap());
+    assert_eq!(obj.lines().filter(|l| l.starts_with("f ")).count() as u64, v["triangles"].as_u64().unwrap());
+    assert!(obj.contains("mtllib t.mtl"));
+    assert!(std::fs::read_to_string(dir.join("t.mtl")).unwrap().contains("map_Kd t_bark_color.png"));
+    assert!(std::fs::read(dir.join("t_bark_color.png")).unwrap().starts_with(b"\x89PNG"));
+    // GLB, and a wrong extension is refused.
+    let glb = dir.join("t.glb");
+    let (code, out, err) = sylva(&["generate", "--set", "levels=2", "--out", glb.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let bytes = std::fs::read(&glb).unwrap();
+    assert!(bytes.starts_with(b"glTF"));
+    assert_eq!(json(&out)["written"][0][1].as_u64().unwrap(), bytes.len() as u64);
+    let (code, _, err) = sylva(&["generate", "--out", "tree.stl"]);
+    assert_eq!(code, 2);
+    assert!(err.contains(".glb or .obj"), "{err}");
+    let (code, _, err) = sylva(&["generate", "--leaves", "sideways"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--leaves"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
