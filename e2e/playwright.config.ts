@@ -20,6 +20,9 @@ export default defineConfig({
   use: {
     baseURL: `http://127.0.0.1:${PORT}`,
     viewport: { width: 1280, height: 800 },
+    // The app then starts with the wind paused: no continuous software-WebGL rendering in the
+    // background of every test (wind.spec.ts opts back in where it needs the live clock).
+    reducedMotion: 'reduce',
     trace: 'off',
     screenshot: 'only-on-failure',
   },

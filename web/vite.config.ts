@@ -1,6 +1,11 @@
-/** Vite config: relative base so the static build works from any path, ES module workers. */
+/**
+ * Vite config: relative base so the static build works from any path, ES module workers, and a
+ * multi-page build: the app (index.html), the embed page, the docs page, and `sylva-tree.js`
+ * (the `<sylva-tree>` element) under a stable, unhashed name for other sites to load.
+ */
 import react from '@vitejs/plugin-react';
 import { randomBytes } from 'node:crypto';
+import { fileURLToPath } from 'node:url';
 import type { Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { withNonce } from './src/security/csp.ts';
@@ -20,9 +25,29 @@ function devCspNonce(): Plugin {
   };
 }
 
+/** Entry name of the custom element script, emitted as `sylva-tree.js` at the site root. */
+const ELEMENT_ENTRY = 'sylva-tree';
+const ELEMENT_SOURCE = '/src/element/sylva-tree.ts';
+
+/** Dev server only: serves `/sylva-tree.js` (as used by public/element-demo.html) from source. */
+function devElementScript(): Plugin {
+  return {
+    name: 'sylva:dev-element-script',
+    apply: 'serve',
+    configureServer(server) {
+      server.middlewares.use((req, _res, next) => {
+        if (req.url?.split('?')[0]?.endsWith(`/${ELEMENT_ENTRY}.js`)) req.url = ELEMENT_SOURCE;
+        next();
+      });
+    },
+  };
+}
+
+const page = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
+
 export default defineConfig({
   base: './',
-  plugins: [react(), devCspNonce()],
+  plugins: [react(), devCspNonce(), devElementScript()],
   worker: { format: 'es' },
   build: {
     target: 'es2022',
@@ -30,7 +55,16 @@ export default defineConfig({
     // three.js alone is ~600 kB minified; it gets its own long-cached chunk.
     chunkSizeWarningLimit: 800,
     rolldownOptions: {
+      input: {
+        index: page('./index.html'),
+        embed: page('./embed.html'),
+        docs: page('./docs.html'),
+        [ELEMENT_ENTRY]: page(`.${ELEMENT_SOURCE}`),
+      },
       output: {
+        // Pages load hashed entry chunks; other sites load the element by a stable URL.
+        entryFileNames: (chunk) =>
+          chunk.name === ELEMENT_ENTRY ? `${ELEMENT_ENTRY}.js` : 'assets/[name]-[hash].js',
         codeSplitting: {
           groups: [
             { name: 'three', test: /node_modules[\\/]three[\\/]/ },

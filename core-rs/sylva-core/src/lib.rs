@@ -23,6 +23,7 @@ pub mod export;
 pub mod foliage;
 pub mod growth;
 pub mod leaf;
+pub mod lod;
 pub mod math;
 pub mod mesh;
 pub mod param_enum;

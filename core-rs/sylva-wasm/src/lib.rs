@@ -256,3 +256,75 @@ pub fn leaf_inspect(params_json: &str, step: i32, triangulation: bool) -> Result
 pub fn leaf_presets_json() -> String {
     sylva_core::leaf::presets::presets_json()
 }
+
+/// A generated tree with its levels of detail (`sylva_core::lod`): LOD0 is the tree `generate`
+/// gives, LOD1 and LOD2 come from its skeleton. Getters take the level (0, 1, 2) and return fresh
+/// typed-array copies the worker can transfer.
+#[wasm_bindgen]
+pub struct GeneratedLods(sylva_core::lod::TreeLods);
+
+#[wasm_bindgen]
+impl GeneratedLods {
+    /// Bark `x, y, z` per vertex of `level`.
+    pub fn positions(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).mesh.positions.clone()
+    }
+    /// Bark unit normals of `level`.
+    pub fn normals(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).mesh.normals.clone()
+    }
+    /// Bark `u, v` of `level`.
+    pub fn uvs(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).mesh.uvs.clone()
+    }
+    /// Bark triangle list (u32) of `level`.
+    pub fn indices(&self, level: usize) -> Vec<u32> {
+        self.0.level(level).mesh.indices.clone()
+    }
+    /// The leaf mesh of `level` (leaf units; empty for LOD2 and bare trees).
+    pub fn leaf_positions(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).foliage.mesh.positions.clone()
+    }
+    /// The leaf mesh's unit normals.
+    pub fn leaf_normals(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).foliage.mesh.normals.clone()
+    }
+    /// The leaf mesh's `u, v`.
+    pub fn leaf_uvs(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).foliage.mesh.uvs.clone()
+    }
+    /// The leaf mesh's triangle list (u32).
+    pub fn leaf_indices(&self, level: usize) -> Vec<u32> {
+        self.0.level(level).foliage.mesh.indices.clone()
+    }
+    /// Per-leaf 4x4 matrices of `level`, column-major.
+    pub fn leaf_matrices(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).foliage.matrices.clone()
+    }
+    /// Per-leaf RGB tint of `level`.
+    pub fn leaf_colors(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).foliage.colors.clone()
+    }
+    /// Billboard-cloud quads of `level` (12 floats each: centre, u, v half-axes, rgb).
+    pub fn cloud(&self, level: usize) -> Vec<f32> {
+        self.0.level(level).cloud.to_vec()
+    }
+    /// The baked leaf colour texture (RGBA8; size in `meta_json().leaf_texture`).
+    pub fn leaf_texture(&self) -> Vec<u8> {
+        self.0.lod0.foliage.texture().map(|t| t.color.clone()).unwrap_or_default()
+    }
+    /// Hash, bounds and per-level counts as JSON (`sylva_core::lod::TreeLods::meta_json`).
+    pub fn meta_json(&self) -> String {
+        self.0.meta_json()
+    }
+}
+
+/// [`generate`] plus the levels of detail from the same skeleton. Throws like [`generate`].
+#[wasm_bindgen]
+pub fn generate_lods(params_json: &str) -> Result<GeneratedLods, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    sylva_core::generate_with_clock(&params, &PerfClock)
+        .and_then(|g| sylva_core::lod::lods_of(g, &params))
+        .map(GeneratedLods)
+        .map_err(|e| JsValue::from_str(&e.to_json()))
+}

@@ -5,12 +5,15 @@
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { applyPreset, defaultParams, matchingPreset, randomSeed } from '../core/params';
 import type { Params, VolumePrimitive } from '../core/types';
+import { Toolbar } from '../export/Toolbar';
 import { ErrorBanner } from '../ui/ErrorBanner';
 import { LeafInspector } from '../ui/LeafInspector';
 import { GrowthProgress, GrowthTools } from '../ui/GrowthTools';
 import { ParamPanel } from '../ui/ParamPanel';
+import { LodPanel } from '../lod/LodPanel';
 import { StatsOverlay } from '../ui/StatsOverlay';
 import { Viewport } from '../ui/Viewport';
+import { WindControls } from '../ui/WindControls';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { installDebugHook } from './debugHook';
@@ -166,7 +169,24 @@ export function App() {
     <div className="app">
       <main className="stage">
         <Viewport viewerRef={viewerRef} />
+        <LodPanel
+          viewerRef={viewerRef}
+          paramsRef={paramsRef}
+          volumesRef={growthVolumesRef}
+          info={info}
+        />
         <StatsOverlay stats={generator.stats} busy={generator.busy} />
+        <WindControls viewerRef={viewerRef} />
+        {info && params ? (
+          <Toolbar
+            registry={registry}
+            params={params}
+            presetName={activePreset}
+            viewerRef={viewerRef}
+            volumesRef={growthVolumesRef}
+            onLoadParams={(next) => apply(next, null, true)}
+          />
+        ) : null}
         <GrowthProgress progress={generator.progress} onCancel={() => generator.cancel()} />
         <ErrorBanner
           error={generator.error}

@@ -1,4 +1,7 @@
 /** The `window.__sylva` debug hook (dev mode or `?debug=1` only). */
+import type { ForestDebug } from '../forest/ForestScene';
+import type { LodMode, LodState } from '../lod/LodController';
+import type { WindSettings } from '../viewer/windSettings';
 
 /** What the debug hook exposes to tests and the console. */
 export interface SylvaDebugHook {
@@ -12,6 +15,30 @@ export interface SylvaDebugHook {
   geometries(): number | null;
   /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */
   growth(): { markers: number; volumes: number; dragging: boolean };
+  /** Levels of detail: level on screen (3 = impostor), triangles per level, screen size. */
+  lod(): LodState;
+  /** Moves the viewer's camera to `distance` m from the orbit target (LOD tests). */
+  setCameraDistance(distance: number): void;
+  /** LOD mode: 'auto' or a forced level 0..3. */
+  setLodMode(mode: LodMode): void;
+  /** Forest view (while open): draw calls and their bound, trees, frame time, trees per level. */
+  forest(): ForestDebug;
+  /** Forest view: sets the number of trees. */
+  setForestTrees(n: number): void;
+  /** Forest view: moves the camera to `distance` m from its target. */
+  setForestCameraDistance(distance: number): void;
+  /** Wind: sets the shader time (seconds); the next frame shows that moment. */
+  setWindTime(seconds: number): void;
+  /** Wind: changes settings (on/off, strength, direction, gust, pause), as the controls do. */
+  setWind(settings: Partial<WindSettings>): void;
+  /** Wind: stops (true) or restarts the clock. */
+  pauseWind(paused: boolean): void;
+  /** Wind: current settings, shader time and whether the bark has the core's per-vertex data. */
+  wind(): WindSettings & { time: number; vertexData: boolean };
+  /** Renders one frame now and returns a hash of the canvas pixels (`WxH:hash`). */
+  frameHash(): string | null;
+  /** Size of the bark colour map, null before it arrived. */
+  barkTexture(): { width: number; height: number } | null;
 }
 
 declare global {

@@ -113,6 +113,22 @@ export interface TreeBuffers {
   meta: TreeMeta;
   /** The leaves (absent from hand-made test buffers). */
   foliage?: FoliageBuffers;
+  /**
+   * Wind data, 8 floats per vertex (`pivot xyz, level, phase, stiffness, distance, radius`, see
+   * `TreeMesh.wind`); absent or empty when the core has none (the viewer falls back).
+   */
+  wind?: Float32Array;
+  /** The baked bark textures, sent with the first result of a worker only. */
+  bark?: BarkTextureBuffers;
+}
+
+/** The core's procedural bark maps (`bark_color` / `bark_normal`): RGBA8, `size`², row 0 = v 0. */
+export interface BarkTextureBuffers {
+  size: number;
+  /** Colour (sRGB). */
+  color: Uint8Array;
+  /** Tangent-space normal (RGB = xyz·0.5 + 0.5) and height (A). */
+  normal: Uint8Array;
 }
 
 /** Shape of a user volume primitive (growth mode). */
@@ -156,6 +172,8 @@ export interface WasmTree {
   leaf_matrices?(): Float32Array;
   leaf_colors?(): Float32Array;
   leaf_texture?(): Uint8Array;
+  /** Wind data (8 floats per vertex); optional: older cores and test fakes lack it. */
+  wind?(): Float32Array;
   /**
    * Exporters (optional so that test fakes may leave them out). `optionsJson` is a JSON object of
    * `ExportOptions` fields (`leaves`: 'instanced' | 'baked' | 'none', `wind`, `textures`,
@@ -186,6 +204,9 @@ export interface WasmApi {
   debug_panic(): void;
   leaf_inspect?(paramsJson: string, step: number, triangulation: boolean): string;
   leaf_presets_json?(): string;
+  /** The procedural bark maps (RGBA8, `size`²; optional so that fakes may leave them out). */
+  bark_color?(size: number): Uint8Array;
+  bark_normal?(size: number): Uint8Array;
 }
 
 /** The inspector's view of one leaf (`leaf_inspect()`). */

@@ -18,13 +18,15 @@ import {
   RGBAFormat,
   SRGBColorSpace,
   UnsignedByteType,
+  type Material,
   type Object3D,
 } from 'three';
 import type { FoliageBuffers } from '../core/types';
 
 /** Owns the leaf mesh, texture and material. */
 export class Foliage {
-  private readonly material = new MeshStandardMaterial({
+  /** The leaf material (the viewer patches it with wind). */
+  readonly material = new MeshStandardMaterial({
     color: '#ffffff',
     roughness: 0.7,
     side: DoubleSide,
@@ -34,6 +36,8 @@ export class Foliage {
   });
   private texture: DataTexture | null = null;
   private mesh: InstancedMesh | null = null;
+  /** Shadow depth material given to every leaf mesh (the wind's, so shadows move too). */
+  depthMaterial: Material | undefined = undefined;
 
   constructor(private readonly parent: Object3D) {}
 
@@ -73,6 +77,7 @@ export class Foliage {
     mesh.instanceColor = new InstancedBufferAttribute(buffers.colors, 3);
     // Bounds over every instance would loop over the leaves: the tree is framed by its bark.
     mesh.frustumCulled = false;
+    if (this.depthMaterial) mesh.customDepthMaterial = this.depthMaterial;
     mesh.castShadow = true;
     mesh.receiveShadow = true;
     this.mesh = mesh;

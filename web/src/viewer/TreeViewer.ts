@@ -20,7 +20,10 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { TreeBuffers } from '../core/types';
+import { BarkTextures } from './barkMaterial';
 import { Foliage } from './Foliage';
+import { WindController } from './wind';
+import { hashPixels } from './windDebug';
 import { buildEnvelopeGeometry, buildTreeGeometry } from './geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
@@ -62,14 +65,21 @@ export class TreeViewer {
   );
   private readonly resizeObserver: ResizeObserver;
   private readonly foliage = new Foliage(this.scene);
+  /** Wind animation: shared uniforms, clock and settings (see wind.ts). */
+  readonly wind = new WindController(() => this.requestRender());
+  private readonly barkTextures = new BarkTextures(this.bark);
   private frameRequested = false;
   /** Called with every new tree (the growth overlay reads its markers). */
   private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
   private frameId = 0;
   private disposed = false;
 
-  constructor(private readonly container: HTMLElement) {
-    this.renderer = new WebGLRenderer({ antialias: true });
+  constructor(
+    private readonly container: HTMLElement,
+    /** `alpha`: a canvas that can be transparent (the embed's `bg=transparent`). */
+    options: { alpha?: boolean } = {},
+  ) {
+    this.renderer = new WebGLRenderer({ antialias: true, alpha: options.alpha ?? false });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.shadowMap.enabled = true;
     this.renderer.shadowMap.type = PCFShadowMap;
@@ -103,6 +113,11 @@ export class TreeViewer {
     this.controls.addEventListener('change', () => this.requestRender());
     this.frameBounds(new Sphere(new Vector3(0, 4, 0), 5));
 
+    this.wind.apply(this.bark, 'bark');
+    this.wind.apply(this.leaves, 'bark');
+    this.wind.apply(this.foliage.material, 'leaves');
+    this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
+
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
     this.resize();
@@ -118,11 +133,14 @@ export class TreeViewer {
       this.tree = new Mesh(geometry, [this.bark, this.leaves]);
       this.tree.castShadow = true;
       this.tree.receiveShadow = true;
+      this.tree.customDepthMaterial = this.wind.depthMaterial('bark');
       this.scene.add(this.tree);
     }
     this.envelope.geometry.dispose();
     this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
     this.foliage.set(buffers.foliage);
+    this.wind.setTree(buffers.meta.bounds, geometry.hasAttribute('windPivot'));
+    if (buffers.bark) this.barkTextures.set(buffers.bark);
     for (const listener of this.treeListeners) listener(buffers);
     const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
     this.fitStage(sphere);
@@ -146,6 +164,18 @@ export class TreeViewer {
         return () => this.treeListeners.delete(listener);
       },
     };
+  }
+
+  /**
+   * Sky colour (CSS colour), or null for none: a transparent canvas (with `alpha`) without the
+   * ground disc and fog, for embedding over a page (embed page, `<sylva-tree>`).
+   */
+  setBackground(color: string | null): void {
+    this.scene.background = color === null ? null : new Color(color);
+    if (color !== null) this.fog.color.set(color);
+    this.scene.fog = color === null ? null : this.fog;
+    this.ground.visible = color !== null;
+    this.requestRender();
   }
 
   /** Shows or hides the crown envelope wireframe (the Show Preview parameter). */
@@ -187,6 +217,8 @@ export class TreeViewer {
     this.foliage.dispose();
     this.envelope.geometry.dispose();
     this.envelope.material.dispose();
+    this.wind.dispose();
+    this.barkTextures.dispose();
     this.bark.dispose();
     this.leaves.dispose();
     this.ground.geometry.dispose();
@@ -248,14 +280,33 @@ export class TreeViewer {
     if (this.frameRequested) cancelAnimationFrame(this.frameId);
     this.frameRequested = false;
     if (!this.disposed) this.renderer.render(this.scene, this.camera);
+    if (this.wind.animating) this.requestRender();
+  }
+
+  /**
+   * Renders now at the current wind time and hashes the canvas pixels (debug hook: a test
+   * renders given frames and compares them).
+   */
+  frameHash(): string {
+    this.renderNow();
+    return hashPixels(this.renderer.getContext());
+  }
+
+  /** Size of the bark colour map, null before the worker sent it (debug hook). */
+  get barkTexture(): { width: number; height: number } | null {
+    return this.barkTextures.size;
   }
 
   private requestRender(): void {
     if (this.frameRequested) return;
     this.frameRequested = true;
-    this.frameId = requestAnimationFrame(() => {
+    this.frameId = requestAnimationFrame((now) => {
       this.frameRequested = false;
-      if (!this.disposed) this.renderer.render(this.scene, this.camera);
+      if (this.disposed) return;
+      // While the wind blows, every frame advances its clock and asks for the next one.
+      this.wind.tick(now);
+      this.renderer.render(this.scene, this.camera);
+      if (this.wind.animating) this.requestRender();
     });
   }
 }

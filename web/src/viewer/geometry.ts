@@ -1,6 +1,7 @@
 /** Builds a three.js BufferGeometry straight from the worker's transferred typed arrays. */
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { TreeBuffers } from '../core/types';
+import { attachWindAttributes } from './wind';
 
 /** Material slot of each mesh group in the material array [bark, leaves]. */
 export const MATERIAL_INDEX = { bark: 0, leaves: 1 } as const;
@@ -12,6 +13,8 @@ export function buildTreeGeometry(tree: TreeBuffers): BufferGeometry {
   geometry.setAttribute('normal', new BufferAttribute(tree.normals, 3));
   geometry.setAttribute('uv', new BufferAttribute(tree.uvs, 2));
   geometry.setIndex(new BufferAttribute(tree.indices, 1));
+  // The core's wind data as `windPivot` + `windParams` (wrapped, not copied), when it has any.
+  attachWindAttributes(geometry, tree.wind);
   for (const group of tree.meta.groups) {
     geometry.addGroup(group.start, group.count, MATERIAL_INDEX[group.material]);
   }

@@ -6,8 +6,16 @@ import {
   parseRegistry,
   toSylvaError,
 } from '../core/parse';
-import type { FoliageBuffers, TreeMeta, WasmApi, WasmTree } from '../core/types';
+import type {
+  BarkTextureBuffers,
+  FoliageBuffers,
+  TreeMeta,
+  WasmApi,
+  WasmTree,
+} from '../core/types';
 import { volumeToCore } from '../core/volumes';
+import { lodsResponse } from '../lod/lodHandler';
+import { exportFormatsOf, exportTree } from '../export/exportHandler';
 import type { LeafRequest, ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
 
 /** Sends a response, transferring the given buffers. */
@@ -21,6 +29,7 @@ export function readyMessage(wasm: WasmApi): ReadyResponse {
     presets: parsePresets(wasm.presets_json()),
     version: wasm.core_version(),
     leafPresets: wasm.leaf_presets_json ? parsePresets(wasm.leaf_presets_json()) : [],
+    exportFormats: exportFormatsOf(wasm),
   };
 }
 
@@ -82,6 +91,36 @@ export function foliageOf(tree: WasmTree, meta: TreeMeta, sentHash: string): Fol
   };
 }
 
+/** Edge length of the baked bark textures (texels). */
+export const BARK_TEXTURE_SIZE = 256;
+
+/** The core's bark maps, or undefined when this wasm build has none. */
+export function barkOf(wasm: WasmApi): BarkTextureBuffers | undefined {
+  if (typeof wasm.bark_color !== 'function' || typeof wasm.bark_normal !== 'function') {
+    return undefined;
+  }
+  const color = wasm.bark_color(BARK_TEXTURE_SIZE);
+  const normal = wasm.bark_normal(BARK_TEXTURE_SIZE);
+  const size = Math.round(Math.sqrt(color.length / 4));
+  if (size < 1 || size * size * 4 !== color.length || normal.length !== color.length) {
+    return undefined;
+  }
+  return { size, color, normal };
+}
+
+/**
+ * The tree's wind data (8 floats per vertex), read defensively: empty when the core has no
+ * `wind()` getter yet or its length does not match the vertex count.
+ */
+export function windOf(tree: WasmTree, vertices: number): Float32Array {
+  const read = (tree as { wind?: () => Float32Array }).wind;
+  if (typeof read !== 'function') return new Float32Array(0);
+  const wind = read.call(tree);
+  return wind instanceof Float32Array && wind.length === vertices * 8 && vertices > 0
+    ? wind
+    : new Float32Array(0);
+}
+
 function foliageTransfer(f: FoliageBuffers): Transferable[] {
   const buffers: Transferable[] = [
     f.positions.buffer,
@@ -125,6 +164,8 @@ export function createHandler(
   let deadMessage: string | null = null;
   // The leaf texture is sent once per leaf shape: the hash of the last one sent.
   let sentLeafHash = '';
+  // The bark textures go out once, with the first result (they never change).
+  let barkSent = false;
 
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
@@ -152,6 +193,24 @@ export function createHandler(
     }
     if (request.type === 'leaf') {
       handleLeaf(wasm, request, post, die);
+      return;
+    }
+    if (request.type === 'export') {
+      try {
+        exportTree(wasm, request, post);
+      } catch (thrown) {
+        if (isTrap(thrown)) die(thrown);
+        else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
+      }
+      return;
+    }
+    if (request.type === 'lods') {
+      try {
+        post(...lodsResponse(wasm, request));
+      } catch (thrown) {
+        if (isTrap(thrown)) die(thrown);
+        else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
+      }
       return;
     }
     let tree: WasmTree;
@@ -187,6 +246,9 @@ export function createHandler(
       const meta = parseMeta(tree.meta_json());
       const foliage = foliageOf(tree, meta, sentLeafHash);
       sentLeafHash = foliage.leafHash;
+      const wind = windOf(tree, positions.length / 3);
+      const bark = barkSent ? undefined : barkOf(wasm);
+      barkSent = true;
       post(
         {
           type: 'result',
@@ -199,9 +261,13 @@ export function createHandler(
           markers,
           meta,
           foliage,
+          wind,
+          ...(bark ? { bark } : {}),
         },
         [
           ...foliageTransfer(foliage),
+          wind.buffer,
+          ...(bark ? [bark.color.buffer, bark.normal.buffer] : []),
           markers.buffer,
           positions.buffer,
           normals.buffer,

@@ -8,6 +8,8 @@ import type {
   TreeBuffers,
   VolumePrimitive,
 } from '../core/types';
+import type { LodsRequest, LodsResponse } from '../lod/types';
+import type { ExportFormat, ExportRequest, ExportResponse } from '../export/exportProtocol';
 
 /** Ask the worker to generate a tree; `id` routes the answer. */
 export interface GenerateRequest {
@@ -40,7 +42,13 @@ export interface LeafRequest {
 }
 
 /** Main thread → worker. */
-export type WorkerRequest = GenerateRequest | DebugPanicRequest | DebugHangRequest | LeafRequest;
+export type WorkerRequest =
+  | GenerateRequest
+  | DebugPanicRequest
+  | DebugHangRequest
+  | LeafRequest
+  | LodsRequest
+  | ExportRequest;
 
 /** Sent once after the wasm is initialised. */
 export interface ReadyResponse {
@@ -50,6 +58,8 @@ export interface ReadyResponse {
   version: string;
   /** The leaf presets (`leaf_presets_json`), for the leaf inspector. */
   leafPresets?: Preset[];
+  /** Mesh formats the core can export (absent: none). */
+  exportFormats?: ExportFormat[];
 }
 
 /** A generated tree; the five arrays arrive as transferred buffers. */
@@ -91,7 +101,9 @@ export type WorkerResponse =
   | FatalResponse
   | IdleResponse
   | ProgressResponse
-  | LeafResponse;
+  | LeafResponse
+  | LodsResponse
+  | ExportResponse;
 
 /** The leaf inspector's answer to request `id`: the SVG text and counts. */
 export interface LeafResponse extends LeafInspection {

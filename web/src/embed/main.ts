@@ -1,0 +1,56 @@
+/**
+ * The embed page (`embed.html?<share query>&autorotate=1&bg=transparent`): the tree of a share
+ * link with orbit controls and an "Open in Sylva" link; errors are shown in the frame.
+ */
+import { createModuleWorker } from '../createWorker';
+import { decodeQuery, decodeVolumes, VOLUMES_KEY } from '../url/codec';
+import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
+import { TreeEmbed, type EmbedState } from './TreeEmbed';
+import './embed.css';
+
+/** What tests and the console can read of the embed page. */
+declare global {
+  interface Window {
+    __sylvaEmbed?: { state(): EmbedState; rotating(): boolean; azimuth(): number };
+  }
+}
+
+function start(): void {
+  const view = document.getElementById('embed-view');
+  const link = document.getElementById('open-in-sylva');
+  if (!view || !(link instanceof HTMLAnchorElement)) throw new Error('embed.html is incomplete');
+  const search = window.location.search;
+  const options = parseEmbedOptions(search);
+  document.documentElement.dataset.bg = options.background.kind;
+  link.href = openInSylvaUrl(window.location.href, search);
+
+  const embed = new TreeEmbed(view, {
+    workerFactory: createModuleWorker,
+    background: options.background,
+    autorotate: options.autorotate,
+    onState: (state) => {
+      document.body.dataset.status = state.status;
+      if (state.status === 'ready') document.body.dataset.hash = state.hash;
+    },
+  });
+  embed.show(({ registry }) => {
+    const fatal = fatalQueryProblem(search);
+    const decoded = decodeQuery(registry, search);
+    const volumes = decodeVolumes(new URLSearchParams(search).get(VOLUMES_KEY));
+    // A fatal problem says it all (the codec would add "loaded the defaults").
+    const messages = fatal
+      ? options.messages
+      : [...options.messages, ...decoded.messages, ...volumes.messages];
+    return { params: decoded.params, volumes: volumes.volumes, messages, fatal };
+  });
+  window.__sylvaEmbed = {
+    state: () => embed.current,
+    rotating: () => embed.rotating,
+    azimuth: () => embed.viewer.overlayHost().orbit.getAzimuthalAngle(),
+  };
+  window.addEventListener('pagehide', (event) => {
+    if (!event.persisted) embed.dispose();
+  });
+}
+
+start();

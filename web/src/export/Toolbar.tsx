@@ -1,0 +1,243 @@
+/**
+ * The viewer toolbar: Export menu (PNG screenshot, preset JSON save/load, GLB and OBJ when the
+ * core has exporters), "Copy embed code" and a link to the docs page.
+ */
+import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
+import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
+import { createModuleWorker } from '../createWorker';
+import { EmbedDialog } from '../embed/EmbedDialog';
+import { encodeVolumes } from '../url/codec';
+import type { TreeViewer } from '../viewer/TreeViewer';
+import { canvasPng, downloadBlob, readTextFile } from './download';
+import { ExportClient } from './exportClient';
+import type { ExportFormat } from './exportProtocol';
+import {
+  MAX_PRESET_FILE_BYTES,
+  parsePresetFile,
+  presetFileName,
+  presetFileText,
+} from './presetFile';
+import { zipStore } from './zip';
+import './toolbar.css';
+
+interface Props {
+  registry: readonly ParamSpec[];
+  params: Params;
+  /** The preset the params match, for file names. */
+  presetName: string | null;
+  viewerRef: RefObject<TreeViewer | null>;
+  /** The growth volume primitives sent with every request. */
+  volumesRef: RefObject<VolumePrimitive[]>;
+  /** Applies params read from a preset file (one undoable step). */
+  onLoadParams: (params: Params) => void;
+}
+
+type Status = { kind: 'ok' | 'error' | 'busy'; text: string } | null;
+
+/** Toolbar over the viewer (top right). */
+export function Toolbar(props: Props) {
+  const { registry, params, presetName, viewerRef, volumesRef, onLoadParams } = props;
+  const menuRef = useRef<HTMLDetailsElement>(null);
+  const fileRef = useRef<HTMLInputElement>(null);
+  const clientRef = useRef<ExportClient | null>(null);
+  const [formats, setFormats] = useState<ExportFormat[] | 'checking' | null>(null);
+  const [status, setStatus] = useState<Status>(null);
+  // The embed dialog: the volumes and page URL as they were when it was opened.
+  const [embedAt, setEmbedAt] = useState<{ volumes: string; appHref: string } | null>(null);
+
+  useEffect(() => () => clientRef.current?.dispose(), []);
+
+  useEffect(() => {
+    if (status?.kind !== 'ok') return;
+    const timer = setTimeout(() => setStatus(null), 6000);
+    return () => clearTimeout(timer);
+  }, [status]);
+
+  const client = useCallback((): ExportClient => {
+    clientRef.current ??= new ExportClient(createModuleWorker);
+    return clientRef.current;
+  }, []);
+
+  const closeMenu = () => {
+    if (menuRef.current) menuRef.current.open = false;
+  };
+
+  const baseName = presetFileName(params, presetName).replace(/\.json$/, '');
+
+  const onToggle = () => {
+    if (!menuRef.current?.open || formats !== null) return;
+    setFormats('checking');
+    client()
+      .formats()
+      .then(setFormats, () => setFormats([]));
+  };
+
+  const screenshot = () => {
+    closeMenu();
+    const viewer = viewerRef.current;
+    if (!viewer) return;
+    canvasPng(viewer.overlayHost().domElement, () => viewer.renderNow()).then(
+      (blob) => {
+        downloadBlob(blob, `${baseName}.png`);
+        setStatus({ kind: 'ok', text: `Saved ${baseName}.png.` });
+      },
+      (error: unknown) => setStatus({ kind: 'error', text: String(error) }),
+    );
+  };
+
+  const savePreset = () => {
+    closeMenu();
+    const name = `${baseName}.json`;
+    const text = presetFileText(registry, params);
+    downloadBlob(new Blob([text], { type: 'application/json' }), name);
+    setStatus({ kind: 'ok', text: `Saved ${name}.` });
+  };
+
+  const loadPreset = (file: File) => {
+    readTextFile(file, MAX_PRESET_FILE_BYTES)
+      .then((text) => {
+        const result = parsePresetFile(registry, text);
+        if (!result.ok) {
+          setStatus({ kind: 'error', text: `Could not load "${file.name}": ${result.error}` });
+          return;
+        }
+        onLoadParams(result.params);
+        setStatus({ kind: 'ok', text: [`Loaded ${file.name}.`, ...result.messages].join(' ') });
+      })
+      .catch((error: unknown) => {
+        const message = error instanceof Error ? error.message : String(error);
+        setStatus({ kind: 'error', text: `Could not load "${file.name}": ${message}` });
+      });
+  };
+
+  const exportMesh = (format: ExportFormat) => {
+    closeMenu();
+    setStatus({ kind: 'busy', text: `Exporting ${format.toUpperCase()}…` });
+    client()
+      .export(params, volumesRef.current ?? [], format, { name: baseName })
+      .then((response) => {
+        const [first] = response.files;
+        if (response.files.length === 1 && first) {
+          const name = first.name;
+          downloadBlob(new Blob([first.bytes as BlobPart], { type: first.mime }), name);
+          setStatus({ kind: 'ok', text: `Saved ${name}.` });
+        } else {
+          const name = `${baseName}-${format}.zip`;
+          downloadBlob(
+            new Blob([zipStore(response.files) as BlobPart], { type: 'application/zip' }),
+            name,
+          );
+          setStatus({
+            kind: 'ok',
+            text: `Saved ${name} (${response.files.length} files: OBJ, MTL and textures).`,
+          });
+        }
+      })
+      .catch((error: unknown) => {
+        const message = error instanceof Error ? error.message : String(error);
+        setStatus({ kind: 'error', text: `Export failed: ${message}` });
+      });
+  };
+
+  const meshFormats: { format: ExportFormat; label: string }[] = [
+    { format: 'glb', label: 'GLB (glTF 2.0)' },
+    { format: 'obj', label: 'OBJ + MTL + textures (zip)' },
+  ];
+
+  return (
+    <div className="toolbar" data-testid="toolbar">
+      <details className="toolbar-menu" ref={menuRef} onToggle={onToggle}>
+        <summary data-testid="export-menu">Export</summary>
+        <div className="toolbar-items" role="group" aria-label="Export">
+          <button type="button" data-testid="export-png" onClick={screenshot}>
+            PNG screenshot
+          </button>
+          <button type="button" data-testid="export-preset-save" onClick={savePreset}>
+            Save preset JSON
+          </button>
+          <button
+            type="button"
+            data-testid="export-preset-load"
+            onClick={() => {
+              closeMenu();
+              fileRef.current?.click();
+            }}
+          >
+            Load preset JSON…
+          </button>
+          {meshFormats.map(({ format, label }) => {
+            const available = Array.isArray(formats) && formats.includes(format);
+            return (
+              <button
+                key={format}
+                type="button"
+                data-testid={`export-${format}`}
+                disabled={!available}
+                title={
+                  available
+                    ? undefined
+                    : formats === 'checking'
+                      ? 'Checking the core…'
+                      : 'This build of the Sylva core has no exporter for this format yet'
+                }
+                onClick={() => exportMesh(format)}
+              >
+                {label}
+              </button>
+            );
+          })}
+        </div>
+      </details>
+      <input
+        ref={fileRef}
+        type="file"
+        accept=".json,application/json"
+        hidden
+        data-testid="preset-file-input"
+        onChange={(e) => {
+          const file = e.currentTarget.files?.[0];
+          e.currentTarget.value = '';
+          if (file) loadPreset(file);
+        }}
+      />
+      <button
+        type="button"
+        data-testid="copy-embed"
+        onClick={() =>
+          setEmbedAt({
+            volumes: encodeVolumes(volumesRef.current ?? []),
+            appHref: window.location.href,
+          })
+        }
+      >
+        Copy embed code
+      </button>
+      <a
+        className="toolbar-link"
+        href="docs.html"
+        target="_blank"
+        rel="noopener"
+        data-testid="docs-link"
+      >
+        Docs
+      </a>
+      {status ? (
+        <p
+          className={`toolbar-status toolbar-status-${status.kind}`}
+          role={status.kind === 'error' ? 'alert' : 'status'}
+          data-testid="toolbar-status"
+        >
+          {status.text}
+          {status.kind === 'error' ? (
+            <button type="button" aria-label="Dismiss" onClick={() => setStatus(null)}>
+              ×
+            </button>
+          ) : null}
+        </p>
+      ) : null}
+      {embedAt ? (
+        <EmbedDialog input={{ registry, params, ...embedAt }} onClose={() => setEmbedAt(null)} />
+      ) : null}
+    </div>
+  );
+}

@@ -1,0 +1,173 @@
+/** Mesh export, worker side (the real core's exporters), the client, and the ZIP writer. */
+import { describe, expect, it } from 'vitest';
+import { loadWasm } from '../testing/realWasm';
+import type { WasmApi } from '../core/types';
+import { createHandler } from '../worker/handler';
+import type { WorkerResponse } from '../worker/protocol';
+import { ExportClient } from './exportClient';
+import { exportFormatsOf, fileStem } from './exportHandler';
+import { crc32, zipStore } from './zip';
+
+/** The real wasm whose trees hide the exporters (a core from before the export branch). */
+function withoutExporters(): WasmApi {
+  const real = loadWasm();
+  const hidden = new Set(['to_glb', 'to_obj', 'to_mtl', 'obj_texture', 'obj_texture_names']);
+  return {
+    ...real,
+    generate: (json: string) =>
+      new Proxy(real.generate(json), {
+        get: (tree, key): unknown => (hidden.has(String(key)) ? undefined : Reflect.get(tree, key)),
+      }),
+  };
+}
+
+function collect(wasm: WasmApi) {
+  const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
+  const handle = createHandler(wasm, (message, transfer) => sent.push({ message, transfer }));
+  return { sent, handle };
+}
+
+function exported(sent: { message: WorkerResponse }[]) {
+  const message = sent.at(-1)?.message;
+  if (message?.type !== 'exported') throw new Error(JSON.stringify(message));
+  return message;
+}
+
+describe('export feature check', () => {
+  it('lists only the exporters the GeneratedTree class has', () => {
+    expect(exportFormatsOf({})).toEqual([]);
+    expect(exportFormatsOf({ GeneratedTree: { prototype: { to_glb() {} } } })).toEqual(['glb']);
+    expect(exportFormatsOf(loadWasm())).toEqual(['glb', 'obj']);
+  });
+
+  it('file stems are plain names', () => {
+    expect(fileStem('sylva-quaking_aspen-seed7')).toBe('sylva-quaking_aspen-seed7');
+    expect(fileStem('../../etc/passwd')).toBe('etc-passwd');
+    expect(fileStem('')).toBe('tree');
+    expect(fileStem(undefined)).toBe('tree');
+  });
+});
+
+describe('export request (worker handler, real core)', () => {
+  it('GLB: regenerates the params, glTF 2.0 binary, bytes transferred', () => {
+    const { sent, handle } = collect(loadWasm());
+    handle({ type: 'generate', id: 1, params: { seed: 3, levels: 2 } });
+    const shown = sent[0]?.message;
+    handle({
+      type: 'export',
+      id: 4,
+      params: { seed: 3, levels: 2 },
+      format: 'glb',
+      leaves: 'baked',
+      name: 'oak-1',
+    });
+    const message = exported(sent);
+    expect(message.id).toBe(4);
+    // The same tree as the viewer shows.
+    expect(shown?.type === 'result' && shown.meta.hash).toBe(message.hash);
+    const [file] = message.files;
+    expect(file?.name).toBe('oak-1.glb');
+    expect(file?.mime).toBe('model/gltf-binary');
+    const bytes = file?.bytes ?? new Uint8Array(0);
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    expect(new TextDecoder().decode(bytes.subarray(0, 4))).toBe('glTF');
+    expect(view.getUint32(4, true)).toBe(2);
+    expect(view.getUint32(8, true)).toBe(bytes.length);
+    expect(sent.at(-1)?.transfer).toEqual([bytes.buffer]);
+  });
+
+  it('OBJ: the OBJ, its MTL and the textures the MTL names', () => {
+    const { sent, handle } = collect(loadWasm());
+    handle({ type: 'export', id: 1, params: { levels: 2 }, format: 'obj', name: 'fir' });
+    const files = exported(sent).files;
+    const names = files.map((f) => f.name);
+    expect(names.slice(0, 2)).toEqual(['fir.obj', 'fir.mtl']);
+    const obj = new TextDecoder().decode(files[0]?.bytes);
+    const mtl = new TextDecoder().decode(files[1]?.bytes);
+    expect(obj).toMatch(/^mtllib fir\.mtl$/m);
+    expect(obj).toMatch(/^v -?\d/m);
+    expect(mtl).toMatch(/^newmtl /m);
+    for (const texture of files.slice(2)) {
+      expect(mtl).toContain(texture.name);
+      expect([...texture.bytes.subarray(0, 4)]).toEqual([0x89, 0x50, 0x4e, 0x47]);
+    }
+  });
+
+  it('a core without exporters, or invalid params, answer a typed error', () => {
+    const { sent, handle } = collect(withoutExporters());
+    handle({ type: 'export', id: 2, params: { levels: 99 }, format: 'glb' });
+    handle({ type: 'export', id: 3, params: {}, format: 'glb' });
+    handle({ type: 'export', id: 4, params: {}, format: 'obj' });
+    const errors = sent.map((s) => (s.message.type === 'error' ? s.message.error : null));
+    expect(errors[0]?.param).toBe('levels');
+    expect(errors[1]?.message).toMatch(/no GLB exporter/);
+    expect(errors[2]?.message).toMatch(/no OBJ exporter/);
+  });
+});
+
+describe('ExportClient', () => {
+  it('reports the formats from ready and resolves exports through the handler', async () => {
+    const wasm = loadWasm();
+    let stopped = 0;
+    const client = new ExportClient((onMessage) => {
+      const handle = createHandler(wasm, (message) => queueMicrotask(() => onMessage(message)));
+      queueMicrotask(() =>
+        onMessage({
+          type: 'ready',
+          registry: [],
+          presets: [],
+          version: 'test',
+          exportFormats: exportFormatsOf(wasm),
+        }),
+      );
+      return {
+        post: (request) => queueMicrotask(() => handle(request)),
+        terminate: () => stopped++,
+      };
+    });
+    expect(await client.formats()).toEqual(['glb', 'obj']);
+    const response = await client.export({ seed: 2 }, [], 'glb');
+    expect(new TextDecoder().decode(response.files[0]?.bytes.subarray(0, 4))).toBe('glTF');
+    await expect(client.export({ levels: 99 }, [], 'obj')).rejects.toThrow(/levels/i);
+    client.dispose();
+    expect(stopped).toBe(1);
+  });
+
+  it('refuses a format the core lacks', async () => {
+    const client = new ExportClient((onMessage) => {
+      queueMicrotask(() =>
+        onMessage({ type: 'ready', registry: [], presets: [], version: 't', exportFormats: [] }),
+      );
+      return { post: () => undefined, terminate: () => undefined };
+    });
+    await expect(client.export({}, [], 'glb')).rejects.toThrow(/cannot export GLB/);
+  });
+});
+
+describe('zipStore', () => {
+  it('writes a valid stored archive (signatures, CRC, sizes, offsets)', () => {
+    const enc = new TextEncoder();
+    const a = enc.encode('mtllib tree.mtl\nv 0 0 0\n');
+    const b = enc.encode('newmtl bark\n');
+    const zip = zipStore([
+      { name: 'tree.obj', bytes: a },
+      { name: 'tree.mtl', bytes: b },
+    ]);
+    const view = new DataView(zip.buffer);
+    expect(view.getUint32(0, true)).toBe(0x04034b50);
+    expect(view.getUint32(14, true)).toBe(crc32(a));
+    expect(view.getUint32(18, true)).toBe(a.length);
+    const end = zip.length - 22;
+    expect(view.getUint32(end, true)).toBe(0x06054b50);
+    expect(view.getUint16(end + 10, true)).toBe(2);
+    const centralAt = view.getUint32(end + 16, true);
+    expect(view.getUint32(centralAt, true)).toBe(0x02014b50);
+    const secondCentral = centralAt + 46 + 'tree.obj'.length;
+    const secondLocal = view.getUint32(secondCentral + 42, true);
+    expect(view.getUint32(secondLocal, true)).toBe(0x04034b50);
+    expect(new TextDecoder().decode(zip.subarray(secondLocal + 30, secondLocal + 38))).toBe(
+      'tree.mtl',
+    );
+    expect(crc32(enc.encode('123456789'))).toBe(0xcbf43926);
+  });
+});

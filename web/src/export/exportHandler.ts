@@ -1,0 +1,110 @@
+/**
+ * Worker side of the mesh export: feature detection of the core's exporters and one export
+ * (regenerate, serialise, transfer). The core's API (`GeneratedTree`): `to_glb(options_json)`,
+ * `to_obj(name, options_json)`, `to_mtl(name, options_json)`, `obj_texture_names(name,
+ * options_json)` and `obj_texture(options_json, index)` (PNG files the MTL refers to).
+ */
+import { parseMeta } from '../core/parse';
+import type { WasmApi, WasmTree } from '../core/types';
+import { volumeToCore } from '../core/volumes';
+import type { WorkerResponse } from '../worker/protocol';
+import type { ExportedFile, ExportFormat, ExportRequest } from './exportProtocol';
+
+/** A generated tree with the (optional: older cores and fakes lack them) exporters. */
+export type ExportableTree = WasmTree & {
+  to_glb?(optionsJson: string): Uint8Array;
+  to_obj?(name: string, optionsJson: string): string;
+  to_mtl?(name: string, optionsJson: string): string;
+  obj_texture_names?(name: string, optionsJson: string): string[];
+  obj_texture?(optionsJson: string, index: number): Uint8Array;
+};
+
+/** The formats this wasm build can export, from its `GeneratedTree` class. */
+export function exportFormatsOf(wasm: object): ExportFormat[] {
+  const tree = (wasm as { GeneratedTree?: { prototype?: unknown } }).GeneratedTree;
+  const proto = tree?.prototype;
+  if (typeof proto !== 'object' || proto === null) return [];
+  const has = (name: string): boolean =>
+    typeof (proto as Record<string, unknown>)[name] === 'function';
+  const formats: ExportFormat[] = [];
+  if (has('to_glb')) formats.push('glb');
+  if (has('to_obj') && has('to_mtl')) formats.push('obj');
+  return formats;
+}
+
+/** A safe file stem (letters, digits, `_`, `-`; at most 64), `tree` when nothing is left. */
+export function fileStem(name: string | undefined): string {
+  const stem = (name ?? '')
+    .replace(/[^\w-]+/g, '-')
+    .replace(/^-+|-+$/g, '')
+    .slice(0, 64);
+  return stem === '' ? 'tree' : stem;
+}
+
+/** A file name the core made for a texture, reduced to a plain name (never a path). */
+function plainName(name: string, fallback: string): string {
+  const base = name.split(/[\\/]/).pop() ?? '';
+  return /^[\w.-]{1,96}$/.test(base) && !base.startsWith('.') ? base : fallback;
+}
+
+/** Serialises a generated tree in `format` (throws when the core lacks that exporter). */
+export function exportFiles(
+  tree: ExportableTree,
+  format: ExportFormat,
+  leaves: ExportRequest['leaves'],
+  name?: string,
+): ExportedFile[] {
+  const options = JSON.stringify(leaves ? { leaves } : {});
+  if (format === 'glb') {
+    if (typeof tree.to_glb !== 'function') throw new Error('This Sylva core has no GLB exporter.');
+    return [
+      { name: `${fileStem(name)}.glb`, mime: 'model/gltf-binary', bytes: tree.to_glb(options) },
+    ];
+  }
+  if (typeof tree.to_obj !== 'function' || typeof tree.to_mtl !== 'function') {
+    throw new Error('This Sylva core has no OBJ exporter.');
+  }
+  const stem = fileStem(name);
+  const encoder = new TextEncoder();
+  const files: ExportedFile[] = [
+    { name: `${stem}.obj`, mime: 'model/obj', bytes: encoder.encode(tree.to_obj(stem, options)) },
+    { name: `${stem}.mtl`, mime: 'model/mtl', bytes: encoder.encode(tree.to_mtl(stem, options)) },
+  ];
+  const names = tree.obj_texture_names?.(stem, options) ?? [];
+  names.forEach((texture, index) => {
+    const bytes = tree.obj_texture?.(options, index) ?? new Uint8Array(0);
+    if (bytes.length > 0) {
+      files.push({ name: plainName(texture, `${stem}_${index}.png`), mime: 'image/png', bytes });
+    }
+  });
+  return files;
+}
+
+/**
+ * Answers an export request: regenerates the tree and posts the files (buffers transferred).
+ * Throws what `generate` or an exporter threw; the handler reports it like a generate error.
+ */
+export function exportTree(
+  wasm: WasmApi,
+  request: ExportRequest,
+  post: (message: WorkerResponse, transfer: Transferable[]) => void,
+): void {
+  const input = request.volumes?.length
+    ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
+    : request.params;
+  const tree: ExportableTree = wasm.generate(JSON.stringify(input));
+  try {
+    const { hash } = parseMeta(tree.meta_json());
+    const files = exportFiles(tree, request.format, request.leaves, request.name);
+    post(
+      { type: 'exported', id: request.id, format: request.format, hash, files },
+      files.map((f) => f.bytes.buffer),
+    );
+  } finally {
+    try {
+      tree.free();
+    } catch {
+      // freeing after a trap may fail; the instance is discarded anyway
+    }
+  }
+}

@@ -1,0 +1,41 @@
+/**
+ * Worker messages of the mesh export (GLB, OBJ + MTL). The app asks a separate export worker,
+ * never the interactive one: an export regenerates the current params and returns the files'
+ * bytes as transferables.
+ */
+import type { Params, VolumePrimitive } from '../core/types';
+
+/** File formats the core may export. */
+export type ExportFormat = 'glb' | 'obj';
+
+/** How leaves go into a GLB: one instanced mesh, baked into the tree mesh, or left out. */
+export type LeafExport = 'instanced' | 'baked' | 'none';
+
+/** Ask the worker to regenerate `params` and export the tree. */
+export interface ExportRequest {
+  type: 'export';
+  id: number;
+  params: Params;
+  volumes?: VolumePrimitive[];
+  format: ExportFormat;
+  /** The core's `{"leaves": ...}` export option (GLB; default `instanced`). */
+  leaves?: LeafExport;
+  /** File stem: the OBJ names its MTL and textures after it (default `tree`). */
+  name?: string;
+}
+
+/** One exported file (name as the files refer to each other, e.g. the OBJ's `mtllib`). */
+export interface ExportedFile {
+  name: string;
+  mime: string;
+  bytes: Uint8Array;
+}
+
+/** The exported files of request `id`, with the tree's content hash. */
+export interface ExportResponse {
+  type: 'exported';
+  id: number;
+  format: ExportFormat;
+  hash: string;
+  files: ExportedFile[];
+}

@@ -1,0 +1,447 @@
+/**
+ * The forest view's three.js side: N trees of a few varieties on a ground plane. Per variety and
+ * level there is one InstancedMesh per material (LOD0 bark + leaves, LOD1 bark + leaves, LOD2
+ * bark + billboard cloud, impostor quad): 7 meshes per variety, the bark and leaves of a level
+ * sharing one instance buffer. Every frame `assignLods` (layout.ts) buckets the trees by
+ * distance and writes their matrices into those preallocated buffers; only the written range is
+ * uploaded and `.count` set, so the number of draw calls is bounded by
+ * `varieties × 7 + 1` (the ground) whatever N is.
+ */
+import type { Sphere } from 'three';
+import {
+  Color,
+  DirectionalLight,
+  DoubleSide,
+  DynamicDrawUsage,
+  Fog,
+  Frustum,
+  HemisphereLight,
+  InstancedBufferAttribute,
+  InstancedMesh,
+  Matrix4,
+  Mesh,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  PlaneGeometry,
+  Scene,
+  Vector3,
+  WebGLRenderer,
+  type BufferGeometry,
+  type Material,
+} from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import {
+  bakeImpostor,
+  impostorGeometry,
+  impostorMaterial,
+  type ImpostorAtlas,
+} from '../lod/impostor';
+import {
+  BARK_COLOR,
+  barkGeometry,
+  cloudGeometry,
+  cloudMaterial,
+  clumpTexture,
+  leafTexture,
+  mergedLeafGeometry,
+  treeSphere,
+} from '../lod/lodObjects';
+import { switchDistances } from '../lod/selection';
+import type { LodBuffers } from '../lod/types';
+import {
+  assignLods,
+  createBuckets,
+  FOREST_LEVELS,
+  scatter,
+  type ForestLayout,
+  type LodBuckets,
+} from './layout';
+
+/** Meshes (so draw calls) per variety: 3 levels × 2 materials + the impostor. */
+export const MESHES_PER_VARIETY = 7;
+/** Screen-size thresholds of the forest (see lod/selection.ts): more aggressive than the viewer. */
+export const FOREST_THRESHOLDS = [0.6, 0.3, 0.12];
+/** Upper bound of draw calls for `varieties` varieties: their meshes plus the ground. */
+export function drawCallBound(varieties: number): number {
+  return varieties * MESHES_PER_VARIETY + 1;
+}
+
+const SKY = '#dce6ec';
+const GROUND = '#8f9a6e';
+const FRAME_SAMPLES = 60;
+
+/** One variety's geometry, materials and impostor (shared by all its instances). */
+interface Variety {
+  sphere: Sphere;
+  /** Per level 0..3: the parts (geometry + material) drawn for each instance. */
+  parts: { geometry: BufferGeometry; material: Material }[][];
+  atlas: ImpostorAtlas;
+  disposables: { dispose(): void }[];
+  triangles: number[];
+}
+
+/** Numbers the overlay and the debug hook read. */
+export interface ForestStats {
+  trees: number;
+  varieties: number;
+  drawCalls: number;
+  bound: number;
+  triangles: number;
+  /** Median frame-to-frame time of the last frames (ms). */
+  frameMs: number;
+  /** Median CPU time of LOD assignment + render (ms). */
+  cpuMs: number;
+  /** Median LOD assignment time (ms). */
+  assignMs: number;
+  /** Trees drawn per level (LOD0, LOD1, LOD2, impostor). */
+  perLevel: number[];
+  /** Trees drawn (inside the view). */
+  visible: number;
+}
+
+/** What the debug hook's `forest()` returns. */
+export interface ForestDebug {
+  drawCalls: number;
+  bound: number;
+  instances: number;
+  visible: number;
+  perLevel: number[];
+  frameMs: number;
+  cpuMs: number;
+  assignMs: number;
+  varieties: number;
+  expectedVarieties: number;
+  bakeMs: number[];
+}
+
+function median(values: number[]): number {
+  if (values.length === 0) return 0;
+  const s = [...values].sort((a, b) => a - b);
+  return s[Math.floor(s.length / 2)]!;
+}
+
+/** See the module docs. */
+export class ForestScene {
+  readonly renderer: WebGLRenderer;
+  private readonly scene = new Scene();
+  private readonly camera = new PerspectiveCamera(40, 1, 0.5, 4000);
+  private readonly controls: OrbitControls;
+  private readonly ground: Mesh<PlaneGeometry, MeshStandardMaterial>;
+  private readonly varieties: Variety[] = [];
+  private meshes: InstancedMesh[][] = [];
+  private attributes: InstancedBufferAttribute[] = [];
+  private layout: ForestLayout | null = null;
+  private buckets: LodBuckets | null = null;
+  private count = 0;
+  private seed = 1;
+  private frameId = 0;
+  private lastFrame = 0;
+  private readonly frameTimes: number[] = [];
+  private readonly cpuTimes: number[] = [];
+  private readonly assignTimes: number[] = [];
+  private readonly frustum = new Frustum();
+  private readonly planes = new Float32Array(24);
+  private readonly projView = new Matrix4();
+  private radius = new Float32Array(0);
+  private centreY = new Float32Array(0);
+  private readonly resizeObserver: ResizeObserver;
+  private disposed = false;
+  private statsValue: ForestStats;
+  /** While varieties are still being added the loop draws nothing (the bakes get the GPU). */
+  private loading = true;
+
+  constructor(private readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: false });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 1.5));
+    this.renderer.domElement.dataset.testid = 'forest-canvas';
+    container.appendChild(this.renderer.domElement);
+    this.scene.background = new Color(SKY);
+    this.scene.fog = new Fog(SKY, 150, 900);
+    this.scene.add(new HemisphereLight('#e8f1ff', '#6b5a45', 1.4));
+    const sun = new DirectionalLight('#fff6e5', 2.4);
+    sun.position.set(0.5, 1, 0.35);
+    this.scene.add(sun);
+    this.ground = new Mesh(
+      new PlaneGeometry(1, 1),
+      new MeshStandardMaterial({ color: GROUND, roughness: 1 }),
+    );
+    this.ground.rotation.x = -Math.PI / 2;
+    this.scene.add(this.ground);
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.maxPolarAngle = Math.PI * 0.49;
+    this.controls.enableDamping = false;
+    this.statsValue = this.emptyStats();
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+    this.resize();
+    this.loop();
+  }
+
+  /** Adds a variety (a tree with its levels); bakes its impostor with this renderer. */
+  addVariety(lods: LodBuffers): void {
+    const sphere = treeSphere(lods);
+    const disposables: { dispose(): void }[] = [];
+    const own = <T extends { dispose(): void }>(x: T): T => {
+      disposables.push(x);
+      return x;
+    };
+    const map = lods.leafTexture ? own(leafTexture(lods.leafTexture)) : null;
+    const bark = own(new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 }));
+    const leaves = own(
+      new MeshStandardMaterial({
+        color: '#ffffff',
+        map,
+        vertexColors: true,
+        alphaTest: 0.5,
+        side: DoubleSide,
+        roughness: 0.7,
+      }),
+    );
+    const parts: Variety['parts'] = [];
+    for (let l = 0; l < 3; l++) {
+      const level = lods.levels[l]!;
+      const list = [{ geometry: own(barkGeometry(level)), material: bark as Material }];
+      const merged = mergedLeafGeometry(level);
+      if (merged) list.push({ geometry: own(merged), material: leaves });
+      const cloud = cloudGeometry(level);
+      if (cloud) {
+        const texture = own(clumpTexture(lods.leafTexture, 7 + this.varieties.length));
+        list.push({ geometry: own(cloud), material: own(cloudMaterial(texture)) });
+      }
+      parts.push(list);
+    }
+    // The impostor is baked from LOD1 here (LOD0 in the tree viewer): at the distances where the
+    // forest shows impostors the two are indistinguishable, and the bake is 3× cheaper.
+    const source = parts[1]!.map((p) => ({
+      geometry: p.geometry,
+      color: p.material === bark ? BARK_COLOR : '#ffffff',
+      map: p.material === bark ? null : map,
+      vertexColors: p.material !== bark,
+      doubleSided: p.material !== bark,
+    }));
+    const atlas = own(bakeImpostor(this.renderer, source, sphere, { frames: 8, cellPx: 64 }));
+    const imp = own(
+      impostorMaterial(atlas, {
+        sunDir: new Vector3(0.5, 1, 0.35).normalize(),
+        sunColor: new Color('#fff6e5').multiplyScalar(2.4),
+        sky: new Color('#e8f1ff').multiplyScalar(1.4),
+        ground: new Color('#6b5a45').multiplyScalar(1.4),
+      }),
+    );
+    parts.push([{ geometry: own(impostorGeometry()), material: imp }]);
+    const t = lods.meta.levels.map((x) => x.triangles);
+    this.varieties.push({ sphere, parts, atlas, disposables, triangles: [...t, 2] });
+    this.rebuild();
+  }
+
+  /** Starts drawing (call once every variety is added or has failed). */
+  setLoading(loading: boolean): void {
+    this.loading = loading;
+  }
+
+  /** Number of varieties added. */
+  get varietyCount(): number {
+    return this.varieties.length;
+  }
+
+  /** Impostor bake times (ms) per variety. */
+  get bakeMs(): number[] {
+    return this.varieties.map((v) => v.atlas.bakeMs);
+  }
+
+  /** Sets the number of trees (re-scatters, keeps the seed). */
+  setCount(n: number, seed = this.seed): void {
+    this.count = Math.max(0, Math.floor(n));
+    this.seed = seed;
+    this.rebuild();
+  }
+
+  /** The latest stats. */
+  stats(): ForestStats {
+    return this.statsValue;
+  }
+
+  /** Places the camera `distance` m from the forest centre (tests). */
+  setCameraDistance(distance: number): void {
+    const dir = new Vector3().subVectors(this.camera.position, this.controls.target).normalize();
+    this.camera.position.copy(this.controls.target).addScaledVector(dir, distance);
+    this.controls.update();
+  }
+
+  /** Stops the loop and frees every GPU resource. */
+  dispose(): void {
+    this.disposed = true;
+    cancelAnimationFrame(this.frameId);
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    this.disposeInstances();
+    for (const v of this.varieties) for (const d of v.disposables) d.dispose();
+    this.ground.geometry.dispose();
+    this.ground.material.dispose();
+    this.renderer.dispose();
+    this.renderer.domElement.remove();
+  }
+
+  private emptyStats(): ForestStats {
+    return {
+      trees: 0,
+      varieties: 0,
+      drawCalls: 0,
+      bound: drawCallBound(0),
+      triangles: 0,
+      frameMs: 0,
+      cpuMs: 0,
+      assignMs: 0,
+      perLevel: [0, 0, 0, 0],
+      visible: 0,
+    };
+  }
+
+  private disposeInstances(): void {
+    for (const list of this.meshes) {
+      for (const m of list) {
+        this.scene.remove(m);
+        m.dispose();
+      }
+    }
+    this.meshes = [];
+    this.attributes = [];
+  }
+
+  /** New layout and instanced meshes for the current count and varieties. */
+  private rebuild(): void {
+    this.disposeInstances();
+    const nv = this.varieties.length;
+    if (nv === 0) return;
+    const spacing = Math.max(...this.varieties.map((v) => v.sphere.radius)) * 1.1;
+    this.layout = scatter(this.count, { seed: this.seed, varieties: nv, spacing });
+    this.buckets = createBuckets(this.layout, nv);
+    this.radius = Float32Array.from(this.varieties.map((v) => v.sphere.radius));
+    this.centreY = Float32Array.from(this.varieties.map((v) => v.sphere.center.y));
+    for (let v = 0; v < nv; v++) {
+      const variety = this.varieties[v]!;
+      for (let l = 0; l < FOREST_LEVELS; l++) {
+        const b = v * FOREST_LEVELS + l;
+        const attribute = new InstancedBufferAttribute(this.buckets.matrices[b]!, 16);
+        attribute.setUsage(DynamicDrawUsage);
+        this.attributes[b] = attribute;
+        const list: InstancedMesh[] = [];
+        const room = this.layout.perVariety[v] ?? 0;
+        for (const part of variety.parts[l]!) {
+          const mesh = new InstancedMesh(part.geometry, part.material, Math.max(room, 1));
+          mesh.instanceMatrix = attribute;
+          mesh.count = 0;
+          mesh.visible = false;
+          mesh.frustumCulled = false;
+          list.push(mesh);
+          this.scene.add(mesh);
+        }
+        this.meshes[b] = list;
+      }
+    }
+    const half = this.layout.halfSize;
+    this.ground.scale.set(half * 2 + 200, half * 2 + 200, 1);
+    const r = this.radius[0] ?? 5;
+    // Start at the forest's edge, looking in over the trees.
+    this.controls.target.set(0, r, half * 0.5);
+    this.camera.position.set(half * 0.15, r * 3.5, half + r * 4);
+    this.camera.far = half * 4 + 1000;
+    this.camera.updateProjectionMatrix();
+    (this.scene.fog as Fog).far = Math.max(half * 2.2, 400);
+    (this.scene.fog as Fog).near = Math.max(half * 0.4, 100);
+    this.controls.maxDistance = half * 3 + 200;
+    this.controls.update();
+  }
+
+  private resize(): void {
+    const width = Math.max(this.container.clientWidth, 1);
+    const height = Math.max(this.container.clientHeight, 1);
+    this.renderer.setSize(width, height, true);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+  }
+
+  private loop = (): void => {
+    if (this.disposed) return;
+    this.frameId = requestAnimationFrame(this.loop);
+    const now = performance.now();
+    if (this.loading) {
+      this.lastFrame = 0;
+      return;
+    }
+    if (this.lastFrame > 0) push(this.frameTimes, now - this.lastFrame);
+    this.lastFrame = now;
+    this.renderFrame();
+  };
+
+  /** Assigns levels, uploads the written ranges and draws. */
+  renderFrame(): void {
+    const t0 = performance.now();
+    let visible = 0;
+    const layout = this.layout;
+    const buckets = this.buckets;
+    if (layout && buckets) {
+      this.camera.updateMatrixWorld();
+      this.projView.multiplyMatrices(this.camera.projectionMatrix, this.camera.matrixWorldInverse);
+      this.frustum.setFromProjectionMatrix(this.projView);
+      this.frustum.planes.forEach((p, k) => {
+        this.planes[k * 4] = p.normal.x;
+        this.planes[k * 4 + 1] = p.normal.y;
+        this.planes[k * 4 + 2] = p.normal.z;
+        this.planes[k * 4 + 3] = p.constant;
+      });
+      const { out, back } = switchDistances(FOREST_THRESHOLDS, this.camera.fov);
+      const p = this.camera.position;
+      visible = assignLods(layout, buckets, {
+        camera: [p.x, p.y, p.z],
+        radius: this.radius,
+        centreY: this.centreY,
+        out,
+        back,
+        planes: this.planes,
+      });
+      push(this.assignTimes, performance.now() - t0);
+      for (let b = 0; b < this.meshes.length; b++) {
+        const n = buckets.counts[b]!;
+        const attribute = this.attributes[b]!;
+        if (n > 0) {
+          attribute.clearUpdateRanges();
+          attribute.addUpdateRange(0, n * 16);
+          attribute.needsUpdate = true;
+        }
+        for (const mesh of this.meshes[b]!) {
+          mesh.count = n;
+          mesh.visible = n > 0;
+        }
+      }
+    }
+    this.renderer.render(this.scene, this.camera);
+    push(this.cpuTimes, performance.now() - t0);
+    const info = this.renderer.info.render;
+    let triangles = 0;
+    if (buckets) {
+      this.varieties.forEach((v, vi) => {
+        for (let l = 0; l < FOREST_LEVELS; l++) {
+          triangles += buckets.counts[vi * FOREST_LEVELS + l]! * v.triangles[l]!;
+        }
+      });
+    }
+    this.statsValue = {
+      trees: this.count,
+      varieties: this.varieties.length,
+      drawCalls: info.calls,
+      bound: drawCallBound(this.varieties.length),
+      triangles,
+      frameMs: median(this.frameTimes),
+      cpuMs: median(this.cpuTimes),
+      assignMs: median(this.assignTimes),
+      perLevel: buckets ? Array.from(buckets.perLevel) : [0, 0, 0, 0],
+      visible,
+    };
+  }
+}
+
+function push(list: number[], value: number): void {
+  list.push(value);
+  if (list.length > FRAME_SAMPLES) list.shift();
+}

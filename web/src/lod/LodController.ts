@@ -1,0 +1,436 @@
+/**
+ * Levels of detail in the app viewer, as an overlay on the TreeViewer (through its
+ * `overlayHost()`, so the viewer needs no LOD code): LOD0 is the viewer's own tree; LOD1, LOD2 and
+ * the impostor are built here from a `lods` request for the same parameters (a second worker) and
+ * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
+ * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
+ */
+import {
+  BufferAttribute,
+  BufferGeometry,
+  DoubleSide,
+  Group,
+  Mesh,
+  MeshBasicMaterial,
+  MeshStandardMaterial,
+  Sphere,
+  Vector3,
+  type InstancedMesh,
+  type Material,
+  type Object3D,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import type { Params, TreeBuffers, VolumePrimitive } from '../core/types';
+import type { OverlayHost } from '../viewer/TreeViewer';
+import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
+import type { ImpostorAtlas } from './impostor';
+import { SUPERSEDED, type LodClient } from './lodClient';
+import {
+  BARK_COLOR,
+  barkGeometry,
+  barkMesh,
+  cloudGeometry,
+  cloudMaterial,
+  clumpTexture,
+  leafGeometry,
+  leafMesh,
+  leafTexture,
+  treeSphere,
+} from './lodObjects';
+import { IMPOSTOR_LEVEL, screenFraction, selectLod } from './selection';
+import type { LodBuffers } from './types';
+
+/** Auto (by screen size), a forced level 0..3, or (tests) nothing drawn. */
+export type LodMode = 'auto' | 0 | 1 | 2 | 3 | 'hidden';
+
+/** What the LOD panel shows. */
+export interface LodState {
+  mode: LodMode;
+  /** Level on screen (0..3). */
+  level: number;
+  /** Triangles per level (LOD0, LOD1, LOD2, impostor); null until the levels are built. */
+  triangles: number[] | null;
+  /** Screen-size measure `R / (d tan(fov/2))` of the tree now. */
+  screen: number;
+  /** Bounding radius of the tree (m). */
+  radius: number;
+  /** Whether LOD1/LOD2 are built for the tree on screen. */
+  ready: boolean;
+  /** Impostor bake time (ms), null until baked. */
+  bakeMs: number | null;
+}
+
+/** Where the LOD request's parameters come from (the app's current params and volumes). */
+export interface LodSource {
+  params(): Params | null;
+  volumes(): VolumePrimitive[] | undefined;
+}
+
+const LEVEL_COUNT = 4;
+
+/** See the module docs. */
+export class LodController {
+  private mode: LodMode = 'auto';
+  private level = 0;
+  private hash = '';
+  private sphere = new Sphere(new Vector3(0, 4, 0), 5);
+  private lods: LodBuffers | null = null;
+  private levels: (Group | null)[] = [null, null, null, null];
+  private atlas: ImpostorAtlas | null = null;
+  private base: Object3D[] = [];
+  private renderer: WebGLRenderer | null = null;
+  private bakeScheduled = false;
+  private readonly root = new Group();
+  private readonly probe: Mesh;
+  private owned: { dispose(): void }[] = [];
+  private readonly probeParts: { dispose(): void }[];
+  private readonly unsubscribe: () => void;
+  private leafMap: Texture | null = null;
+  private last: LodState | null = null;
+  private disposed = false;
+  private readonly onChange = () => this.update();
+
+  constructor(
+    private readonly host: OverlayHost,
+    private readonly client: LodClient,
+    private readonly source: LodSource,
+    private readonly onState: (state: LodState) => void,
+  ) {
+    this.root.name = 'sylva-lod';
+    host.scene.add(this.root);
+    // A one-triangle mesh that draws nothing: its onBeforeRender hands us the viewer's renderer,
+    // which the impostor bake needs (outside of a render, see `scheduleBake`).
+    const probeGeometry = new BufferGeometry();
+    probeGeometry.setAttribute('position', new BufferAttribute(new Float32Array(9), 3));
+    const probeMaterial = new MeshBasicMaterial({ colorWrite: false, depthWrite: false });
+    this.probe = new Mesh(probeGeometry, probeMaterial);
+    this.probe.frustumCulled = false;
+    this.probe.onBeforeRender = (renderer) => {
+      if (this.renderer !== renderer) {
+        this.renderer = renderer;
+        if (this.level === IMPOSTOR_LEVEL) this.scheduleBake();
+      }
+    };
+    this.probeParts = [probeGeometry, probeMaterial];
+    host.scene.add(this.probe);
+    this.unsubscribe = host.onTree((buffers) => this.onTree(buffers));
+    host.orbit.addEventListener('change', this.onChange);
+  }
+
+  /** Sets Auto or a forced level. */
+  setMode(mode: LodMode): void {
+    this.mode = mode;
+    this.update();
+  }
+
+  /** Moves the camera to `distance` (m) from the orbit target along its current direction. */
+  setCameraDistance(distance: number): void {
+    const { camera, orbit } = this.host;
+    const dir = new Vector3().subVectors(camera.position, orbit.target).normalize();
+    if (dir.lengthSq() === 0) dir.set(0, 0, 1);
+    orbit.maxDistance = Math.max(orbit.maxDistance, distance * 1.01);
+    orbit.minDistance = Math.min(orbit.minDistance, distance * 0.99);
+    camera.far = Math.max(camera.far, distance * 4);
+    camera.updateProjectionMatrix();
+    camera.position.copy(orbit.target).addScaledVector(dir, distance);
+    orbit.update();
+    this.update();
+  }
+
+  /** The current state (also sent to `onState` on every change). */
+  state(): LodState {
+    const t = this.lods?.meta.levels.map((l) => l.triangles);
+    return {
+      mode: this.mode,
+      level: this.level,
+      triangles: t ? [...t, 2] : null,
+      screen: this.screenSize(),
+      radius: this.sphere.radius,
+      ready: this.lods !== null,
+      bakeMs: this.atlas?.bakeMs ?? null,
+    };
+  }
+
+  /** Removes every object and listener. */
+  dispose(): void {
+    this.disposed = true;
+    this.unsubscribe();
+    this.host.orbit.removeEventListener('change', this.onChange);
+    this.clearLevels();
+    this.setBaseVisible(true);
+    this.host.scene.remove(this.root, this.probe);
+    for (const o of this.probeParts) o.dispose();
+  }
+
+  private onTree(buffers: TreeBuffers): void {
+    this.hash = buffers.meta.hash;
+    this.base = findBaseObjects(this.host.scene, buffers, this.root, this.probe);
+    this.sphere = sphereOf(buffers);
+    this.clearLevels();
+    this.update();
+    const params = this.source.params();
+    if (!params) return;
+    const hash = this.hash;
+    this.client.request(params, this.source.volumes()).then(
+      (lods) => {
+        if (this.disposed || lods.meta.hash !== this.hash || hash !== this.hash) return;
+        this.setLods(lods);
+      },
+      (error: unknown) => {
+        if (error instanceof Error && error.message === SUPERSEDED) return;
+        console.warn('levels of detail unavailable:', error);
+      },
+    );
+  }
+
+  private setLods(lods: LodBuffers): void {
+    this.clearLevels();
+    this.lods = lods;
+    this.sphere = treeSphere(lods);
+    if (lods.leafTexture) {
+      const t = leafTexture(lods.leafTexture);
+      this.leafMap = t;
+      this.owned.push(t);
+    }
+    this.update();
+  }
+
+  /** Builds level `l` (1, 2 or the impostor) the first time it is shown. */
+  private ensureLevel(l: number): boolean {
+    const lods = this.lods;
+    if (!lods) return false;
+    if (this.levels[l]) return true;
+    if (l === IMPOSTOR_LEVEL) {
+      if (!this.atlas) {
+        this.scheduleBake();
+        return false;
+      }
+      const material = impostorMaterial(this.atlas, viewerLights());
+      const geometry = impostorGeometry();
+      this.owned.push(material, geometry);
+      const group = new Group();
+      const mesh = new Mesh(geometry, material);
+      mesh.frustumCulled = false;
+      group.add(mesh);
+      this.addLevel(l, group);
+      return true;
+    }
+    const level = lods.levels[l];
+    if (!level) return false;
+    const group = new Group();
+    const barkMaterial =
+      this.baseMaterial('bark') ??
+      this.own(new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 }));
+    const bark = barkMesh(level, barkMaterial);
+    this.owned.push(bark.geometry);
+    bark.castShadow = true;
+    bark.receiveShadow = true;
+    group.add(bark);
+    const leafMaterial = this.baseMaterial('leaves') ?? this.own(this.fallbackLeafMaterial());
+    const leaves = leafMesh(level, leafMaterial);
+    if (leaves) {
+      this.owned.push(leaves.geometry, leaves);
+      leaves.castShadow = true;
+      leaves.receiveShadow = true;
+      group.add(leaves);
+    }
+    const cloud = cloudGeometry(level);
+    if (cloud) {
+      const map = this.own(clumpTexture(lods.leafTexture));
+      const cloudMesh = new Mesh(cloud, this.own(cloudMaterial(map)));
+      this.owned.push(cloud);
+      cloudMesh.castShadow = true;
+      cloudMesh.receiveShadow = true;
+      group.add(cloudMesh);
+    }
+    this.addLevel(l, group);
+    return true;
+  }
+
+  private addLevel(l: number, group: Group): void {
+    group.visible = false;
+    this.levels[l] = group;
+    this.root.add(group);
+  }
+
+  private own<T extends { dispose(): void }>(x: T): T {
+    this.owned.push(x);
+    return x;
+  }
+
+  private fallbackLeafMaterial(): MeshStandardMaterial {
+    return new MeshStandardMaterial({
+      color: '#ffffff',
+      map: this.leafMap,
+      alphaTest: 0.5,
+      side: DoubleSide,
+      roughness: 0.7,
+    });
+  }
+
+  /** The viewer's own bark or leaf material, so the levels look like LOD0 (and follow it). */
+  private baseMaterial(kind: 'bark' | 'leaves'): Material | null {
+    for (const o of this.base) {
+      const m = (o as Mesh).material;
+      const isLeaves = (o as InstancedMesh).isInstancedMesh === true;
+      if (kind === 'leaves' && isLeaves && m && !Array.isArray(m)) return m;
+      if (kind === 'bark' && !isLeaves) {
+        const first = Array.isArray(m) ? m[0] : m;
+        if (first) return first;
+      }
+    }
+    return null;
+  }
+
+  /** Bakes the impostor after the current frame (never inside a render call). */
+  private scheduleBake(): void {
+    if (this.bakeScheduled || this.atlas || !this.lods) return;
+    if (!this.renderer) {
+      this.host.requestRender(); // the probe captures the renderer on the next frame
+      return;
+    }
+    this.bakeScheduled = true;
+    const lods = this.lods;
+    setTimeout(() => {
+      this.bakeScheduled = false;
+      if (this.disposed || this.lods !== lods || !this.renderer) return;
+      this.atlas = this.bake(this.renderer, lods);
+      this.owned.push(this.atlas);
+      this.update();
+    }, 0);
+  }
+
+  private bake(renderer: WebGLRenderer, lods: LodBuffers): ImpostorAtlas {
+    const level = lods.levels[0]!;
+    const bark = barkGeometry(level);
+    const leafMap = this.leafMap;
+    const parts = [{ geometry: bark, color: BARK_COLOR, map: null }];
+    const leaves = leafGeometry(level);
+    const out = bakeImpostor(
+      renderer,
+      leaves
+        ? [
+            ...parts,
+            {
+              geometry: leaves,
+              instances: { matrices: level.leafMatrices, colors: level.leafColors },
+              color: '#ffffff',
+              map: leafMap,
+              doubleSided: true,
+            },
+          ]
+        : parts,
+      this.sphere,
+      { frames: 8, cellPx: 160 },
+    );
+    bark.dispose();
+    leaves?.dispose();
+    return out;
+  }
+
+  private screenSize(): number {
+    const { camera } = this.host;
+    const d = camera.position.distanceTo(this.sphere.center);
+    return screenFraction(this.sphere.radius, d, camera.fov);
+  }
+
+  /** Picks the level and shows it. */
+  private update(): void {
+    if (this.disposed) return;
+    const mode = this.mode;
+    const hidden = mode === 'hidden';
+    const wanted =
+      mode === 'auto' || mode === 'hidden' ? selectLod(this.level, this.screenSize()) : mode;
+    // Fall back to the nearest finer level that is ready (LOD0 always is).
+    let shown = wanted;
+    while (shown > 0 && !this.ensureLevel(shown)) shown--;
+    this.level = shown;
+    this.setBaseVisible(shown === 0 && !hidden);
+    for (let l = 1; l < LEVEL_COUNT; l++) {
+      const group = this.levels[l];
+      if (group) group.visible = l === shown && !hidden;
+    }
+    this.host.requestRender();
+    const state = this.state();
+    const last = this.last;
+    if (
+      !last ||
+      last.level !== state.level ||
+      last.mode !== state.mode ||
+      last.ready !== state.ready ||
+      last.bakeMs !== state.bakeMs ||
+      Math.abs(last.screen - state.screen) > 0.005
+    ) {
+      this.last = state;
+      this.onState(state);
+    }
+  }
+
+  private setBaseVisible(visible: boolean): void {
+    for (const o of this.base) o.visible = visible;
+  }
+
+  private clearLevels(): void {
+    for (const g of this.levels) if (g) this.root.remove(g);
+    this.levels = [null, null, null, null];
+    for (const o of this.owned) o.dispose();
+    this.owned = [];
+    this.atlas = null;
+    this.lods = null;
+    this.leafMap = null;
+  }
+}
+
+/** The tree's bounding sphere from its bark bounds and its leaves (position ± length). */
+export function sphereOf(buffers: TreeBuffers): Sphere {
+  const { min, max } = buffers.meta.bounds;
+  const lo = [...min];
+  const hi = [...max];
+  const m = buffers.foliage?.matrices ?? new Float32Array(0);
+  for (let o = 0; o + 16 <= m.length; o += 16) {
+    const len = Math.hypot(m[o + 4]!, m[o + 5]!, m[o + 6]!);
+    for (let k = 0; k < 3; k++) {
+      lo[k] = Math.min(lo[k]!, m[o + 12 + k]! - len);
+      hi[k] = Math.max(hi[k]!, m[o + 12 + k]! + len);
+    }
+  }
+  const centre = new Vector3((lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2);
+  return new Sphere(
+    centre,
+    Math.max(Math.hypot(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!) / 2, 0.01),
+  );
+}
+
+/**
+ * The viewer's LOD0 objects: the mesh wrapping the tree's position array and the instanced
+ * leaves wrapping its leaf matrices (the viewer hands the transferred arrays to three.js without
+ * copying); failing that, meshes of the same vertex / instance counts.
+ */
+export function findBaseObjects(
+  scene: Object3D,
+  buffers: TreeBuffers,
+  ...skip: Object3D[]
+): Object3D[] {
+  const vertices = buffers.positions.length / 3;
+  const leaves = buffers.foliage ? buffers.foliage.colors.length / 3 : 0;
+  const bark: [Object3D[], Object3D[]] = [[], []];
+  const leaf: [Object3D[], Object3D[]] = [[], []];
+  const visit = (o: Object3D) => {
+    if (skip.includes(o)) return;
+    const mesh = o as Partial<InstancedMesh>;
+    if (mesh.isMesh && mesh.geometry) {
+      const position = mesh.geometry.getAttribute('position');
+      if (mesh.isInstancedMesh) {
+        if (mesh.instanceMatrix?.array === buffers.foliage?.matrices) leaf[0].push(o);
+        else if (leaves > 0 && mesh.count === leaves) leaf[1].push(o);
+      } else if (position) {
+        if ((position as BufferAttribute).array === buffers.positions) bark[0].push(o);
+        else if (position.count === vertices) bark[1].push(o);
+      }
+    }
+    for (const child of o.children) visit(child);
+  };
+  visit(scene);
+  return [...(bark[0].length > 0 ? bark[0] : bark[1]), ...(leaf[0].length > 0 ? leaf[0] : leaf[1])];
+}

@@ -1,0 +1,67 @@
+/** Worker side of the LOD request: runs `generate_lods` and packs every level for transfer. */
+import type { WasmApi } from '../core/types';
+import { volumeToCore } from '../core/volumes';
+import type {
+  LodBuffers,
+  LodLevelBuffers,
+  LodMeta,
+  LodsRequest,
+  LodsResponse,
+  LodWasmApi,
+} from './types';
+
+/** Parses and checks `GeneratedLods.meta_json()`. */
+export function parseLodMeta(text: string): LodMeta {
+  const meta = JSON.parse(text) as LodMeta;
+  if (!Array.isArray(meta.levels) || meta.levels.length !== 3 || typeof meta.hash !== 'string') {
+    throw new Error('generate_lods returned malformed metadata');
+  }
+  return meta;
+}
+
+/**
+ * Generates the tree of `request` with its levels of detail; returns the response and the
+ * buffers to transfer. Throws what `generate_lods` throws (a JSON `SylvaError` or a trap).
+ */
+export function lodsResponse(
+  wasm: WasmApi & LodWasmApi,
+  request: LodsRequest,
+): [LodsResponse, Transferable[]] {
+  if (typeof wasm.generate_lods !== 'function') {
+    throw new Error('this generator build has no generate_lods');
+  }
+  const input = request.volumes?.length
+    ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
+    : request.params;
+  const lods = wasm.generate_lods(JSON.stringify(input));
+  try {
+    const meta = parseLodMeta(lods.meta_json());
+    const levels: LodLevelBuffers[] = [0, 1, 2].map((i) => ({
+      positions: lods.positions(i),
+      normals: lods.normals(i),
+      uvs: lods.uvs(i),
+      indices: lods.indices(i),
+      leafPositions: lods.leaf_positions(i),
+      leafNormals: lods.leaf_normals(i),
+      leafUvs: lods.leaf_uvs(i),
+      leafIndices: lods.leaf_indices(i),
+      leafMatrices: lods.leaf_matrices(i),
+      leafColors: lods.leaf_colors(i),
+      cloud: lods.cloud(i),
+    }));
+    const rgba = lods.leaf_texture();
+    const size = meta.leaf_texture;
+    const leafTexture =
+      size && rgba.length === size[0] * size[1] * 4
+        ? { width: size[0], height: size[1], rgba }
+        : null;
+    const buffers: LodBuffers = { meta, levels, leafTexture };
+    const transfer: Transferable[] = levels.flatMap((l) =>
+      Object.values(l).map((a: ArrayBufferView) => a.buffer as ArrayBuffer),
+    );
+    if (leafTexture) transfer.push(leafTexture.rgba.buffer as ArrayBuffer);
+    return [{ type: 'lods', id: request.id, lods: buffers }, transfer];
+  } finally {
+    lods.free();
+  }
+}

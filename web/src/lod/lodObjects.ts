@@ -1,0 +1,336 @@
+/**
+ * three.js objects for one level of detail: bark tubes, instanced leaves, and the billboard
+ * cloud (LOD2) as textured quads. The cloud texture is a "leaf clump" painted in the browser from
+ * the tree's own leaf texture (a few dozen leaves scattered in a disc), tinted per quad with the
+ * cluster's mean leaf colour.
+ */
+import {
+  BufferAttribute,
+  BufferGeometry,
+  CanvasTexture,
+  Color,
+  DataTexture,
+  DoubleSide,
+  InstancedBufferAttribute,
+  InstancedMesh,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  Mesh,
+  MeshStandardMaterial,
+  RGBAFormat,
+  SRGBColorSpace,
+  Sphere,
+  UnsignedByteType,
+  Vector3,
+  type Material,
+  type Texture,
+} from 'three';
+import type { LeafTextureBuffers } from '../core/types';
+import { mulberry32 } from '../forest/layout';
+import { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from './types';
+
+/** Bark colour of the viewer (TreeViewer's flat bark). */
+export const BARK_COLOR = '#5b3d26';
+
+/** The bark tubes of a level. */
+export function barkGeometry(level: LodLevelBuffers): BufferGeometry {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(level.positions, 3));
+  g.setAttribute('normal', new BufferAttribute(level.normals, 3));
+  g.setAttribute('uv', new BufferAttribute(level.uvs, 2));
+  g.setIndex(new BufferAttribute(level.indices, 1));
+  g.computeBoundingSphere();
+  return g;
+}
+
+/** The leaf mesh (leaf units) of a level, or null when it has no leaves. */
+export function leafGeometry(level: LodLevelBuffers): BufferGeometry | null {
+  if (level.leafIndices.length === 0 || level.leafColors.length === 0) return null;
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(level.leafPositions, 3));
+  g.setAttribute('normal', new BufferAttribute(level.leafNormals, 3));
+  g.setAttribute('uv', new BufferAttribute(level.leafUvs, 2));
+  g.setIndex(new BufferAttribute(level.leafIndices, 1));
+  return g;
+}
+
+/** The leaves of a level as one InstancedMesh (matrices and colours wrap the transferred arrays). */
+export function leafMesh(level: LodLevelBuffers, material: Material): InstancedMesh | null {
+  const geometry = leafGeometry(level);
+  if (!geometry) return null;
+  const count = level.leafColors.length / 3;
+  const mesh = new InstancedMesh(geometry, material, count);
+  mesh.instanceMatrix = new InstancedBufferAttribute(level.leafMatrices, 16);
+  mesh.instanceColor = new InstancedBufferAttribute(level.leafColors, 3);
+  mesh.frustumCulled = false;
+  return mesh;
+}
+
+/**
+ * All leaf instances of a level merged into one geometry (positions and normals transformed,
+ * the tint as a vertex colour): what the forest instances per tree, since three.js cannot
+ * instance an instanced mesh.
+ */
+export function mergedLeafGeometry(level: LodLevelBuffers): BufferGeometry | null {
+  const count = level.leafColors.length / 3;
+  const vp = level.leafPositions;
+  const vn = level.leafNormals;
+  const nv = vp.length / 3;
+  if (count === 0 || level.leafIndices.length === 0) return null;
+  const positions = new Float32Array(count * nv * 3);
+  const normals = new Float32Array(count * nv * 3);
+  const uvs = new Float32Array(count * nv * 2);
+  const colors = new Float32Array(count * nv * 3);
+  const indices = new Uint32Array(count * level.leafIndices.length);
+  const m = level.leafMatrices;
+  for (let k = 0; k < count; k++) {
+    const o = k * 16;
+    const [a0, a1, a2, b0, b1, b2, c0, c1, c2] = [
+      m[o]!,
+      m[o + 1]!,
+      m[o + 2]!,
+      m[o + 4]!,
+      m[o + 5]!,
+      m[o + 6]!,
+      m[o + 8]!,
+      m[o + 9]!,
+      m[o + 10]!,
+    ];
+    const [tx, ty, tz] = [m[o + 12]!, m[o + 13]!, m[o + 14]!];
+    // Normal matrix: the cofactor matrix (inverse transpose up to scale), rows = a×b etc.
+    const na = [b1 * c2 - b2 * c1, b2 * c0 - b0 * c2, b0 * c1 - b1 * c0];
+    const nb = [c1 * a2 - c2 * a1, c2 * a0 - c0 * a2, c0 * a1 - c1 * a0];
+    const nc = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0];
+    const base = k * nv;
+    for (let i = 0; i < nv; i++) {
+      const x = vp[i * 3]!;
+      const y = vp[i * 3 + 1]!;
+      const z = vp[i * 3 + 2]!;
+      const p = (base + i) * 3;
+      positions[p] = a0 * x + b0 * y + c0 * z + tx;
+      positions[p + 1] = a1 * x + b1 * y + c1 * z + ty;
+      positions[p + 2] = a2 * x + b2 * y + c2 * z + tz;
+      const nx = vn[i * 3]!;
+      const ny = vn[i * 3 + 1]!;
+      const nz = vn[i * 3 + 2]!;
+      const wx = na[0]! * nx + nb[0]! * ny + nc[0]! * nz;
+      const wy = na[1]! * nx + nb[1]! * ny + nc[1]! * nz;
+      const wz = na[2]! * nx + nb[2]! * ny + nc[2]! * nz;
+      const len = Math.hypot(wx, wy, wz) || 1;
+      normals[p] = wx / len;
+      normals[p + 1] = wy / len;
+      normals[p + 2] = wz / len;
+      colors[p] = level.leafColors[k * 3]!;
+      colors[p + 1] = level.leafColors[k * 3 + 1]!;
+      colors[p + 2] = level.leafColors[k * 3 + 2]!;
+      uvs[(base + i) * 2] = level.leafUvs[i * 2]!;
+      uvs[(base + i) * 2 + 1] = level.leafUvs[i * 2 + 1]!;
+    }
+    const li = level.leafIndices;
+    for (let t = 0; t < li.length; t++) indices[k * li.length + t] = li[t]! + base;
+  }
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(positions, 3));
+  g.setAttribute('normal', new BufferAttribute(normals, 3));
+  g.setAttribute('uv', new BufferAttribute(uvs, 2));
+  g.setAttribute('color', new BufferAttribute(colors, 3));
+  g.setIndex(new BufferAttribute(indices, 1));
+  g.computeBoundingSphere();
+  return g;
+}
+
+/**
+ * The billboard cloud as quads: 4 vertices each (corners `c ± u ± v`), the cluster tint as a
+ * vertex colour, and normals pointing away from the crown centre (a rounded crown under light
+ * instead of flat cards).
+ */
+export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
+  const q = level.cloud;
+  const n = q.length / QUAD_FLOATS;
+  if (n === 0) return null;
+  const positions = new Float32Array(n * 12);
+  const normals = new Float32Array(n * 12);
+  const uvs = new Float32Array(n * 8);
+  const colors = new Float32Array(n * 12);
+  const indices = new Uint32Array(n * 6);
+  let cx = 0;
+  let cy = 0;
+  let cz = 0;
+  for (let k = 0; k < n; k++) {
+    cx += q[k * QUAD_FLOATS]! / n;
+    cy += q[k * QUAD_FLOATS + 1]! / n;
+    cz += q[k * QUAD_FLOATS + 2]! / n;
+  }
+  const corners = [
+    [-1, -1],
+    [1, -1],
+    [1, 1],
+    [-1, 1],
+  ] as const;
+  for (let k = 0; k < n; k++) {
+    const o = k * QUAD_FLOATS;
+    const c = [q[o]!, q[o + 1]!, q[o + 2]!];
+    const cell = densityCell(q[o + 12] ?? 1);
+    let nx = c[0]! - cx;
+    let ny = c[1]! - cy + 0.3 * Math.hypot(nx, c[2]! - cz);
+    let nz = c[2]! - cz;
+    const len = Math.hypot(nx, ny, nz);
+    if (len < 1e-6) [nx, ny, nz] = [0, 1, 0];
+    else [nx, ny, nz] = [nx / len, ny / len, nz / len];
+    corners.forEach(([su, sv], j) => {
+      const p = (k * 4 + j) * 3;
+      for (let a = 0; a < 3; a++) {
+        positions[p + a] = c[a]! + su * q[o + 3 + a]! + sv * q[o + 6 + a]!;
+        colors[p + a] = q[o + 9 + a]!;
+      }
+      normals[p] = nx;
+      normals[p + 1] = ny;
+      normals[p + 2] = nz;
+      // The clump texture is a 2×2 atlas of densities 1/4 … 1: the quad shows the nearest.
+      uvs[(k * 4 + j) * 2] = (cell % 2) * 0.5 + (su + 1) / 4;
+      uvs[(k * 4 + j) * 2 + 1] = Math.floor(cell / 2) * 0.5 + (sv + 1) / 4;
+    });
+    indices.set([k * 4, k * 4 + 1, k * 4 + 2, k * 4, k * 4 + 2, k * 4 + 3], k * 6);
+  }
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(positions, 3));
+  g.setAttribute('normal', new BufferAttribute(normals, 3));
+  g.setAttribute('uv', new BufferAttribute(uvs, 2));
+  g.setAttribute('color', new BufferAttribute(colors, 3));
+  g.setIndex(new BufferAttribute(indices, 1));
+  g.computeBoundingSphere();
+  return g;
+}
+
+/** Cell of the clump atlas (0..3: density 1/4, 1/2, 3/4, 1) for a cloud quad's leaf density. */
+export function densityCell(density: number): number {
+  return Math.min(3, Math.max(0, Math.round(density * 4) - 1));
+}
+
+/** The leaf texture as a three.js texture (sRGB, mipmapped). */
+export function leafTexture(buffers: LeafTextureBuffers): DataTexture {
+  const t = new DataTexture(
+    buffers.rgba,
+    buffers.width,
+    buffers.height,
+    RGBAFormat,
+    UnsignedByteType,
+  );
+  t.colorSpace = SRGBColorSpace;
+  t.magFilter = LinearFilter;
+  t.minFilter = LinearMipmapLinearFilter;
+  t.generateMipmaps = true;
+  t.needsUpdate = true;
+  return t;
+}
+
+/**
+ * A leaf-clump texture for the billboard cloud: a 2×2 atlas whose cells hold 1/4, 1/2, 3/4 and
+ * all of `MAX_CLUMP_LEAVES` copies of the leaf texture (or green ellipses for a tree without
+ * one) scattered over a disc, denser toward the centre, seeded (see `densityCell`).
+ */
+export function clumpTexture(leaf: LeafTextureBuffers | null, seed = 7, size = 512): Texture {
+  const canvas = document.createElement('canvas');
+  canvas.width = size;
+  canvas.height = size;
+  const ctx = canvas.getContext('2d');
+  if (!ctx) throw new Error('no 2D canvas for the billboard-cloud texture');
+  let sprite: HTMLCanvasElement | null = null;
+  if (leaf) {
+    sprite = document.createElement('canvas');
+    sprite.width = leaf.width;
+    sprite.height = leaf.height;
+    const sctx = sprite.getContext('2d');
+    if (sctx) {
+      const image = sctx.createImageData(leaf.width, leaf.height);
+      image.data.set(leaf.rgba);
+      sctx.putImageData(image, 0, 0);
+    } else {
+      sprite = null;
+    }
+  }
+  const half = size / 2;
+  for (let cell = 0; cell < 4; cell++) {
+    const rand = mulberry32(seed + cell);
+    const ox = (cell % 2) * half;
+    // Canvas rows run top-down; texture v bottom-up (flipY): cell row 0 is the bottom half.
+    const oy = (1 - Math.floor(cell / 2)) * half;
+    const count = Math.round((MAX_CLUMP_LEAVES * (cell + 1)) / 4);
+    for (let i = 0; i < count; i++) drawLeaf(ctx, sprite, rand, ox, oy, half);
+  }
+  const texture = new CanvasTexture(canvas);
+  texture.colorSpace = SRGBColorSpace;
+  texture.minFilter = LinearMipmapLinearFilter;
+  texture.generateMipmaps = true;
+  return texture;
+}
+
+/** Leaves in the densest clump cell. */
+const MAX_CLUMP_LEAVES = 90;
+
+function drawLeaf(
+  ctx: CanvasRenderingContext2D,
+  sprite: HTMLCanvasElement | null,
+  rand: () => number,
+  ox: number,
+  oy: number,
+  size: number,
+): void {
+  {
+    const r = Math.sqrt(rand()) * size * 0.4;
+    const a = rand() * Math.PI * 2;
+    const x = ox + size / 2 + Math.cos(a) * r;
+    const y = oy + size / 2 + Math.sin(a) * r;
+    const s = size * (0.12 + 0.06 * rand());
+    ctx.save();
+    ctx.translate(x, y);
+    ctx.rotate(rand() * Math.PI * 2);
+    if (sprite) {
+      const aspect = sprite.width / sprite.height;
+      ctx.drawImage(sprite, (-s * aspect) / 2, -s / 2, s * aspect, s);
+    } else {
+      const g = 110 + Math.floor(rand() * 60);
+      ctx.fillStyle = `rgb(${Math.floor(g * 0.45)}, ${g}, ${Math.floor(g * 0.3)})`;
+      ctx.beginPath();
+      ctx.ellipse(0, 0, s * 0.22, s * 0.5, 0, 0, Math.PI * 2);
+      ctx.fill();
+    }
+    ctx.restore();
+  }
+}
+
+/** Material of the billboard cloud (clump texture × quad tint, alpha-tested, two-sided). */
+export function cloudMaterial(map: Texture): MeshStandardMaterial {
+  return new MeshStandardMaterial({
+    map,
+    vertexColors: true,
+    alphaTest: 0.5,
+    side: DoubleSide,
+    roughness: 0.8,
+  });
+}
+
+/** Bounding sphere of a whole tree: bark bounds plus every leaf (position ± its length). */
+export function treeSphere(lods: LodBuffers): Sphere {
+  const { min, max } = lods.meta.bounds;
+  const lo = new Vector3(...min);
+  const hi = new Vector3(...max);
+  const m = lods.levels[0]?.leafMatrices ?? new Float32Array(0);
+  for (let o = 0; o + 16 <= m.length; o += 16) {
+    const len = Math.hypot(m[o + 4]!, m[o + 5]!, m[o + 6]!);
+    lo.min(new Vector3(m[o + 12]! - len, m[o + 13]! - len, m[o + 14]! - len));
+    hi.max(new Vector3(m[o + 12]! + len, m[o + 13]! + len, m[o + 14]! + len));
+  }
+  const centre = lo.clone().add(hi).multiplyScalar(0.5);
+  return new Sphere(centre, hi.distanceTo(lo) / 2);
+}
+
+/** A colour from a CSS string (linear working space). */
+export function color(css: string): Color {
+  return new Color(css);
+}
+
+/** Bark mesh of a level with `material`. */
+export function barkMesh(level: LodLevelBuffers, material: Material): Mesh {
+  return new Mesh(barkGeometry(level), material);
+}

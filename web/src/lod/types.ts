@@ -1,0 +1,91 @@
+/** Levels of detail as they cross the worker boundary (`generate_lods` in the wasm binding). */
+import type { Bounds, LeafTextureBuffers, MeshGroup, Params, VolumePrimitive } from '../core/types';
+
+/** Per-level counts from `GeneratedLods.meta_json()`. */
+export interface LodLevelMeta {
+  /** Triangles drawn: bark + leaf mesh × leaves + 2 per cloud quad. */
+  triangles: number;
+  vertices: number;
+  bark_triangles: number;
+  leaves: number;
+  leaf_triangles: number;
+  quads: number;
+  stems: number;
+  groups: MeshGroup[];
+}
+
+/** `GeneratedLods.meta_json()`. */
+export interface LodMeta {
+  /** Hash of LOD0 (equals the `generate` hash of the same params). */
+  hash: string;
+  bounds: Bounds;
+  levels: LodLevelMeta[];
+  leaf_hash: string;
+  leaf_texture: [number, number] | null;
+}
+
+/** One level's buffers (bark tubes, instanced leaves, billboard-cloud quads). */
+export interface LodLevelBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  uvs: Float32Array;
+  indices: Uint32Array;
+  leafPositions: Float32Array;
+  leafNormals: Float32Array;
+  leafUvs: Float32Array;
+  leafIndices: Uint32Array;
+  /** Column-major 4x4 per leaf. */
+  leafMatrices: Float32Array;
+  /** RGB per leaf. */
+  leafColors: Float32Array;
+  /** 13 floats per quad: centre xyz, u xyz, v xyz (half-axes), rgb, leaf density 0.05..1. */
+  cloud: Float32Array;
+}
+
+/** A tree and its reduced levels, LOD0 first. */
+export interface LodBuffers {
+  meta: LodMeta;
+  levels: LodLevelBuffers[];
+  leafTexture: LeafTextureBuffers | null;
+}
+
+/** Floats per billboard-cloud quad. */
+export const QUAD_FLOATS = 13;
+
+/** Main thread → worker: a tree with its levels of detail. */
+export interface LodsRequest {
+  type: 'lods';
+  id: number;
+  params: Params;
+  volumes?: VolumePrimitive[];
+}
+
+/** Worker → main thread: the levels (all arrays transferred). */
+export interface LodsResponse {
+  type: 'lods';
+  id: number;
+  lods: LodBuffers;
+}
+
+/** The `GeneratedLods` object of the wasm binding. */
+export interface WasmLods {
+  positions(level: number): Float32Array;
+  normals(level: number): Float32Array;
+  uvs(level: number): Float32Array;
+  indices(level: number): Uint32Array;
+  leaf_positions(level: number): Float32Array;
+  leaf_normals(level: number): Float32Array;
+  leaf_uvs(level: number): Float32Array;
+  leaf_indices(level: number): Uint32Array;
+  leaf_matrices(level: number): Float32Array;
+  leaf_colors(level: number): Float32Array;
+  cloud(level: number): Float32Array;
+  leaf_texture(): Uint8Array;
+  meta_json(): string;
+  free(): void;
+}
+
+/** The wasm export this feature needs (optional: older builds and test fakes lack it). */
+export interface LodWasmApi {
+  generate_lods?(paramsJson: string): WasmLods;
+}

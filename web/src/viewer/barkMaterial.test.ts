@@ -1,0 +1,54 @@
+import { NoColorSpace, RepeatWrapping, SRGBColorSpace, type DataTexture } from 'three';
+import { describe, expect, it } from 'vitest';
+import { loadWasm } from '../testing/realWasm';
+import { barkOf } from '../worker/handler';
+import { BARK_FLAT_COLOR, BARK_REPEAT, BarkTextures, createBarkMaterial } from './barkMaterial';
+
+describe('bark material', () => {
+  it('uses the core-baked maps: sRGB colour, linear normal map, repeating, mipmapped', () => {
+    const bark = barkOf(loadWasm());
+    if (!bark) throw new Error('this wasm build has no bark_color / bark_normal');
+    expect(bark.size).toBe(256);
+    const material = createBarkMaterial();
+    const textures = new BarkTextures(material);
+    expect(textures.size).toBeNull();
+    textures.set(bark);
+    expect(textures.size).toEqual({ width: 256, height: 256 });
+    const map = material.map as DataTexture;
+    const normal = material.normalMap as DataTexture;
+    expect(map.image.data).toBe(bark.color); // wrapped, not copied
+    expect(normal.image.data).toBe(bark.normal);
+    expect(map.colorSpace).toBe(SRGBColorSpace);
+    expect(normal.colorSpace).toBe(NoColorSpace);
+    for (const t of [map, normal]) {
+      expect([t.wrapS, t.wrapT]).toEqual([RepeatWrapping, RepeatWrapping]);
+      // Integer repeat around the stem (the seam at u = 1 matches u = 0), square texels along.
+      expect(Number.isInteger(t.repeat.x)).toBe(true);
+      expect(t.repeat.x).toBe(BARK_REPEAT);
+      expect(t.repeat.y).toBe(t.repeat.x);
+      expect(t.generateMipmaps).toBe(true);
+      expect(t.flipY).toBe(false);
+    }
+    expect(material.color.getHexString()).toBe('ffffff');
+    // The maps have content: dark fissures and lighter plates, normals tilted both ways.
+    let lo = 255;
+    let hi = 0;
+    for (let i = 0; i < bark.color.length; i += 4) {
+      lo = Math.min(lo, bark.color[i] ?? 0);
+      hi = Math.max(hi, bark.color[i] ?? 0);
+    }
+    expect(hi - lo).toBeGreaterThan(40);
+    textures.dispose();
+    expect(material.map).toBeNull();
+    expect(material.normalMap).toBeNull();
+    expect(`#${material.color.getHexString()}`).toBe(BARK_FLAT_COLOR);
+  });
+
+  it('ignores buffers of the wrong size', () => {
+    const material = createBarkMaterial();
+    const textures = new BarkTextures(material);
+    textures.set({ size: 16, color: new Uint8Array(10), normal: new Uint8Array(16 * 16 * 4) });
+    expect(material.map).toBeNull();
+    expect(textures.size).toBeNull();
+  });
+});

@@ -1,0 +1,92 @@
+/**
+ * The bark material: a `MeshStandardMaterial` with the core's procedural bark maps (baked in the
+ * worker by `bark_color` / `bark_normal`, no downloaded images) as colour map and tangent-space
+ * normal map.
+ *
+ * Bark UVs (see `TreeMesh`): `u` runs around the stem 0..1, `v` along it at one unit per
+ * circumference, so an equal repeat in u and v keeps the texels square on every stem. The repeat
+ * in u must be an integer (the seam at u = 1 must match u = 0).
+ */
+import {
+  DataTexture,
+  LinearFilter,
+  LinearMipmapLinearFilter,
+  MeshStandardMaterial,
+  NoColorSpace,
+  RGBAFormat,
+  RepeatWrapping,
+  SRGBColorSpace,
+  UnsignedByteType,
+  Vector2,
+} from 'three';
+import type { BarkTextureBuffers } from '../core/types';
+
+/** Tiles around a stem (and per circumference along it): about 20 fissures around the trunk. */
+export const BARK_REPEAT = 3;
+/** Flat colour until the textures arrive (and the multiplier is white after). */
+export const BARK_FLAT_COLOR = '#5b3d26';
+/** Depth of the fissures in the lighting. */
+export const BARK_NORMAL_SCALE = 1.2;
+
+/** A new bark material (flat colour until `BarkTextures.set` gives it maps). */
+export function createBarkMaterial(): MeshStandardMaterial {
+  return new MeshStandardMaterial({ color: BARK_FLAT_COLOR, roughness: 0.92 });
+}
+
+/** A repeating, mipmapped texture of RGBA8 texels (row 0 = v 0). */
+export function bakedTexture(rgba: Uint8Array, size: number, srgb: boolean): DataTexture {
+  const texture = new DataTexture(rgba, size, size, RGBAFormat, UnsignedByteType);
+  texture.colorSpace = srgb ? SRGBColorSpace : NoColorSpace;
+  texture.wrapS = RepeatWrapping;
+  texture.wrapT = RepeatWrapping;
+  texture.repeat.set(BARK_REPEAT, BARK_REPEAT);
+  texture.magFilter = LinearFilter;
+  texture.minFilter = LinearMipmapLinearFilter;
+  texture.generateMipmaps = true;
+  texture.anisotropy = 4;
+  texture.flipY = false;
+  texture.needsUpdate = true;
+  return texture;
+}
+
+/** Owns the bark maps of one material. */
+export class BarkTextures {
+  private color: DataTexture | null = null;
+  private normal: DataTexture | null = null;
+
+  constructor(private readonly material: MeshStandardMaterial) {}
+
+  /** Size of the colour map, or null before the textures arrived. */
+  get size(): { width: number; height: number } | null {
+    const image = this.color?.image as { width: number; height: number } | undefined;
+    return image ? { width: image.width, height: image.height } : null;
+  }
+
+  /** Replaces the maps with the worker's baked textures. */
+  set(bark: BarkTextureBuffers): void {
+    const texels = bark.size * bark.size * 4;
+    if (bark.size < 1 || bark.color.length !== texels || bark.normal.length !== texels) return;
+    this.dispose();
+    this.color = bakedTexture(bark.color, bark.size, true);
+    this.normal = bakedTexture(bark.normal, bark.size, false);
+    this.material.map = this.color;
+    this.material.normalMap = this.normal;
+    this.material.normalScale = new Vector2(BARK_NORMAL_SCALE, BARK_NORMAL_SCALE);
+    this.material.color.set('#ffffff');
+    this.material.needsUpdate = true;
+  }
+
+  /** Releases the textures (the material keeps its flat colour). */
+  dispose(): void {
+    this.color?.dispose();
+    this.normal?.dispose();
+    if (this.color) {
+      this.material.map = null;
+      this.material.normalMap = null;
+      this.material.color.set(BARK_FLAT_COLOR);
+      this.material.needsUpdate = true;
+    }
+    this.color = null;
+    this.normal = null;
+  }
+}
