@@ -1,0 +1,167 @@
+//! One stem of the skeleton: its centre polyline, radius profile (Weber & Penn taper and trunk
+//! flare, or per-point radii from the pipe model) and the smooth centre curve the mesher follows.
+
+use crate::math::{pow, unit_or};
+use glam::Vec3;
+
+/// A stem's centre polyline (inline storage for up to four points).
+pub type Points = smallvec::SmallVec<[Vec3; 4]>;
+
+/// One stem: the trunk, a branch or a twig.
+#[derive(Clone, Debug)]
+pub struct Stem {
+    /// 0 = trunk, 1 = branches on the trunk, ...
+    pub level: u8,
+    /// Index of the parent stem in [`Skeleton::stems`].
+    pub parent: Option<u32>,
+    /// Distance along the parent where this stem starts (m).
+    pub offset: f32,
+    /// Centre polyline from base to tip: `curve_res + 1` points, equally spaced along the stem.
+    /// Stored inline up to four points: most stems are short twigs, and this saves an
+    /// allocation for each of them.
+    pub points: Points,
+    /// A unit vector perpendicular to the first segment: the reference for ring orientation.
+    pub base_normal: Vec3,
+    /// Length of this record (m).
+    pub length: f32,
+    /// Radius at the base of this record before flare (m).
+    pub radius: f32,
+    /// Weber & Penn `nTaper` of this stem's level.
+    pub taper: f32,
+    /// Trunk flare (0 for branches).
+    pub flare: f32,
+    /// Down angle from the parent (degrees; 0 for the trunk).
+    pub down_angle: f32,
+    /// Length of the whole Weber & Penn stem this record belongs to (differs for split clones).
+    pub chain_length: f32,
+    /// Base radius of the whole stem.
+    pub chain_radius: f32,
+    /// Fraction of the whole stem where this record starts (0, or the split point of a clone).
+    pub chain_start: f32,
+    /// True for the trunk record, which carries the Lobes.
+    pub lobed: bool,
+    /// Radius at each of [`Stem::points`] when the profile is given point by point (grown
+    /// trees, pipe model) instead of by Weber & Penn's taper.
+    pub radii: Option<Vec<f32>>,
+}
+
+impl Stem {
+    /// Radius at fraction `z` (0 = base, 1 = tip) of the stem: W&P taper, plus flare on the trunk.
+    pub fn radius_at(&self, z: f32) -> f32 {
+        if let Some(r) = &self.radii {
+            let f = z.clamp(0.0, 1.0) * (r.len() - 1) as f32;
+            let i = (f as usize).min(r.len() - 2);
+            return r[i] + (r[i + 1] - r[i]) * (f - i as f32);
+        }
+        let zc = self.chain_start + z * (1.0 - self.chain_start);
+        taper_radius(self.chain_radius, self.taper, self.chain_length, zc) * flare_factor(self.flare, zc)
+    }
+
+    /// Base point of the stem.
+    pub fn base(&self) -> Vec3 {
+        self.points[0]
+    }
+
+    /// Tip point of the stem.
+    pub fn tip(&self) -> Vec3 {
+        *self.points.last().expect("a stem has points")
+    }
+
+    /// Point and unit direction at distance `d` along the stem (clamped to the stem).
+    pub fn point_at(&self, d: f32) -> (Vec3, Vec3) {
+        self.sample((d / self.length).clamp(0.0, 1.0))
+    }
+
+    /// Point and unit tangent at fraction `t` (0 = base, 1 = tip) of the smooth centre curve: a
+    /// Catmull-Rom spline through [`Stem::points`] (ends extrapolated). The mesh and the child
+    /// attachment points both use this, so children start exactly on their parent's axis.
+    pub fn sample(&self, t: f32) -> (Vec3, Vec3) {
+        let (i, u) = self.locate(t);
+        self.segment(i).eval(u)
+    }
+
+    /// Segment index and local parameter of fraction `t`.
+    pub fn locate(&self, t: f32) -> (usize, f32) {
+        let segs = self.points.len() - 1;
+        let f = t.clamp(0.0, 1.0) * segs as f32;
+        let i = (f as usize).min(segs - 1);
+        (i, f - i as f32)
+    }
+
+    /// The cubic of segment `i` of the centre curve (for evaluating many points on one segment).
+    pub fn segment(&self, i: usize) -> Segment {
+        let pts = &self.points;
+        let segs = pts.len() - 1;
+        let p1 = pts[i];
+        let p2 = pts[i + 1];
+        let p0 = if i > 0 { pts[i - 1] } else { 2.0 * p1 - p2 };
+        let p3 = if i + 2 <= segs { pts[i + 2] } else { 2.0 * p2 - p1 };
+        Segment { p1, p2, d: p2 - p0, a: 2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3, b: -p0 + 3.0 * p1 - 3.0 * p2 + p3 }
+    }
+
+    /// `d radius / d arc length` at fraction `t`: exact for the linear tapers (the common case),
+    /// a central difference where flare or rounded tips make the profile curved.
+    pub fn radius_slope(&self, t: f32) -> f32 {
+        if self.flare == 0.0 && self.taper <= 1.0 && self.radii.is_none() {
+            return -self.chain_radius * self.taper / self.chain_length;
+        }
+        let eps = 1e-3f32;
+        let (ta, tb) = ((t - eps).max(0.0), (t + eps).min(1.0));
+        (self.radius_at(tb) - self.radius_at(ta)) / ((tb - ta) * self.length)
+    }
+}
+
+/// One segment of a stem's Catmull-Rom centre curve, in polynomial form.
+#[derive(Clone, Copy, Debug)]
+pub struct Segment {
+    p1: Vec3,
+    p2: Vec3,
+    d: Vec3,
+    a: Vec3,
+    b: Vec3,
+}
+
+impl Segment {
+    /// Point and unit tangent at local parameter `u` in [0, 1].
+    #[inline]
+    pub fn eval(&self, u: f32) -> (Vec3, Vec3) {
+        let pos = 0.5 * (2.0 * self.p1 + self.d * u + self.a * (u * u) + self.b * (u * u * u));
+        let tan = 0.5 * (self.d + self.a * (2.0 * u) + self.b * (3.0 * u * u));
+        (pos, unit_or(tan, || (self.p2 - self.p1).normalize_or(Vec3::Y)))
+    }
+}
+
+/// Weber & Penn's taper: the radius at fraction `z` of a stem of base radius `r0`, length `len`.
+/// `taper` in 0..1 narrows linearly to `1 - taper`; 1..2 rounds the tip into a hemisphere; 2..3
+/// makes periodic spheres along the stem.
+pub fn taper_radius(r0: f32, taper: f32, len: f32, z: f32) -> f32 {
+    let unit_taper = if taper < 1.0 {
+        taper
+    } else if taper < 2.0 {
+        2.0 - taper
+    } else {
+        0.0
+    };
+    let taper_z = r0 * (1.0 - unit_taper * z);
+    if taper < 1.0 {
+        return taper_z;
+    }
+    let z2 = (1.0 - z) * len;
+    let depth = if taper < 2.0 || z2 < taper_z { 1.0 } else { taper - 2.0 };
+    let z3 = if taper < 2.0 { z2 } else { (z2 - 2.0 * taper_z * ((z2 / (2.0 * taper_z) + 0.5).floor())).abs() };
+    if taper < 2.0 && z3 >= taper_z {
+        taper_z
+    } else {
+        let s = (taper_z * taper_z - (z3 - taper_z) * (z3 - taper_z)).max(0.0).sqrt();
+        (1.0 - depth) * taper_z + depth * s
+    }
+}
+
+/// Weber & Penn trunk flare: `1 + flare (100^y - 1) / 100` with `y = max(0, 1 - 8 z)`.
+pub fn flare_factor(flare: f32, z: f32) -> f32 {
+    if flare == 0.0 {
+        return 1.0;
+    }
+    let y = (1.0 - 8.0 * z).max(0.0);
+    1.0 + flare * (pow(100.0, y) - 1.0) / 100.0
+}
