@@ -3,7 +3,8 @@
 // Reports per-stage medians, end-to-end medians (wasm: the JS call plus copying the buffers out,
 // i.e. what the worker pays before posting), and output vertices per second.
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { benchBrowser } from './bench-browser.mjs';
@@ -214,5 +215,28 @@ if (typeof wasm.leaf_json === 'function') {
           (r.same_hash ? '' : '  HASH MISMATCH'),
       );
     }
+  }
+}
+
+// Forest (issue 7): the instancing data of a 10,000-tree forest (seeded scatter, per-(variety,
+// LOD) buckets and the LOD assignment), the plain TS module the forest view runs, timed by
+// Vitest's bench (tinybench) in Node. Budget: 200 ms.
+{
+  const out = `${tmpdir()}/sylva-forest-bench-${process.pid}.json`;
+  execFileSync('npx', ['vitest', 'bench', '--run', 'src/forest/layout.bench.ts', '--outputJson', out], {
+    cwd: `${root}/web`,
+    stdio: 'ignore',
+  });
+  const report = JSON.parse(readFileSync(out, 'utf8'));
+  rmSync(out, { force: true });
+  const forest = report.files
+    .flatMap((f) => f.groups)
+    .flatMap((g) => g.benchmarks)
+    .map((b) => ({ name: b.name, median_ms: b.median, samples: b.sampleCount }));
+  if (asJson) {
+    console.log(JSON.stringify({ forest: { trees: 10_000, budget_ms: 200, results: forest } }, null, 2));
+  } else {
+    console.log('\nForest instancing data, 10,000 trees (Node, medians; budget 200 ms):');
+    for (const r of forest) console.log(`  ${r.name.padEnd(46)} ${r.median_ms.toFixed(2).padStart(8)} ms  (${r.samples} samples)`);
   }
 }

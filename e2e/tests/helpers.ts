@@ -91,7 +91,18 @@ export interface CanvasPixels {
 
 /** Screenshots the viewer canvas and classifies its pixels (decoded in the page, no deps). */
 export async function analyseCanvas(page: Page): Promise<CanvasPixels> {
+  // Only the WebGL canvas: the panels floating over it (wind, LOD, toolbar) are hidden for the
+  // shot. (Through the CSSOM: the app's CSP refuses the <style> tag Playwright's `style` adds.)
+  const overlays = (hide: boolean) =>
+    page.evaluate((hide) => {
+      for (const el of document.querySelectorAll<HTMLElement>('body *')) {
+        if (el.tagName === 'CANVAS' || el.querySelector('canvas')) continue;
+        el.style.visibility = hide ? 'hidden' : '';
+      }
+    }, hide);
+  await overlays(true);
   const png = await page.getByTestId('viewer-canvas').screenshot();
+  await overlays(false);
   return page.evaluate(
     async ({ base64, background }) => {
       // Decoded without fetch(): the app's CSP (connect-src 'self') forbids data: URLs.

@@ -6,6 +6,10 @@ import { expect, test } from '@playwright/test';
 import { DEBOUNCE_WAIT_MS, expectTreeOnCanvas, waitForTree, watchErrors } from './helpers';
 
 const DRAG_MS = 10_000;
+
+// A smaller canvas: software WebGL (SwiftShader) then draws several frames during the drag even
+// on a loaded 2-core machine, so the frame count measures the main thread, not the emulated GPU.
+test.use({ viewport: { width: 800, height: 560 } });
 const PARAM = 'l1_length';
 
 test('10 s of continuous slider drag: responsive, no geometry leak, final tree = final URL', async ({
@@ -25,7 +29,11 @@ test('10 s of continuous slider drag: responsive, no geometry leak, final tree =
   await page.goto('/?debug=1');
   const firstHash = await waitForTree(page);
   await page.waitForFunction(() => (window.__sylva?.geometries?.() ?? 0) > 0);
-  // Let the first frames (shader compilation) pass before measuring.
+  // Let the first frames with the tree (shader compilation: seconds in software WebGL) pass
+  // before measuring: two animation frames after the tree arrived, then a little more.
+  await page.evaluate(
+    () => new Promise<void>((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))),
+  );
   await page.waitForTimeout(500);
   const geometriesBefore = await page.evaluate(() => window.__sylva?.geometries?.() ?? -1);
 

@@ -69,6 +69,13 @@ export interface LodSource {
 
 const LEVEL_COUNT = 4;
 
+/**
+ * The levels are built this long after the last new tree (ms) unless a coarser level is wanted
+ * sooner: while a slider is dragged the second worker stays idle instead of regenerating every
+ * intermediate tree next to the viewer's own worker.
+ */
+export const LOD_IDLE_MS = 3000;
+
 /** See the module docs. */
 export class LodController {
   private mode: LodMode = 'auto';
@@ -89,6 +96,9 @@ export class LodController {
   private leafMap: Texture | null = null;
   private last: LodState | null = null;
   private disposed = false;
+  /** Hash of the tree whose levels were last requested, and the idle timer for the next one. */
+  private requested = '';
+  private idleTimer: ReturnType<typeof setTimeout> | null = null;
   private readonly onChange = () => this.update();
 
   constructor(
@@ -155,6 +165,7 @@ export class LodController {
   /** Removes every object and listener. */
   dispose(): void {
     this.disposed = true;
+    if (this.idleTimer !== null) clearTimeout(this.idleTimer);
     this.unsubscribe();
     this.host.orbit.removeEventListener('change', this.onChange);
     this.clearLevels();
@@ -169,15 +180,25 @@ export class LodController {
     this.sphere = sphereOf(buffers);
     this.clearLevels();
     this.update();
+    if (this.idleTimer !== null) clearTimeout(this.idleTimer);
+    this.idleTimer = setTimeout(() => this.requestLods(), LOD_IDLE_MS);
+  }
+
+  /** Asks the LOD worker for the current tree's levels (once per tree). */
+  private requestLods(): void {
+    if (this.idleTimer !== null) clearTimeout(this.idleTimer);
+    this.idleTimer = null;
     const params = this.source.params();
-    if (!params) return;
+    if (this.disposed || !params || !this.hash || this.requested === this.hash) return;
     const hash = this.hash;
+    this.requested = hash;
     this.client.request(params, this.source.volumes()).then(
       (lods) => {
         if (this.disposed || lods.meta.hash !== this.hash || hash !== this.hash) return;
         this.setLods(lods);
       },
       (error: unknown) => {
+        if (this.requested === hash) this.requested = '';
         if (error instanceof Error && error.message === SUPERSEDED) return;
         console.warn('levels of detail unavailable:', error);
       },
@@ -342,6 +363,8 @@ export class LodController {
     const hidden = mode === 'hidden';
     const wanted =
       mode === 'auto' || mode === 'hidden' ? selectLod(this.level, this.screenSize()) : mode;
+    // A coarser level is wanted now: build the levels without waiting for the idle timer.
+    if (wanted > 0 && !this.lods) this.requestLods();
     // Fall back to the nearest finer level that is ready (LOD0 always is).
     let shown = wanted;
     while (shown > 0 && !this.ensureLevel(shown)) shown--;
