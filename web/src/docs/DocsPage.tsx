@@ -249,6 +249,15 @@ export function DocsPage({ model, version, pageHref }: Props) {
               </tr>
               <tr>
                 <td>
+                  <code>wind</code>
+                </td>
+                <td>
+                  <code>1</code> (default) or <code>0</code>
+                </td>
+                <td>the tree sways in the wind, or holds still</td>
+              </tr>
+              <tr>
+                <td>
                   <code>bg</code>
                 </td>
                 <td>
@@ -310,6 +319,15 @@ export function DocsPage({ model, version, pageHref }: Props) {
                   <code>autorotate</code>
                 </td>
                 <td>present: the tree turns slowly</td>
+              </tr>
+              <tr>
+                <td>
+                  <code>wind</code>
+                </td>
+                <td>
+                  absent or <code>on</code>: the tree sways; <code>off</code> or <code>0</code>: it
+                  holds still
+                </td>
               </tr>
               <tr>
                 <td>

@@ -34,7 +34,7 @@ function styleSheet(): CSSStyleSheet {
 
 /** The `<sylva-tree>` custom element. */
 export class SylvaTreeElement extends HTMLElement {
-  static readonly observedAttributes = [...TREE_ATTRIBUTES, 'autorotate', 'background'];
+  static readonly observedAttributes = [...TREE_ATTRIBUTES, 'autorotate', 'background', 'wind'];
 
   private readonly view: HTMLDivElement;
   private embed: TreeEmbed | null = null;
@@ -67,6 +67,7 @@ export class SylvaTreeElement extends HTMLElement {
       workerFactory: elementWorkerFactory,
       background: this.background().value,
       autorotate: this.autorotateOn(),
+      wind: this.windOn(),
       onState: (state) => this.onState(state),
     });
     this.regenerate();
@@ -86,6 +87,7 @@ export class SylvaTreeElement extends HTMLElement {
   attributeChangedCallback(name: string, oldValue: string | null, value: string | null): void {
     if (oldValue === value || !this.embed) return;
     if (name === 'autorotate') this.embed.setAutorotate(this.autorotateOn());
+    else if (name === 'wind') this.embed.setWind(this.windOn());
     else if (name === 'background') {
       this.embed.setBackground(this.background().value);
       this.regenerate(); // refreshes the notices
@@ -112,6 +114,12 @@ export class SylvaTreeElement extends HTMLElement {
         return resolved;
       });
     });
+  }
+
+  /** `wind` absent or on: the tree sways; `wind="0"`/`"off"` holds it still. */
+  private windOn(): boolean {
+    const raw = this.getAttribute('wind');
+    return raw === null ? true : (parseFlag(raw) ?? true);
   }
 
   private autorotateOn(): boolean {

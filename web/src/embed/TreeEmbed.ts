@@ -30,6 +30,8 @@ export interface TreeEmbedOptions {
   workerFactory: WorkerFactory;
   background: Background;
   autorotate: boolean;
+  /** Wind animation on (default) or off. */
+  wind?: boolean;
   onState?(state: EmbedState): void;
 }
 
@@ -75,6 +77,7 @@ export class TreeEmbed {
     container.appendChild(this.status);
     this.setBackground(options.background);
     this.setAutorotate(options.autorotate);
+    this.setWind(options.wind ?? true);
     this.render();
     this.scheduler = new GenerationScheduler(options.workerFactory, {
       onReady: (info) => {
@@ -133,6 +136,11 @@ export class TreeEmbed {
   /** Whether the view is turning. */
   get rotating(): boolean {
     return this.autorotate;
+  }
+
+  /** Turns the wind animation on or off. */
+  setWind(on: boolean): void {
+    this.viewer.wind.set({ enabled: on });
   }
 
   /** Sets the background: the app's sky, a colour, or transparent (no sky, ground or fog). */

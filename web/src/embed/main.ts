@@ -28,6 +28,7 @@ function start(): void {
     workerFactory: createModuleWorker,
     background: options.background,
     autorotate: options.autorotate,
+    wind: options.wind,
     onState: (state) => {
       document.body.dataset.status = state.status;
       if (state.status === 'ready') document.body.dataset.hash = state.hash;

@@ -22,6 +22,7 @@ describe('parseEmbedOptions', () => {
   it('defaults: no autorotate, the default sky, no messages', () => {
     expect(parseEmbedOptions('?v=1&seed=7')).toEqual({
       autorotate: false,
+      wind: true,
       background: { kind: 'default' },
       messages: [],
     });
@@ -41,6 +42,16 @@ describe('parseEmbedOptions', () => {
       background: { kind: 'color', color: '#ffffff' },
     });
     expect(parseEmbedOptions('autorotate').autorotate).toBe(true);
+  });
+
+  it('wind is on unless wind=0 (a bad value is reported and keeps it on)', () => {
+    expect(parseEmbedOptions('wind=0').wind).toBe(false);
+    expect(parseEmbedOptions('wind=off&seed=2').wind).toBe(false);
+    expect(parseEmbedOptions('wind=1').wind).toBe(true);
+    const bad = parseEmbedOptions('wind=gale');
+    expect(bad.wind).toBe(true);
+    expect(bad.messages.join(' ')).toMatch(/Ignored "wind"/);
+    expect(appQuery('v=1&seed=3&wind=0&autorotate=1')).toBe('v=1&seed=3');
   });
 
   it('reports hostile or unknown values and falls back to the defaults', () => {

@@ -16,13 +16,15 @@ export type Background =
 /** The embed page's own options, read from its query next to the share-link params. */
 export interface EmbedOptions {
   autorotate: boolean;
+  /** Wind animation (`wind=0` turns it off; on by default). */
+  wind: boolean;
   background: Background;
   /** Problems with these options (the option falls back to its default). */
   messages: string[];
 }
 
 /** Query keys of the embed page that are not tree parameters (dropped from "Open in Sylva"). */
-export const EMBED_KEYS: readonly string[] = ['autorotate', 'bg'];
+export const EMBED_KEYS: readonly string[] = ['autorotate', 'bg', 'wind'];
 
 const HEX_RE = /^#([0-9a-f]{3}|[0-9a-f]{6})$/i;
 
@@ -81,10 +83,14 @@ export function parseEmbedOptions(search: string): EmbedOptions {
   if (flag === null) {
     messages.push(`Ignored "autorotate": use autorotate=1 or autorotate=0.`);
   }
+  const windRaw = firstValue(query, 'wind');
+  const wind = windRaw === null ? true : parseFlag(windRaw);
+  if (wind === null) messages.push(`Ignored "wind": use wind=1 or wind=0.`);
   const bg = parseBackground(firstValue(query, 'bg'));
   if (typeof bg === 'string') messages.push(`Ignored "bg": ${bg}.`);
   return {
     autorotate: flag ?? false,
+    wind: wind ?? true,
     background: typeof bg === 'string' ? { kind: 'default' } : bg,
     messages,
   };
