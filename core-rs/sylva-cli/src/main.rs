@@ -170,6 +170,8 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["non_manifold_edges"] = t.non_manifold_edges.into();
         out["boundary_edges"] = t.boundary_edges.into();
         out["holes"] = 0.into(); // tree holes are not generated yet (issue 5)
+        out["welds"] = g.stats.welds.welds.into();
+        out["weld_fallbacks"] = g.stats.welds.weld_fallbacks.into();
     }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g

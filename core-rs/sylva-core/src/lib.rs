@@ -48,6 +48,9 @@ pub struct Stats {
     pub triangles: usize,
     /// Number of stems in the skeleton.
     pub stems: usize,
+    /// Junctions welded into their parent's surface, and those that fell back to closed separate
+    /// tubes ([`mesh::tube::WeldStats`]).
+    pub welds: mesh::tube::WeldStats,
     /// Milliseconds per stage, in pipeline order (`skeleton`, `mesh`, `hash`).
     pub stage_ms: Vec<(&'static str, f64)>,
     /// Milliseconds for the whole generation.
@@ -133,7 +136,7 @@ pub fn generate_with_progress(
         }
     };
     let t1 = clock.now_ms();
-    let mesh = mesh::tube::build(&skeleton, params)?;
+    let (mesh, welds) = mesh::tube::build_with_stats(&skeleton, params)?;
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
     let t_leaves = clock.now_ms();
@@ -144,6 +147,7 @@ pub fn generate_with_progress(
         vertices: mesh.vertex_count(),
         triangles: mesh.triangle_count(),
         stems: skeleton.stems.len(),
+        welds,
         stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("foliage", t_leaves - t2), ("hash", t3 - t_leaves)],
         total_ms: t3 - t0,
     };

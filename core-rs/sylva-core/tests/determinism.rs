@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "f8604965f3dcb5e4"),
-    ("quaking_aspen", "ffcf97061e516815"),
-    ("black_tupelo", "b94a0ce247cf74f5"),
-    ("weeping_willow", "1951b7036e71d0c7"),
-    ("ca_black_oak", "371956810a71d21c"),
-    ("fir", "390499712995ad75"),
-    ("oak", "bd41319917b9264f"),
-    ("cypress", "ef4e755937d4726d"),
-    ("umbrella", "29f954fd46562601"),
-    ("weeping", "8a0faba003cdd746"),
-    ("grown_broadleaf", "f14639c078d44fe7"),
-    ("grown_shrub", "839c9205f41e4c18"),
-    ("grown_hedgerow", "2c72c177817fce61"),
-    ("grown_beside_wall", "1b1d6e9ee09b5ce5"),
-    ("grown_bushy", "f0810a70a52776ab"),
+    ("default", "da438b16274c62d9"),
+    ("quaking_aspen", "329b0249b9d46b48"),
+    ("black_tupelo", "833fedb43c615287"),
+    ("weeping_willow", "2e637fb63c262fb8"),
+    ("ca_black_oak", "3ff59b0ed638f9e9"),
+    ("fir", "2d9db2a1e38614bd"),
+    ("oak", "b26ca9ab4b59f903"),
+    ("cypress", "0f44741cb3039c0e"),
+    ("umbrella", "5619d35b037050af"),
+    ("weeping", "845c62d24d6e2b0c"),
+    ("grown_broadleaf", "f6cd8d805c39f75a"),
+    ("grown_shrub", "4723ce49887f4996"),
+    ("grown_hedgerow", "6179717aeb513a8b"),
+    ("grown_beside_wall", "f06a15bfc45146a3"),
+    ("grown_bushy", "37d4c4ae7639486f"),
 ];
 
 #[test]

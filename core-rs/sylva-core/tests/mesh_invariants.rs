@@ -23,26 +23,6 @@ fn many_seeds_satisfy_the_invariants() {
 }
 
 #[test]
-fn tips_are_closed_only_buried_bases_stay_open() {
-    for preset in PRESETS {
-        let p = preset.params().unwrap();
-        let g = generate(&p).unwrap();
-        let edges = edge_uses(&g.mesh);
-        assert!(edges.values().all(|&u| u <= 2), "{}: an edge is shared by more than two triangles", preset.name);
-        let open = edges.values().filter(|&&u| u == 1).count();
-        // Each child stem's base ring (inside its parent) is the only open loop; the trunk is closed.
-        let expected: usize = g
-            .skeleton
-            .stems
-            .iter()
-            .filter(|s| s.parent.is_some())
-            .map(|s| sides_for(s.radius, p.mesh_quality, 0) as usize)
-            .sum();
-        assert_eq!(open, expected, "{}: open edges besides the buried stem bases", preset.name);
-    }
-}
-
-#[test]
 fn uv_v_is_continuous_and_increasing_along_stems() {
     let g = generate(&TreeParams::default()).unwrap();
     // Along each ring column (same u), v never decreases from one ring to the next.
