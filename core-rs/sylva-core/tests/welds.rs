@@ -192,3 +192,16 @@ fn many_seeds_and_qualities_stay_closed() {
         }
     }
 }
+
+#[test]
+fn the_budget_counts_junctions_conservatively_but_not_wastefully() {
+    for name in ["default", "ca_black_oak"] {
+        let p = sylva_core::presets::find(name).unwrap().params().unwrap();
+        let n = generate(&p).unwrap().stats.vertices as u32;
+        // The check runs before allocating, on a bound that covers every junction falling back...
+        let e = generate(&TreeParams { max_vertices: n - 1, ..p.clone() }).unwrap_err();
+        assert!(e.message().contains("max_vertices"), "{name}: {e}");
+        // ...and stays within 10% of what the tree really needs.
+        assert!(generate(&TreeParams { max_vertices: n + n / 10, ..p }).is_ok(), "{name}: bound too loose");
+    }
+}

@@ -93,7 +93,8 @@ pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
 /// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`, plus the rings
 /// its children's junctions ask for (`extra`); a welded stem starts at `start` (its junction
 /// ring) instead of 0. The last ring sits just short of the tip; the apex closes the stem at t = 1.
-fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Vec<f32>) {
+/// Returns how many planned rings the junction ring replaced.
+fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Vec<f32>) -> usize {
     let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
@@ -152,15 +153,18 @@ fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Ve
         }
     }
     out.truncate(first + n);
+    let mut dropped = 0;
     if start > 0.0 {
         // Drop the rings the junction replaces; the junction ring is the first.
         let keep = out[first..].partition_point(|&t| t <= start + 1e-4) + first;
         out.drain(first..keep);
         out.insert(first, start);
+        dropped = keep - first;
     }
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
+    dropped
 }
 
 /// Unit circle table for `sides`: `(cos, sin, u)` per column, with the seam point repeated at
@@ -212,33 +216,40 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh
     // Conservative vertex count: tubes, apexes, caps, the collar loops of every junction, and
     // for each junction the rings a fallback to a buried tube would add back.
     let mut vertices = 0u64;
+    let mut indices = 0u64;
+    let mut bridges_len = 0u64;
+    let parent_of = |i: usize| stems[i].parent.map_or(0, |p| p as usize);
     let loops = weld::collar_loops(q);
     for (i, s) in stems.iter().enumerate() {
         let start = ts.len();
         let t0 = junctions[i].map_or(0.0, |j| j.t_start);
-        plan_rings(s, q, &inserted[extra[i].clone()], t0, &mut ts);
+        let dropped = plan_rings(s, q, &inserted[extra[i].clone()], t0, &mut ts);
         let plan = StemPlan { rings: start..ts.len(), sides: sides[i] };
         let ring = u64::from(plan.sides) + 1;
         vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
+        // Quads, tip fan and base fan; a junction's zip and collar quads.
+        indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
         if junctions[i].is_some() {
-            let mut full = Vec::new();
-            plan_rings(s, q, &inserted[extra[i].clone()], 0.0, &mut full);
-            vertices += (full.len().saturating_sub(plan.rings.len()) as u64 + loops as u64) * ring;
+            // Either the collar loops, or a fallback sweeping the dropped rings again (the
+            // junction ring itself stays one of them).
+            vertices += (dropped.saturating_sub(1).max(loops)) as u64 * ring;
+            bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
+                + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
+                * 3;
         }
         plans.push(plan);
     }
     if vertices > u64::from(p.max_vertices) {
         return Err(budget_error("", vertices, p.max_vertices));
     }
-    let indices: u64 = plans.iter().map(|pl| pl.rings.len() as u64 * u64::from(pl.sides) * 6).sum();
-    let mut out = MeshBuilder::with_wind(vertices as usize, indices as usize);
+    let mut out = MeshBuilder::with_wind(vertices as usize, (indices + bridges_len) as usize);
     out.begin_group(Material::Bark);
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
     let winds = stem_winds(skeleton, p.seed);
     let mut frames: Vec<Frame> = vec![Frame::default(); ts.len()];
     let mut meshes: Vec<StemMesh> = Vec::with_capacity(n);
     let mut claimed: Vec<bool> = Vec::with_capacity(indices as usize / 6);
-    let mut bridges: Vec<u32> = Vec::new();
+    let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
     let mut scratch = weld::Scratch::default();
     let mut stats = WeldStats::default();
     for (i, stem) in stems.iter().enumerate() {
@@ -314,6 +325,9 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh
 
 /// The base of a swept branch before its cap's centre vertex exists.
 const PENDING_CAP: Base = Base::Cap(u32::MAX);
+
+/// Bound on the rows of a junction's hole, for the index capacity estimate.
+const MAX_ROWS_BOUND: u64 = 8;
 
 /// Indices of one swept stem: quads between rings (except those a child's junction claimed),
 /// the tip fan, and the base cap.
