@@ -172,6 +172,8 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["holes"] = 0.into(); // tree holes are not generated yet (issue 5)
         out["welds"] = g.stats.welds.welds.into();
         out["weld_fallbacks"] = g.stats.welds.weld_fallbacks.into();
+        out["split_welds"] = g.stats.welds.split_welds.into();
+        out["split_fallbacks"] = g.stats.welds.split_fallbacks.into();
     }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g

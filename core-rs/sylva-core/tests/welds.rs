@@ -88,6 +88,7 @@ fn every_preset_is_closed_manifold_and_mostly_welded() {
         // One piece per stem, minus one for every stem welded into its parent.
         assert_eq!(count_components(&g), g.skeleton.stems.len() - w.welds, "{}: {w:?}", preset.name);
         assert!(w.welds > 0, "{}: nothing welded", preset.name);
+        assert!(w.split_welds <= w.welds && w.split_fallbacks <= w.weld_fallbacks, "{}: {w:?}", preset.name);
         if preset.name == "weeping_willow" {
             // The paper's willow hangs most split clones straight down beside their originals
             // (split angle 3° to 45° against AttractionUp -2): parallel stems cannot be welded.
@@ -96,6 +97,38 @@ fn every_preset_is_closed_manifold_and_mostly_welded() {
             assert!(w.weld_fallbacks * 2 < w.welds, "{}: too many fallbacks {w:?}", preset.name);
         }
     }
+}
+
+#[test]
+fn split_clones_weld_into_a_y() {
+    // CA Black Oak splits its trunk and branches: many clones join their originals.
+    let g = generate(&sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap()).unwrap();
+    let w = g.stats.welds;
+    assert!(w.split_welds > 300, "{w:?}");
+    // A welded clone shares its original's surface piece (stems found by their wind phase).
+    let piece = pieces(&g, &weld_ids(&g));
+    let key = |w: &[f32]| [w[0].to_bits(), w[1].to_bits(), w[2].to_bits(), w[4].to_bits()];
+    let mut piece_of: HashMap<[u32; 4], u32> = HashMap::new();
+    for (t, &p) in g.mesh.indices.chunks_exact(3).zip(&piece) {
+        let i = t[0] as usize * WIND_STRIDE;
+        piece_of.entry(key(&g.mesh.wind[i..i + WIND_STRIDE])).or_insert(p);
+    }
+    let stem_key = |w: &sylva_core::mesh::tube::StemWind| {
+        [w.pivot.x.to_bits(), w.pivot.y.to_bits(), w.pivot.z.to_bits(), w.phase.to_bits()]
+    };
+    let winds = sylva_core::mesh::tube::stem_winds(
+        &g.skeleton,
+        sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap().seed,
+    );
+    let stems = &g.skeleton.stems;
+    let joined = (0..stems.len())
+        .filter(|&i| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level))
+        .filter(|&i| {
+            let p = stems[i].parent.unwrap() as usize;
+            piece_of[&stem_key(&winds[i])] == piece_of[&stem_key(&winds[p])]
+        })
+        .count();
+    assert!(joined >= w.split_welds, "{joined} clones share their original's surface, {w:?}");
 }
 
 #[test]
@@ -108,6 +141,7 @@ fn welding_off_gives_closed_separate_tubes() {
         assert_closed(&g, name);
         assert_eq!(g.stats.welds.welds, 0);
         assert_eq!(g.stats.welds.weld_fallbacks, 0, "{name}: fallbacks are counted only when welding");
+        assert_eq!((g.stats.welds.split_welds, g.stats.welds.split_fallbacks), (0, 0));
         assert_eq!(count_components(&g), g.skeleton.stems.len(), "{name}: every stem its own closed tube");
     }
 }

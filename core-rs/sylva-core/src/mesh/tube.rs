@@ -82,6 +82,10 @@ pub struct WeldStats {
     /// Stems that should have been welded (levels 1 and 2 on their parents, split clones up to
     /// level 2) but sit on their parent as closed separate tubes instead.
     pub weld_fallbacks: usize,
+    /// Of the welds, split clones joined to their original (a Y).
+    pub split_welds: usize,
+    /// Of the fallbacks, split clones.
+    pub split_fallbacks: usize,
 }
 
 /// Number of sides around a stem of base radius `r` (m) at the given quality.
@@ -252,6 +256,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh
     let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
     let mut scratch = weld::Scratch::default();
     let mut stats = WeldStats::default();
+    let is_clone = |i: usize| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level);
     for (i, stem) in stems.iter().enumerate() {
         let plan = &mut plans[i];
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
@@ -290,6 +295,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh
             if ok {
                 m.base = Base::Welded;
                 stats.welds += 1;
+                stats.split_welds += usize::from(is_clone(i));
             } else {
                 // Fall back to a closed tube from the parent's axis, as if never welded.
                 out.truncate_vertices(m.first);
@@ -299,9 +305,11 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh
                 plan.rings = start..ts.len();
                 m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
                 stats.weld_fallbacks += 1;
+                stats.split_fallbacks += usize::from(is_clone(i));
             }
         } else if weld::is_candidate(stems, i) && p.weld {
             stats.weld_fallbacks += 1;
+            stats.split_fallbacks += usize::from(is_clone(i));
         }
         if m.base == PENDING_CAP {
             // A separate tube: close its base with a shallow cone to a centre vertex a quarter
