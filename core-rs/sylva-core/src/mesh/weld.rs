@@ -10,39 +10,43 @@
 //!    the child's first direction and the parent's axis, the distance `s_out = (R + r |cos θ|) /
 //!    sin θ` along the child at which its tube (radius `r`) has left the parent's (radius `R`,
 //!    times the lobe/fluting bound on the trunk), and the child's **junction ring** at
-//!    `s_out + collar r / 2`: the child's tube starts there. The **footprint** on the parent is
-//!    the ellipse of the child's collar (radius `r (1 + collar / 2)`) around the point where the
-//!    child's axis pierces the parent: `±r' / sin θ` along the parent, `±asin(r' / R)` around it.
+//!    `s_out + collar r / 2`: the child's tube starts there. The **footprint** on the parent is the ellipse of the child's collar (radius
+//!    `r' = r (1 + collar (1 - r / R) / 2)`: no flare on an even fork) around the point where the
+//!    child's axis pierces the parent, `±r' / sin θ` along the parent and `±asin(r' / R)` around
+//!    it, widened to cover the junction ring as seen from the parent (a curved child leans).
 //!    The parent gets extra rings across the footprint (1 to 6 rows, about square quads), so the
 //!    hole fits the child whatever the parent's own ring spacing. Footprints that would overlap
 //!    one already accepted on the same parent, leave the parent's tube (below its own junction
-//!    ring, across the trunk's bottom cap or near the tip), or need a junction ring beyond half
-//!    the child (θ below about 20°) are not welded. Split clones are planned first: a smooth Y
+//!    ring, across the trunk's bottom cap or near the tip), leave at less than 10° or need a
+//!    junction ring beyond half the child are not welded. Split clones are planned first: a smooth Y
 //!    matters more than a side twig.
 //! 2. **Hole** ([`join`], after the parent's and the child's rings are swept). The footprint is
 //!    snapped to the parent's (ring, column) grid: the rows between the rings at the footprint's
 //!    ends, the columns around the child's azimuth measured in the parent's own transported
 //!    frame. These quads are *claimed* (not emitted); their boundary is one closed loop of parent
 //!    vertices, walked counter-clockwise seen from outside (bottom ring, right column, top ring,
-//!    left column).
+//!    left column). The vertices inside the hole stay in the buffers, unused by any triangle.
 //! 3. **Collar** (the blend). For every column of the child's junction ring, the point of the hole
-//!    loop at the same angle around the child's axis is joined to the ring vertex by a cubic
+//!    loop at the same parameter (see 4) is joined to the ring vertex by a cubic
 //!    Bezier that leaves the parent *tangentially* (first control point along the parent's
 //!    tangent plane) and arrives *along the child's axis* (last control point back along it), both
 //!    handles 0.4 of the chord. `collar_loops(quality)` loops of the child's column count sit on
 //!    these curves at even parameters: a collar that flares from the wider hole into the branch,
 //!    C1 with both surfaces up to the loop spacing. For a split clone the hole spans the side of
 //!    the original facing it, so the collar becomes the crotch of a Y (the ramiform's top patch).
-//! 4. **Zip**. The hole loop (any number of vertices) is zipped to the first collar loop by angle
-//!    around the child's axis: both loops run counter-clockwise, each step advances the loop whose
-//!    next vertex has the smaller angle, one triangle per step, so every edge of both loops is
-//!    used exactly once. Quads join the collar loops and the junction ring.
+//! 4. **Zip**. Around the junction's axis (from the hole's centroid to the junction ring's
+//!    centre), the hole loop is parametrised by arc length from its vertex of smallest angle
+//!    (raw angles of a projected hole can fold back at its corners), the ring's columns by their
+//!    angle relative to that vertex; the collar curves start at the hole point of their column's
+//!    parameter. The hole (any number of vertices) is zipped to the first collar loop: both run
+//!    counter-clockwise, each step advances the loop whose next vertex has the smaller parameter,
+//!    one triangle per step, so every edge of both loops is used exactly once. Quads join the
+//!    collar loops and the junction ring.
 //!
 //! Every new triangle is checked before anything is committed: non-degenerate and wound with its
-//! vertex normals. If the hole's angles are not monotone around the child (the hole is not
-//! star-shaped seen from the child's axis), a claimed quad is already taken, or a check fails, the
-//! junction's vertices are dropped and the child is swept again as a separate tube from its
-//! parent's axis with a closed base: a **fallback**, counted in [`super::tube::WeldStats`].
+//! vertex normals. If the ring's angles are not monotone around the junction's axis, a claimed
+//! quad is already taken, or a check fails, the junction's vertices are dropped and the child is
+//! swept again as a separate tube from its parent's axis with a closed base: a **fallback**, counted in [`super::tube::WeldStats`].
 //! Deeper levels (3) are always such closed separate tubes.
 
 use super::tube::{Frame, StemMesh, StemWind};
