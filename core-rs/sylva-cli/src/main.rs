@@ -197,6 +197,10 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["non_manifold_edges"] = t.non_manifold_edges.into();
         out["boundary_edges"] = t.boundary_edges.into();
         out["holes"] = g.stats.holes.into();
+        out["welds"] = g.stats.welds.welds.into();
+        out["weld_fallbacks"] = g.stats.welds.weld_fallbacks.into();
+        out["split_welds"] = g.stats.welds.split_welds.into();
+        out["split_fallbacks"] = g.stats.welds.split_fallbacks.into();
     }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g

@@ -142,10 +142,19 @@ fn report_mesh_counts_open_and_non_manifold_edges() {
     assert_eq!(code, 0, "{err}");
     let v = json(&out);
     assert_eq!(v["non_manifold_edges"], 0);
-    // Only the buried bases of the branches are open: some, but far fewer than all edges.
-    let open = v["boundary_edges"].as_u64().unwrap();
-    assert!(open > 0 && open < v["triangles"].as_u64().unwrap() / 4, "{open}");
+    // Welded junctions and capped separate tubes: the surface is closed.
+    assert_eq!(v["boundary_edges"], 0);
     assert_eq!(v["holes"], 0);
+    let (welds, fallbacks) = (v["welds"].as_u64().unwrap(), v["weld_fallbacks"].as_u64().unwrap());
+    assert!(welds > 1000 && fallbacks < welds / 2, "{welds} welds, {fallbacks} fallbacks");
+    // Without welding: nothing welded, nothing counted as a fallback, still closed.
+    let (code, out, err) = sylva(&["generate", "--preset", "fir", "--set", "weld=false", "--report", "mesh"]);
+    assert_eq!(code, 0, "{err}");
+    let v = json(&out);
+    assert_eq!(
+        (v["welds"].as_u64(), v["weld_fallbacks"].as_u64(), v["boundary_edges"].as_u64()),
+        (Some(0), Some(0), Some(0))
+    );
     let (code, _, err) = sylva(&["generate", "--report", "everything"]);
     assert_eq!(code, 2);
     assert!(err.contains("--report takes 'skeleton' or 'mesh'"), "{err}");

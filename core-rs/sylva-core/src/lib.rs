@@ -54,6 +54,9 @@ pub struct Stats {
     pub stems: usize,
     /// Number of tree holes cut into the bark ([`mesh::holes`]).
     pub holes: usize,
+    /// Junctions welded into their parent's surface, and those that fell back to closed separate
+    /// tubes ([`mesh::tube::WeldStats`]).
+    pub welds: mesh::tube::WeldStats,
     /// Milliseconds per stage, in pipeline order (`skeleton`, `mesh`, `hash`).
     pub stage_ms: Vec<(&'static str, f64)>,
     /// Milliseconds for the whole generation.
@@ -140,8 +143,9 @@ pub fn generate_with_progress(
         }
     };
     let t1 = clock.now_ms();
-    let (mut mesh, blocks) = mesh::tube::build_blocks(&skeleton, params)?;
-    let holes = mesh::holes::cut(&mut mesh, &blocks, &skeleton, params).len();
+    let built = mesh::tube::build_with_stats(&skeleton, params)?;
+    let (mut mesh, welds) = (built.mesh, built.welds);
+    let holes = mesh::holes::cut(&mut mesh, &built.blocks, &skeleton, params).len();
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
     let t_leaves = clock.now_ms();
@@ -153,6 +157,7 @@ pub fn generate_with_progress(
         triangles: mesh.triangle_count(),
         stems: skeleton.stems.len(),
         holes,
+        welds,
         stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("foliage", t_leaves - t2), ("hash", t3 - t_leaves)],
         total_ms: t3 - t0,
     };

@@ -346,6 +346,10 @@ define_params! {
             "Number of lobes (flutes) around the trunk cross-section; 0 = round.";
         lobe_depth: f32 = 0.07; [0.0, 1.0, 0.01] "", "Trunk", "Lobe Depth",
             "Depth of the trunk lobes as a fraction of the radius.";
+        weld: bool = true; [0, 1, 1] "", "Trunk", "Welded Forks",
+            "Weld levels 1 and 2 and split clones into their parent's surface with a smooth collar (one closed surface); off = every branch is a separate closed tube.";
+        weld_collar: f32 = 1.0; [0.0, 3.0, 0.05] "", "Trunk", "Branch Collar",
+            "Size of the welded branch collar, in branch radii: how much wider than the branch its footprint on the parent is and how far out the collar blends into it.";
         guide_xy: f32 = 0.0; [0.0, 5.0, 0.01] "m", "Trunk", "Guide Limit",
             "Complex trunk: random sideways offset of each trunk point (the guide curve), within this limit (0 = off).";
         refine_curves: u32 = 0; [0, 12, 1] "", "Trunk", "Refinement Curves",

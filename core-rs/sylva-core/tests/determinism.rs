@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "3dede5a4b2fee07d"),
-    ("quaking_aspen", "9bb77dd4c1cc1201"),
-    ("black_tupelo", "ab3abfa995a37c6d"),
-    ("weeping_willow", "33655607de27dfb5"),
-    ("ca_black_oak", "0c488f23e610471b"),
-    ("fir", "5696f5cf3b5026d1"),
-    ("oak", "a9545c52dc740453"),
-    ("cypress", "9eea0d106b059a1a"),
-    ("umbrella", "5db452b385874075"),
-    ("weeping", "d8fa5e003c0154f1"),
-    ("grown_broadleaf", "f14639c078d44fe7"),
-    ("grown_shrub", "839c9205f41e4c18"),
-    ("grown_hedgerow", "2c72c177817fce61"),
-    ("grown_beside_wall", "1b1d6e9ee09b5ce5"),
-    ("grown_bushy", "f0810a70a52776ab"),
+    ("default", "63826ee10c07a122"),
+    ("quaking_aspen", "a289df8833c65358"),
+    ("black_tupelo", "cdefeef3530a1d6c"),
+    ("weeping_willow", "41f2b8d4fa73267a"),
+    ("ca_black_oak", "a253462c34b548b2"),
+    ("fir", "8f057da952805b67"),
+    ("oak", "b26ca9ab4b59f903"),
+    ("cypress", "e6ac28872dbac5c2"),
+    ("umbrella", "5619d35b037050af"),
+    ("weeping", "845c62d24d6e2b0c"),
+    ("grown_broadleaf", "f6cd8d805c39f75a"),
+    ("grown_shrub", "4723ce49887f4996"),
+    ("grown_hedgerow", "6179717aeb513a8b"),
+    ("grown_beside_wall", "f06a15bfc45146a3"),
+    ("grown_bushy", "37d4c4ae7639486f"),
 ];
 
 #[test]

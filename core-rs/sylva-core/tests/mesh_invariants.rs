@@ -4,7 +4,7 @@ mod common;
 
 use common::{assert_mesh_invariants, edge_uses};
 use sylva_core::mesh::tube::sides_for;
-use sylva_core::mesh::{holes, twig};
+use sylva_core::mesh::twig;
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 #[test]
@@ -20,38 +20,6 @@ fn many_seeds_satisfy_the_invariants() {
     for seed in 0..12 {
         let p = TreeParams { seed, ..TreeParams::default() };
         assert_mesh_invariants(&generate(&p).unwrap(), &format!("seed {seed}"));
-    }
-}
-
-#[test]
-fn tips_are_closed_only_buried_bases_stay_open() {
-    for preset in PRESETS {
-        let p = preset.params().unwrap();
-        let g = generate(&p).unwrap();
-        let edges = edge_uses(&g.mesh);
-        assert!(edges.values().all(|&u| u <= 2), "{}: an edge is shared by more than two triangles", preset.name);
-        let open = edges.values().filter(|&&u| u == 1).count();
-        // Each child stem's base ring (inside its parent) is the only open loop; the trunk is closed.
-        // Bezier twigs have their own number of sides, stems densified for holes more.
-        let twigs = twig::mask(&g.skeleton, &p);
-        let dense = holes::eligible(&g.skeleton, &p, &twigs);
-        let expected: usize = g
-            .skeleton
-            .stems
-            .iter()
-            .enumerate()
-            .filter(|(_, s)| s.parent.is_some())
-            .map(|(i, s)| {
-                if twigs[i] {
-                    twig::sides(s.radius, p.mesh_quality, p.twig_detail) as usize
-                } else if dense.get(i) == Some(&true) {
-                    holes::dense_sides(sides_for(s.radius, p.mesh_quality, 0), &p) as usize
-                } else {
-                    sides_for(s.radius, p.mesh_quality, 0) as usize
-                }
-            })
-            .sum();
-        assert_eq!(open, expected, "{}: open edges besides the buried stem bases", preset.name);
     }
 }
 
@@ -240,29 +208,16 @@ fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
     use sylva_core::mesh::twig::TwigDetail;
     let mut sides_seen = Vec::new();
     for i in 0..4 {
-        let p = TreeParams { twig_detail: TwigDetail::from_index(i), ..TreeParams::default() };
+        // Unwelded, every simple deepest-level stem is a twig (welded ones are swept as tubes).
+        let p = TreeParams { twig_detail: TwigDetail::from_index(i), weld: false, ..TreeParams::default() };
         let g = generate(&p).unwrap();
         assert_mesh_invariants(&g, &format!("twig detail {i}"));
         let twigs = twig::mask(&g.skeleton, &p);
         let count = twigs.iter().filter(|&&t| t).count();
         assert!(count > 20, "the default tree has Bezier twigs: {count}");
-        // The only open edges are the buried bases: twigs are closed at their tips.
+        // Twigs are closed at their tips and capped at their bases: no open edge anywhere.
         let open = edge_uses(&g.mesh).values().filter(|&&u| u == 1).count();
-        let expected: usize = g
-            .skeleton
-            .stems
-            .iter()
-            .zip(&twigs)
-            .filter(|(s, _)| s.parent.is_some())
-            .map(|(s, &t)| {
-                if t {
-                    twig::sides(s.radius, p.mesh_quality, p.twig_detail) as usize
-                } else {
-                    sides_for(s.radius, p.mesh_quality, 0) as usize
-                }
-            })
-            .sum();
-        assert_eq!(open, expected, "detail {i}");
+        assert_eq!(open, 0, "detail {i}: open edges");
         let first = g.skeleton.stems.iter().zip(&twigs).find(|(_, &t)| t).unwrap().0;
         sides_seen.push(twig::sides(first.radius, p.mesh_quality, p.twig_detail));
         if i == 2 {
@@ -283,7 +238,7 @@ fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
 #[test]
 fn twig_rings_follow_the_bezier_span_and_its_radii() {
     use sylva_core::mesh::twig::{middle_radius, Span};
-    let p = TreeParams::default();
+    let p = TreeParams { weld: false, ..TreeParams::default() };
     let g = generate(&p).unwrap();
     let twigs = twig::mask(&g.skeleton, &p);
     let (i, stem) = g.skeleton.stems.iter().enumerate().find(|(i, _)| twigs[*i]).unwrap();
@@ -304,6 +259,6 @@ fn twig_rings_follow_the_bezier_span_and_its_radii() {
         assert!(((x - span.p[0]).length() - span.r[0]).abs() < 1e-4 * (1.0 + span.r[0]));
         assert!((x - span.p[0]).dot(d0).abs() < 1e-4);
     }
-    // Its block: rings of sides + 1 vertices and the apex.
-    assert_eq!((blocks[i].len() - 1) % (sides + 1), 0);
+    // Its block: rings of sides + 1 vertices, the apex and the base cap's centre.
+    assert_eq!((blocks[i].len() - 2) % (sides + 1), 0);
 }

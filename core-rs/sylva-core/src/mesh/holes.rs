@@ -141,7 +141,9 @@ pub(crate) fn densify(stem: &Stem, sides: u32, p: &TreeParams, ts: &mut Vec<f32>
     let sides = dense_sides(sides, p);
     let Some(&last) = ts.last() else { return sides };
     let len = stem.length.max(1e-6);
-    let mut t = 0.0f32;
+    // From the plan's first ring on (a welded branch starts at its junction ring, outside its
+    // parent: no ring may go below it).
+    let mut t = ts.get(start).copied().unwrap_or(0.0);
     let before = ts.len();
     while t < last {
         let r = stem.radius_at(t);

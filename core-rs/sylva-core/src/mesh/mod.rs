@@ -8,6 +8,7 @@ pub mod topology;
 pub mod trunk;
 pub mod tube;
 pub mod twig;
+pub mod weld;
 
 use serde::Serialize;
 
@@ -314,6 +315,18 @@ impl MeshBuilder {
         let start = self.mesh.indices.len();
         self.mesh.indices.resize(start + n, 0);
         &mut self.mesh.indices[start..]
+    }
+
+    /// Append triangles given as a flat index list (counter-clockwise seen from outside).
+    pub fn extend_indices(&mut self, indices: &[u32]) {
+        self.mesh.indices.extend_from_slice(indices);
+    }
+
+    /// Vertex `i`'s uv.
+    #[inline]
+    pub fn uv_at(&self, i: u32) -> [f32; 2] {
+        let k = i as usize * 2;
+        [self.mesh.uvs[k], self.mesh.uvs[k + 1]]
     }
 
     /// Component `k` of the flat positions buffer written so far.

@@ -4,10 +4,18 @@
 //! smooth surface normals of a tapered tube (`radial - dr/ds * tangent`, normalised); `u` runs
 //! around the stem with the seam duplicated, `v` along it at one unit per circumference, so bark
 //! textures stay square and continuous. Each tip closes with a small cone to an apex vertex and
-//! the trunk's base with a fan, so the only open edges are the buried bases of child stems.
+//! the trunk's base with a fan. Children of levels 1 and 2 and split clones are welded into their
+//! parent's surface ([`super::weld`]: the parent gets extra rings across each footprint, the
+//! child starts at its junction ring, the hole's quads are left out); the other children sit in
+//! their parent as separate tubes whose base is closed by a shallow cone. The surface is closed.
+//!
+//! Order of work: plan junctions and rings, check the vertex budget (conservatively, counting a
+//! fallback for every junction), sweep each stem's vertices parents first (welding each child
+//! right after its sweep, or sweeping it again as a capped tube), then write every stem's
+//! indices (skipping claimed quads) and the junctions' triangles.
 
 use super::trunk::{ring_circles, union_outline};
-use super::{holes, twig, Material, MeshBuilder, TreeMesh, WIND_STRIDE};
+use super::{holes, twig, weld, Material, MeshBuilder, TreeMesh, WIND_STRIDE};
 use crate::error::SylvaError;
 use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
@@ -23,12 +31,62 @@ struct StemPlan {
     sides: u32,
 }
 
-impl StemPlan {
-    fn vertices(&self, trunk: bool) -> u64 {
-        let ring = u64::from(self.sides) + 1;
-        // Rings, the apex, and for the trunk a bottom cap (its own ring copy facing down + centre).
-        self.rings.len() as u64 * ring + 1 + if trunk { ring + 1 } else { 0 }
-    }
+/// What one stem's sweep wrote, for the junctions of its children and the index pass.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct StemMesh {
+    /// First vertex of ring 0.
+    pub first: u32,
+    /// Number of rings.
+    pub rings: u32,
+    /// Sides per ring (a ring holds `sides + 1` vertices, the seam duplicated).
+    pub sides: u32,
+    /// Index of ring 0 in the shared ring-parameter and frame buffers.
+    pub ring0: usize,
+    /// The apex closing the tip.
+    pub apex: u32,
+    /// How the base is closed.
+    pub base: Base,
+    /// Offset of this stem's quads in the claimed-quad bitmap (`(rings - 1) * sides` entries).
+    pub claim: usize,
+    /// `v` of ring 0.
+    pub v0: f32,
+}
+
+/// How a stem's base ring is closed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Base {
+    /// The trunk: a flat downward cap on its own copy of ring 0 (first vertex of the copy).
+    Trunk(u32),
+    /// A fan from ring 0 to this centre vertex (a separate tube sitting in its parent).
+    Cap(u32),
+    /// Welded into the parent's surface ([`super::weld`]).
+    Welded,
+}
+
+/// Centre and orientation of one swept ring: column `j` of the ring lies along
+/// `normal cos(2πj/sides) + (tangent × normal) sin(2πj/sides)`.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Frame {
+    /// Ring centre.
+    pub centre: Vec3,
+    /// Unit tangent of the centre curve.
+    pub tangent: Vec3,
+    /// Unit normal, transported along the stem.
+    pub normal: Vec3,
+}
+
+/// Counts of the junction pass.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct WeldStats {
+    /// Junctions welded into their parent's surface.
+    pub welds: usize,
+    /// Stems that should have been welded (levels 1 and 2 on their parents, split clones up to
+    /// level 2) but sit on their parent as closed separate tubes instead.
+    pub weld_fallbacks: usize,
+    /// Of the welds, split clones joined to their original (a Y).
+    pub split_welds: usize,
+    /// Of the fallbacks, split clones.
+    pub split_fallbacks: usize,
 }
 
 /// Number of sides around a stem of base radius `r` (m) at the given quality.
@@ -37,10 +95,12 @@ pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
     base.max((4 * lobes).min(96)).clamp(3, 96)
 }
 
-/// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`. The last ring
-/// sits just short of the tip; the apex closes the stem at t = 1.
-fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
-    let start = out.len();
+/// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`, plus the rings
+/// its children's junctions ask for (`extra`); a welded stem starts at `start` (its junction
+/// ring) instead of 0. The last ring sits just short of the tip; the apex closes the stem at t = 1.
+/// Returns how many planned rings the junction ring replaced.
+fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Vec<f32>) -> usize {
+    let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
     let dir = |i: usize| (pts[i + 1] - pts[i]).normalize_or(Vec3::Y);
@@ -66,7 +126,8 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
             d = n;
         }
     }
-    let extra = stem.flare > 0.0 || stem.taper > 1.0;
+    out.extend_from_slice(extra);
+    let extra = stem.flare > 0.0 || stem.taper > 1.0 || !extra.is_empty();
     if stem.flare > 0.0 {
         // The flare lives in the lowest eighth and rises steeply: rings packed toward the ground.
         let m = ((6.0 * quality).ceil() as usize).max(2);
@@ -85,7 +146,7 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
             t += spacing;
         }
     }
-    let rings = &mut out[start..];
+    let rings = &mut out[first..];
     if extra {
         rings.sort_by(f32::total_cmp);
     }
@@ -96,10 +157,19 @@ fn plan_rings(stem: &Stem, quality: f32, out: &mut Vec<f32>) {
             n += 1;
         }
     }
-    out.truncate(start + n);
+    out.truncate(first + n);
+    let mut dropped = 0;
+    if start > 0.0 {
+        // Drop the rings the junction replaces; the junction ring is the first.
+        let keep = out[first..].partition_point(|&t| t <= start + 1e-4) + first;
+        out.drain(first..keep);
+        out.insert(first, start);
+        dropped = keep - first;
+    }
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
+    dropped
 }
 
 /// Unit circle table for `sides`: `(cos, sin, u)` per column, with the seam point repeated at
@@ -115,65 +185,260 @@ fn circle(sides: u32) -> Vec<(f32, f32, f32)> {
     t
 }
 
-/// Sweep all stems into bark tubes. Fails with a budget error before allocating if the exact
-/// vertex count would pass `max_vertices`.
+/// Sweep all stems into bark tubes. Fails with a budget error before allocating if the vertex
+/// count would pass `max_vertices`.
 pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError> {
-    build_blocks(skeleton, p).map(|(mesh, _)| mesh)
+    build_with_stats(skeleton, p).map(|b| b.mesh)
 }
 
-/// [`build`], also returning each stem's block of vertices (one index range per stem, in
-/// skeleton order), which [`super::holes::cut`] needs.
+/// [`build`] with each stem's block of vertices (skeleton order), which [`super::holes::cut`] needs.
 pub fn build_blocks(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh, Vec<Range<u32>>), SylvaError> {
+    build_with_stats(skeleton, p).map(|b| (b.mesh, b.blocks))
+}
+
+/// What [`build_with_stats`] returns.
+pub struct Built {
+    /// The bark mesh.
+    pub mesh: TreeMesh,
+    /// Welded junctions and fallbacks.
+    pub welds: WeldStats,
+    /// Each stem's contiguous block of vertices, in skeleton order.
+    pub blocks: Vec<Range<u32>>,
+}
+
+/// [`build`], also counting the welded junctions and the fallbacks, and returning the stems'
+/// vertex blocks. The deepest level's simple stems become Bezier twigs ([`twig`]) unless they are
+/// welded; stems that may get tree holes are swept densely enough for them ([`holes::densify`]).
+pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, SylvaError> {
     let q = p.mesh_quality;
-    let mut ts = Vec::with_capacity(skeleton.stems.len() * 8);
-    let twigs = twig::mask(skeleton, p);
-    let dense = holes::eligible(skeleton, p, &twigs);
-    let plans: Vec<StemPlan> = skeleton
-        .stems
+    let stems = &skeleton.stems;
+    let n = stems.len();
+    let twig_candidates = twig::mask(skeleton, p);
+    let dense = holes::eligible(skeleton, p, &twig_candidates);
+    let is_dense = |i: usize| dense.get(i) == Some(&true);
+    let sides: Vec<u32> = stems
         .iter()
         .enumerate()
         .map(|(i, s)| {
-            let start = ts.len();
-            if twigs[i] {
-                let sides = twig::plan(s, p, &mut ts);
-                return StemPlan { rings: start..ts.len(), sides };
+            let plain = sides_for(s.radius, q, if s.lobed { p.lobes } else { 0 });
+            if is_dense(i) {
+                holes::dense_sides(plain, p)
+            } else {
+                plain
             }
-            plan_rings(s, q, &mut ts);
-            let lobes = if s.lobed { p.lobes } else { 0 };
-            let mut sides = sides_for(s.radius, q, lobes);
-            if dense.get(i) == Some(&true) {
-                sides = holes::densify(s, sides, p, &mut ts, start);
-            }
-            StemPlan { rings: start..ts.len(), sides }
         })
         .collect();
-    let vertices: u64 = plans.iter().zip(&skeleton.stems).map(|(pl, s)| pl.vertices(s.parent.is_none())).sum();
+    let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
+    // Welding wins: a twig candidate with a junction is swept as a tube and welded.
+    let twigs: Vec<bool> = twig_candidates.iter().zip(&junctions).map(|(&t, j)| t && j.is_none()).collect();
+    // Rings each parent needs across its children's footprints, grouped by parent.
+    let mut inserts: Vec<(u32, f32)> = Vec::new();
+    for j in junctions.iter().flatten() {
+        for k in 0..=j.rows {
+            inserts.push((j.parent, j.t_lo + (j.t_hi - j.t_lo) * k as f32 / j.rows as f32));
+        }
+    }
+    inserts.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let inserted: Vec<f32> = inserts.iter().map(|x| x.1).collect();
+    let mut extra = Vec::with_capacity(n);
+    let mut at = 0;
+    for i in 0..n as u32 {
+        let from = at;
+        while at < inserts.len() && inserts[at].0 == i {
+            at += 1;
+        }
+        extra.push(from..at);
+    }
+    let mut ts = Vec::with_capacity(n * 8);
+    let mut plans: Vec<StemPlan> = Vec::with_capacity(n);
+    // Conservative vertex count: tubes, apexes, caps, the collar loops of every junction, and
+    // for each junction the rings a fallback to a buried tube would add back.
+    let mut vertices = 0u64;
+    let mut indices = 0u64;
+    let mut bridges_len = 0u64;
+    let parent_of = |i: usize| stems[i].parent.map_or(0, |p| p as usize);
+    let loops = weld::collar_loops(q);
+    for (i, s) in stems.iter().enumerate() {
+        let start = ts.len();
+        if twigs[i] {
+            let sides = twig::plan(s, p, &mut ts);
+            let rings = (ts.len() - start) as u64;
+            // Rings, the apex and the cap centre; quads and two fans.
+            vertices += rings * (u64::from(sides) + 1) + 2;
+            indices += (rings + 1) * u64::from(sides) * 6;
+            plans.push(StemPlan { rings: start..ts.len(), sides });
+            continue;
+        }
+        let t0 = junctions[i].map_or(0.0, |j| j.t_start);
+        let dropped = plan_rings(s, q, &inserted[extra[i].clone()], t0, &mut ts);
+        if is_dense(i) {
+            holes::densify(s, sides[i], p, &mut ts, start);
+        }
+        let plan = StemPlan { rings: start..ts.len(), sides: sides[i] };
+        let ring = u64::from(plan.sides) + 1;
+        vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
+        // Quads, tip fan and base fan; a junction's zip and collar quads.
+        indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
+        if junctions[i].is_some() {
+            // Either the collar loops, or a fallback sweeping the dropped rings again (the
+            // junction ring itself stays one of them).
+            vertices += (dropped.saturating_sub(1).max(loops)) as u64 * ring;
+            bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
+                + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
+                * 3;
+        }
+        plans.push(plan);
+    }
     if vertices > u64::from(p.max_vertices) {
         return Err(budget_error("", vertices, p.max_vertices));
     }
-    let indices: u64 = plans.iter().map(|pl| pl.rings.len() as u64 * u64::from(pl.sides) * 6).sum();
-    let mut out = MeshBuilder::with_wind(vertices as usize, indices as usize);
+    let mut out = MeshBuilder::with_wind(vertices as usize, (indices + bridges_len) as usize);
     out.begin_group(Material::Bark);
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
     let winds = stem_winds(skeleton, p.seed);
-    let mut blocks = Vec::with_capacity(plans.len());
-    for (i, ((stem, plan), wind)) in skeleton.stems.iter().zip(&plans).zip(&winds).enumerate() {
+    let mut frames: Vec<Frame> = vec![Frame::default(); ts.len()];
+    let mut meshes: Vec<StemMesh> = Vec::with_capacity(n);
+    let mut claimed: Vec<bool> = Vec::with_capacity(indices as usize / 6);
+    let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
+    let mut scratch = weld::Scratch::default();
+    let mut stats = WeldStats::default();
+    let is_clone = |i: usize| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level);
+    let mut blocks: Vec<Range<u32>> = Vec::with_capacity(n);
+    for (i, stem) in stems.iter().enumerate() {
+        let plan = &mut plans[i];
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
-        let first = out.next_index();
+        let block_start = out.next_index();
         if twigs[i] {
-            twig::sweep(stem, &ts[plan.rings.clone()], table, wind, &mut out);
-            blocks.push(first..out.next_index());
+            let mut m = twig::sweep(stem, &ts[plan.rings.clone()], plan.rings.start, table, &winds[i], &mut out);
+            m.claim = claimed.len();
+            claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
+            meshes.push(m);
+            blocks.push(block_start..out.next_index());
             continue;
         }
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
         let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
-        match profile {
-            Some(tp) => sweep_trunk(stem, &ts[plan.rings.clone()], table, &tp, wind, &mut out),
-            None => sweep(stem, &ts[plan.rings.clone()], table, lobes, wind, &mut out),
+        let wind = &winds[i];
+        let sweep_plan = |ts: &[f32], rings: std::ops::Range<usize>, frames: &mut [Frame], out: &mut MeshBuilder| {
+            let (ts, frames) = (&ts[rings.clone()], &mut frames[rings.clone()]);
+            let mut m = match &profile {
+                Some(tp) => sweep_trunk(stem, ts, table, tp, wind, frames, out),
+                None => sweep(stem, ts, table, lobes, wind, frames, out),
+            };
+            m.ring0 = rings.start;
+            m
+        };
+        let mut m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
+        if let Some(j) = &junctions[i] {
+            let parent = &meshes[j.parent as usize];
+            let ok = weld::join(
+                &weld::Join {
+                    junction: j,
+                    parent,
+                    parent_stem: &stems[j.parent as usize],
+                    child: &m,
+                    child_stem: stem,
+                    ts: &ts,
+                    frames: &frames,
+                    wind,
+                    loops,
+                },
+                &mut claimed,
+                &mut out,
+                &mut bridges,
+                &mut scratch,
+            );
+            if ok {
+                m.base = Base::Welded;
+                stats.welds += 1;
+                stats.split_welds += usize::from(is_clone(i));
+            } else {
+                // Fall back to a closed tube from the parent's axis, as if never welded.
+                out.truncate_vertices(m.first);
+                let start = ts.len();
+                plan_rings(stem, q, &inserted[extra[i].clone()], 0.0, &mut ts);
+                if is_dense(i) {
+                    holes::densify(stem, sides[i], p, &mut ts, start);
+                }
+                frames.resize(ts.len(), Frame::default());
+                plan.rings = start..ts.len();
+                m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
+                stats.weld_fallbacks += 1;
+                stats.split_fallbacks += usize::from(is_clone(i));
+            }
+        } else if weld::is_candidate(stems, i) && p.weld {
+            stats.weld_fallbacks += 1;
+            stats.split_fallbacks += usize::from(is_clone(i));
         }
-        blocks.push(first..out.next_index());
+        if m.base == PENDING_CAP {
+            // A separate tube: close its base with a shallow cone to a centre vertex a quarter
+            // radius inside (so clones leaving one split point never share their cap centres).
+            let f = frames[m.ring0];
+            let r0 = stem.radius_at(ts[m.ring0]).max(0.05 * stem.radius);
+            let record = wind.record(stem, ts[m.ring0], r0);
+            let centre = f.centre - f.tangent * (0.25 * r0);
+            m.base = Base::Cap(out.vertex_with_wind(centre.to_array(), (-f.tangent).to_array(), [0.5, m.v0], &record));
+        }
+        m.claim = claimed.len();
+        claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
+        meshes.push(m);
+        blocks.push(block_start..out.next_index());
     }
-    Ok((out.finish(), blocks))
+    for m in &meshes {
+        emit(m, &claimed, &mut out);
+    }
+    out.extend_indices(&bridges);
+    Ok(Built { mesh: out.finish(), welds: stats, blocks })
+}
+
+/// The base of a swept branch before its cap's centre vertex exists.
+const PENDING_CAP: Base = Base::Cap(u32::MAX);
+
+/// Bound on the rows of a junction's hole, for the index capacity estimate.
+const MAX_ROWS_BOUND: u64 = 8;
+
+/// Indices of one swept stem: quads between rings (except those a child's junction claimed),
+/// the tip fan, and the base cap.
+fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
+    let s = m.sides;
+    let st = s + 1;
+    let rows = m.rings as usize - 1;
+    let claims = &claimed[m.claim..m.claim + rows * s as usize];
+    let free = claims.iter().filter(|&&c| !c).count();
+    let fans = s as usize * if matches!(m.base, Base::Welded) { 1 } else { 2 };
+    let idx = out.alloc_indices(free * 6 + fans * 3);
+    let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
+    let mut q = quad_idx.chunks_exact_mut(6);
+    for (i, row_claims) in claims.chunks_exact(s as usize).enumerate() {
+        let row = m.first + i as u32 * st;
+        for (j, &c) in row_claims.iter().enumerate() {
+            if c {
+                continue;
+            }
+            let (a, b) = (row + j as u32, row + j as u32 + 1);
+            let (c, d) = (b + st, a + st);
+            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
+        }
+    }
+    let mut f = fan_idx.chunks_exact_mut(3);
+    let row = m.first + (m.rings - 1) * st;
+    for j in 0..s {
+        f.next().expect("sized above").copy_from_slice(&[row + j, row + j + 1, m.apex]);
+    }
+    match m.base {
+        Base::Trunk(cap) => {
+            let centre = cap + st;
+            for j in 0..s {
+                f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
+            }
+        }
+        Base::Cap(centre) => {
+            for j in 0..s {
+                f.next().expect("sized above").copy_from_slice(&[m.first + j + 1, m.first + j, centre]);
+            }
+        }
+        Base::Welded => {}
+    }
 }
 
 /// Per-stem constants of the wind attributes ([`TreeMesh::wind`]).
@@ -228,16 +493,17 @@ fn sweep(
     circle: &[(f32, f32, f32)],
     lobes: Option<(u32, f32)>,
     wind: &StemWind,
+    frames: &mut [Frame],
     out: &mut MeshBuilder,
-) {
+) -> StemMesh {
     match lobes {
         Some((n, depth)) => {
             let sides = circle.len() - 1;
             let lobe: Vec<f32> =
                 (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
-            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, out)
+            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, frames, out)
         }
-        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, out),
+        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, frames, out),
     }
 }
 
@@ -249,8 +515,9 @@ fn sweep_with(
     circle: &[(f32, f32, f32)],
     factor: &dyn Fn(usize, usize) -> f32,
     wind: &StemWind,
+    frames: &mut [Frame],
     out: &mut MeshBuilder,
-) {
+) -> StemMesh {
     let sides = circle.len() - 1;
     let stride = sides + 1;
     let rings = ts.len();
@@ -263,7 +530,9 @@ fn sweep_with(
     let mut seg = (0, stem.segment(0));
     let (_, t0) = seg.1.eval(0.0);
     let mut normal = unit_or(stem.base_normal - t0 * stem.base_normal.dot(t0), || t0.any_orthonormal_vector());
-    let mut v = 0.0f32;
+    // A welded stem starts at its junction ring: v starts where the full stem would have it.
+    let v0 = ts[0] * stem.length / (TAU * stem.radius.max(1e-6));
+    let mut v = v0;
     let mut prev: Option<(f32, f32)> = None; // (t, radius) of the previous ring
     let mut last_center = Vec3::ZERO;
     let mut last_radius = stem.radius;
@@ -275,6 +544,7 @@ fn sweep_with(
         let (c, tan) = seg.1.eval(u);
         normal = unit_or(normal - tan * normal.dot(tan), || tan.any_orthonormal_vector());
         let binormal = tan.cross(normal);
+        frames[r] = Frame { centre: c, tangent: tan, normal };
         // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
         let radius = stem.radius_at(t).max(0.05 * stem.radius);
         let slope = stem.radius_slope(t);
@@ -367,33 +637,15 @@ fn sweep_with(
             w.copy_from_slice(&record);
         }
     }
-    // Indices: quads between rings, the tip fan, and the trunk's bottom fan.
-    let s = sides as u32;
-    let st = stride as u32;
-    let quads = (rings - 1) * sides * 6;
-    let fans = sides * 3 * if trunk { 2 } else { 1 };
-    let idx = out.alloc_indices(quads + fans);
-    let (quad_idx, fan_idx) = idx.split_at_mut(quads);
-    let mut q = quad_idx.chunks_exact_mut(6);
-    for i in 0..rings as u32 - 1 {
-        let row = first + i * st;
-        for j in 0..s {
-            let (a, b) = (row + j, row + j + 1);
-            let (c, d) = (b + st, a + st);
-            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
-        }
-    }
-    let mut f = fan_idx.chunks_exact_mut(3);
-    let row = first + (rings as u32 - 1) * st;
-    for j in 0..s {
-        f.next().expect("sized above").copy_from_slice(&[row + j, row + j + 1, apex]);
-    }
-    if trunk {
-        let cap = apex + 1;
-        let centre = cap + st;
-        for j in 0..s {
-            f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
-        }
+    StemMesh {
+        first,
+        rings: rings as u32,
+        sides: sides as u32,
+        ring0: 0,
+        apex,
+        base: if trunk { Base::Trunk(apex + 1) } else { PENDING_CAP },
+        claim: 0,
+        v0,
     }
 }
 
@@ -452,8 +704,9 @@ fn sweep_trunk(
     circle: &[(f32, f32, f32)],
     tp: &TrunkProfile,
     wind: &StemWind,
+    frames: &mut [Frame],
     out: &mut MeshBuilder,
-) {
+) -> StemMesh {
     let sides = circle.len() - 1;
     let dirs: Vec<(f32, f32)> = circle.iter().map(|&(c, s, _)| (c, s)).collect();
     let mut jitter = Vec::new();
@@ -475,5 +728,5 @@ fn sweep_trunk(
         }
         rings.push(rho.clone());
     }
-    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, out);
+    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, frames, out)
 }

@@ -24,7 +24,7 @@
 //! the tip at an apex, exactly as the tube does, so the only open edges stay the buried base ring.
 
 use super::tube::sides_for;
-use super::tube::StemWind;
+use super::tube::{Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
 use crate::growth::GrowthMode;
 use crate::math::{acos, cos, rad, sin, unit_or, TAU};
@@ -172,8 +172,16 @@ fn turn(v: Vec3, axis: Vec3, angle: f32) -> Vec3 {
     v * c + axis.cross(v) * s + axis * (axis.dot(v) * (1.0 - c))
 }
 
-/// Mesh one twig: `us` from [`plan`], `circle` the tube's circle table for its sides.
-pub(crate) fn sweep(stem: &Stem, us: &[f32], circle: &[(f32, f32, f32)], wind: &StemWind, out: &mut MeshBuilder) {
+/// Mesh one twig's vertices: `us` from [`plan`] (at `ring0` in the shared ring buffer), `circle`
+/// the tube's circle table for its sides; its base is capped. Returns it for the index emitter.
+pub(crate) fn sweep(
+    stem: &Stem,
+    us: &[f32],
+    ring0: usize,
+    circle: &[(f32, f32, f32)],
+    wind: &StemWind,
+    out: &mut MeshBuilder,
+) -> StemMesh {
     let span = Span::fit(stem);
     let (d0, d1, theta) = span.legs();
     let n0 = unit_or(stem.base_normal - d0 * stem.base_normal.dot(d0), || d0.any_orthonormal_vector());
@@ -255,24 +263,13 @@ pub(crate) fn sweep(stem: &Stem, us: &[f32], circle: &[(f32, f32, f32)], wind: &
         wnd[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, last_rho));
     }
     let apex = first + apex_slot as u32;
-    let s = sides as u32;
-    let st = stride as u32;
-    let quads = (rings - 1) * sides * 6;
-    let idx = out.alloc_indices(quads + sides * 3);
-    let (quad_idx, fan_idx) = idx.split_at_mut(quads);
-    let mut q = quad_idx.chunks_exact_mut(6);
-    for i in 0..rings as u32 - 1 {
-        let row = first + i * st;
-        for j in 0..s {
-            let (a, b) = (row + j, row + j + 1);
-            let (c, d) = (b + st, a + st);
-            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
-        }
-    }
-    let row = first + (rings as u32 - 1) * st;
-    for (j, f) in (0..s).zip(fan_idx.chunks_exact_mut(3)) {
-        f.copy_from_slice(&[row + j, row + j + 1, apex]);
-    }
+    // A twig sits on its parent as a separate tube: its base is closed by a shallow cone to a
+    // centre a quarter radius inside (like the tube's capped bases), so the twig is closed.
+    let r0 = span.r[0];
+    let centre = span.p[0] - d0 * (0.25 * r0);
+    let cap = out.vertex_with_wind(centre.to_array(), (-d0).to_array(), [0.5, 0.0], &wind.record(stem, 0.0, r0));
+    // Indices come later from the tube's emitter, like every swept stem.
+    StemMesh { first, rings: rings as u32, sides: sides as u32, ring0, apex, base: Base::Cap(cap), claim: 0, v0: 0.0 }
 }
 
 #[cfg(test)]
