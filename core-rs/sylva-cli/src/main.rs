@@ -197,6 +197,21 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["non_manifold_edges"] = t.non_manifold_edges.into();
         out["boundary_edges"] = t.boundary_edges.into();
         out["holes"] = g.stats.holes.into();
+        out["hole_list"] = g
+            .holes
+            .iter()
+            .map(|h| {
+                serde_json::json!({
+                    "stem": h.stem,
+                    "source": h.source,
+                    "centre": h.centre.to_array(),
+                    "normal": h.normal.to_array(),
+                    "radius": h.radius,
+                    "depth": h.depth,
+                })
+            })
+            .collect::<Vec<_>>()
+            .into();
         out["welds"] = g.stats.welds.welds.into();
         out["weld_fallbacks"] = g.stats.welds.weld_fallbacks.into();
         out["split_welds"] = g.stats.welds.split_welds.into();

@@ -155,6 +155,19 @@ fn report_mesh_counts_open_and_non_manifold_edges() {
         (v["welds"].as_u64(), v["weld_fallbacks"].as_u64(), v["boundary_edges"].as_u64()),
         (Some(0), Some(0), Some(0))
     );
+    // Holes: counted, listed (where, which method, how big), and the surface stays closed.
+    let (code, out, err) = sylva(&["generate", "--preset", "oak", "--set", "hole_count=3", "--report", "mesh"]);
+    assert_eq!(code, 0, "{err}");
+    let v = json(&out);
+    let list = v["hole_list"].as_array().unwrap();
+    assert_eq!(v["holes"].as_u64().unwrap(), list.len() as u64);
+    assert!(!list.is_empty());
+    for h in list {
+        assert!(["surface", "junction", "root"].contains(&h["source"].as_str().unwrap()), "{h}");
+        assert!(h["radius"].as_f64().unwrap() > 0.0 && h["depth"].as_f64().unwrap() > 0.0, "{h}");
+        assert_eq!(h["centre"].as_array().unwrap().len(), 3);
+    }
+    assert_eq!((v["boundary_edges"].as_u64(), v["non_manifold_edges"].as_u64()), (Some(0), Some(0)));
     let (code, _, err) = sylva(&["generate", "--report", "everything"]);
     assert_eq!(code, 2);
     assert!(err.contains("--report takes 'skeleton' or 'mesh'"), "{err}");

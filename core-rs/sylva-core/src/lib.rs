@@ -82,6 +82,8 @@ pub struct Generated {
     pub markers: Vec<glam::Vec3>,
     /// The leaves: one leaf mesh plus per-instance matrices and colours ([`foliage`]).
     pub foliage: foliage::Foliage,
+    /// The tree holes cut into the bark (where, how big, found by which method).
+    pub holes: Vec<mesh::holes::Hole>,
 }
 
 impl Generated {
@@ -145,7 +147,8 @@ pub fn generate_with_progress(
     let t1 = clock.now_ms();
     let built = mesh::tube::build_with_stats(&skeleton, params)?;
     let (mut mesh, welds) = (built.mesh, built.welds);
-    let holes = mesh::holes::cut(&mut mesh, &built.blocks, &skeleton, params).len();
+    let cut = mesh::holes::cut(&mut mesh, &built.blocks, &skeleton, params);
+    let holes = cut.len();
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
     let t_leaves = clock.now_ms();
@@ -162,5 +165,5 @@ pub fn generate_with_progress(
         total_ms: t3 - t0,
     };
     let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
-    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers, foliage })
+    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers, foliage, holes: cut })
 }

@@ -70,7 +70,19 @@ export function App() {
   const growth = useGrowthEditor(viewerRef, params, growthVolumesRef, volumesInUrl.volumes, regrow);
 
   useEffect(
-    () => installDebugHook({ geometries: () => viewerRef.current?.gpuGeometries ?? null }),
+    () =>
+      installDebugHook({
+        geometries: () => viewerRef.current?.gpuGeometries ?? null,
+        view: (from, to) => {
+          const host = viewerRef.current?.overlayHost();
+          if (!host) return;
+          host.orbit.minDistance = Math.min(host.orbit.minDistance, 0.05);
+          host.camera.position.set(...from);
+          host.orbit.target.set(...to);
+          host.orbit.update();
+          host.requestRender();
+        },
+      }),
     [],
   );
 
