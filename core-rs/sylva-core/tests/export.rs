@@ -49,7 +49,7 @@ fn parse(bytes: &[u8]) -> Glb {
 
 fn component_size(ct: u64) -> usize {
     match ct {
-        5121 => 1,
+        5120 | 5121 => 1,
         5123 => 2,
         5125 | 5126 => 4,
         other => panic!("component type {other}"),
@@ -85,6 +85,20 @@ impl Glb {
                     .map(|k| f32::from_le_bytes(self.bin[base + e * stride + 4 * k..][..4].try_into().unwrap()))
                     .collect()
             })
+            .collect()
+    }
+
+    /// The values of a normalised `i8` accessor (KHR_mesh_quantization), dequantised as glTF
+    /// says (`max(c / 127, -1)`), element by element.
+    fn snorm8(&self, i: u64) -> Vec<Vec<f32>> {
+        let a = self.accessor(i);
+        assert_eq!((a["componentType"].as_u64(), a["normalized"].as_bool()), (Some(5120), Some(true)));
+        let v = &self.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+        let n = components(a["type"].as_str().unwrap());
+        let stride = v["byteStride"].as_u64().map_or(n, |s| s as usize);
+        let base = v["byteOffset"].as_u64().unwrap() as usize + a["byteOffset"].as_u64().unwrap_or(0) as usize;
+        (0..a["count"].as_u64().unwrap() as usize)
+            .map(|e| (0..n).map(|k| (f32::from(self.bin[base + e * stride + k] as i8) / 127.0).max(-1.0)).collect())
             .collect()
     }
 
@@ -159,13 +173,20 @@ fn glb_container_layout_and_counts() {
     for key in ["NORMAL", "TEXCOORD_0", "TANGENT", "COLOR_0"] {
         assert_eq!(glb.accessor(attrs[key].as_u64().unwrap())["count"], g.mesh.vertex_count(), "{key}");
     }
-    // Tangents: unit, perpendicular to the normals, w = ±1.
-    let (t, n) = (glb.floats(attrs["TANGENT"].as_u64().unwrap()), glb.floats(attrs["NORMAL"].as_u64().unwrap()));
-    for (t, n) in t.iter().zip(&n).step_by(97) {
-        let len = (t[0] * t[0] + t[1] * t[1] + t[2] * t[2]).sqrt();
-        assert!(
-            (len - 1.0).abs() < 1e-4 && (t[0] * n[0] + t[1] * n[1] + t[2] * n[2]).abs() < 1e-3 && t[3].abs() == 1.0
-        );
+    // Normals and tangents: normalised i8 (KHR_mesh_quantization, required), interleaved in one
+    // view (normal + 1 byte of padding, tangent); unit within the validator's tolerance, close to
+    // the mesh's normals, tangents perpendicular to them, w = ±1.
+    let (ta, na) = (glb.accessor(attrs["TANGENT"].as_u64().unwrap()), glb.accessor(attrs["NORMAL"].as_u64().unwrap()));
+    assert_eq!(ta["bufferView"], na["bufferView"]);
+    assert_eq!((na["byteOffset"].as_u64().unwrap_or(0), ta["byteOffset"].as_u64()), (0, Some(4)));
+    assert_eq!(j["bufferViews"][na["bufferView"].as_u64().unwrap() as usize]["byteStride"], 8);
+    let (t, n) = (glb.snorm8(attrs["TANGENT"].as_u64().unwrap()), glb.snorm8(attrs["NORMAL"].as_u64().unwrap()));
+    let len = |v: &[f32]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    for (k, (t, n)) in t.iter().zip(&n).enumerate() {
+        assert!((len(n) - 1.0).abs() <= 0.00674 && (len(t) - 1.0).abs() <= 0.00674, "{k}: {n:?} {t:?}");
+        assert!((t[0] * n[0] + t[1] * n[1] + t[2] * n[2]).abs() < 0.03 && t[3].abs() == 1.0, "{k}: {n:?} {t:?}");
+        let m = &g.mesh.normals[3 * k..3 * k + 3];
+        assert!((0..3).all(|i| (n[i] - m[i]).abs() <= 1.0 / 127.0), "{k}: {n:?} vs {m:?}");
     }
     // Leaves, instanced: one TRS + colour per leaf, unit quaternions.
     let leaves = glb.node("leaves").unwrap();
@@ -178,8 +199,8 @@ fn glb_container_layout_and_counts() {
     }
     let t = glb.floats(inst["TRANSLATION"].as_u64().unwrap());
     assert_eq!(t[3], g.foliage.matrices[3 * 16 + 12..3 * 16 + 15].to_vec());
-    assert_eq!(j["extensionsUsed"], serde_json::json!(["EXT_mesh_gpu_instancing"]));
-    assert!(j.get("extensionsRequired").is_none());
+    assert_eq!(j["extensionsUsed"], serde_json::json!(["EXT_mesh_gpu_instancing", "KHR_mesh_quantization"]));
+    assert_eq!(j["extensionsRequired"], serde_json::json!(["KHR_mesh_quantization"]));
     // Materials and embedded PNG images.
     let mats = j["materials"].as_array().unwrap();
     assert_eq!(mats[0]["name"], "bark");
@@ -218,7 +239,7 @@ fn glb_leaf_modes_and_options() {
     assert_eq!(baked.accessor(attrs["POSITION"].as_u64().unwrap())["count"], nv);
     assert_eq!(baked.accessor(attrs["COLOR_0"].as_u64().unwrap())["normalized"], true);
     assert_eq!(baked.index_count(leaves), (g.foliage.mesh.indices.len() * g.foliage.count()) as u64);
-    assert!(baked.json.get("extensionsUsed").is_none());
+    assert_eq!(baked.json["extensionsUsed"], serde_json::json!(["KHR_mesh_quantization"]));
     // Baked positions are the instance matrices applied to the leaf mesh.
     let p = baked.floats(attrs["POSITION"].as_u64().unwrap());
     let m = glam::Mat4::from_cols_slice(&g.foliage.matrices[16..32]);
@@ -236,6 +257,10 @@ fn glb_leaf_modes_and_options() {
     assert!(plain.json.get("images").is_none() && plain.json.get("samplers").is_none());
     let attrs = &plain.mesh_of("bark")["primitives"][0]["attributes"];
     assert!(attrs.get("TANGENT").is_none() && attrs.get("COLOR_0").is_none());
+    // Without tangents the normals have a view of their own, 4 bytes per vertex.
+    let normals = plain.accessor(attrs["NORMAL"].as_u64().unwrap());
+    assert_eq!(plain.json["bufferViews"][normals["bufferView"].as_u64().unwrap() as usize]["byteStride"], 4);
+    assert_eq!(plain.snorm8(attrs["NORMAL"].as_u64().unwrap()).len(), g.mesh.vertex_count());
     assert!(plain.json["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"].is_array());
 }
 
@@ -276,7 +301,7 @@ fn bare_tree_exports_without_leaves() {
     let glb = parse(&export::to_glb(&g, &ExportOptions::default()));
     glb.check_layout();
     assert!(glb.node("leaves").is_none());
-    assert!(glb.json.get("extensionsUsed").is_none());
+    assert_eq!(glb.json["extensionsUsed"], serde_json::json!(["KHR_mesh_quantization"]));
     assert_eq!(glb.json["images"].as_array().unwrap().len(), 2);
 }
 

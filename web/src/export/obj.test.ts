@@ -142,6 +142,11 @@ describe('GLB export', () => {
       expect((leaves as InstancedMesh).instanceColor).not.toBeNull();
       const bark = meshes.find((m) => m.name === 'bark') as Mesh<BufferGeometry>;
       expect(bark.geometry.getAttribute('color')).toBeDefined();
+      // KHR_mesh_quantization: normals arrive as normalised bytes, read back as unit vectors.
+      const normal = bark.geometry.getAttribute('normal');
+      expect(normal.array).toBeInstanceOf(Int8Array);
+      expect(normal.normalized).toBe(true);
+      expect(Math.hypot(normal.getX(7), normal.getY(7), normal.getZ(7))).toBeCloseTo(1, 2);
       expect((bark.geometry.index?.count ?? 0) / 3).toBe(meta.triangles);
     } finally {
       tree.free();

@@ -4,15 +4,24 @@
 //! **File layout**: 12-byte header (`glTF`, version 2, total length), a JSON chunk padded with
 //! spaces to 4 bytes, a BIN chunk padded with zeros to 4 bytes. One buffer (the BIN chunk);
 //! every buffer view starts on a 4-byte boundary and holds one tightly packed array, except the
-//! wind view (below). Vertex views have `target` 34962 (ARRAY_BUFFER), index views 34963
+//! normal view (`byteStride` 4: three bytes and one of padding) and the wind view (below). Vertex views have `target` 34962 (ARRAY_BUFFER), index views 34963
 //! (ELEMENT_ARRAY_BUFFER); image and instancing views have none.
 //!
 //! **Scene**: node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
 //!
 //! * **Bark** mesh: one primitive per material group of [`TreeMesh`], sharing the attributes
-//!   `POSITION` (with min/max), `NORMAL`, `TEXCOORD_0`, `TANGENT` (with normal maps),
-//!   `COLOR_0` (RGBA8 normalised, see [`super::bark_colors`]) and the wind attributes;
-//!   indices are `u16` when there are at most 65,535 vertices, `u32` otherwise.
+//!   `POSITION` (float, with min/max), `NORMAL`, `TEXCOORD_0` (float: bark UVs run past 1),
+//!   `TANGENT` (with normal maps), `COLOR_0` (RGBA8 normalised, see [`super::bark_colors`]) and
+//!   the wind attributes; indices are `u16` when there are at most 65,535 vertices, `u32`
+//!   otherwise.
+//! * **Quantisation** (`KHR_mesh_quantization`, in `extensionsUsed` and `extensionsRequired`
+//!   whenever there is a mesh): `NORMAL` is a normalised `i8` `VEC3` (padded to 4 bytes) and
+//!   `TANGENT` a normalised `i8` `VEC4` (`w` = ±127), in every mesh. Each vector is rounded to
+//!   nearest and, where that leaves it off unit length by more than the glTF validator allows
+//!   for quantised data (0.00674), replaced by the floor/ceiling combination closest to unit
+//!   length. This saves 20 of the 28 bytes per vertex the float normal and tangent took, the
+//!   bytes a big export spends most of its time writing. The bark's tangents are computed
+//!   straight into the output ([`super::frames_snorm8_append`]).
 //! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 floats per vertex stay
 //!   interleaved in one view with `byteStride` 32, read by two `VEC4` float accessors:
 //!   `_WIND_PIVOT` = `pivot_x, pivot_y, pivot_z` (m, the base of the vertex's stem), `level`
@@ -37,15 +46,21 @@
 //! `asset.generator` is `"Sylva <version>"`; `scene.extras.sylva_hash` is the tree's content
 //! hash. The JSON is built with `serde_json` maps (sorted keys), floats are written from `f64`
 //! so an `f32` min/max reads back exactly: equal trees give equal bytes.
+//!
+//! **Writing**: one pass per view, appended in order into a buffer reserved at its final size,
+//! through a small stack block (no zero fill of the big arrays, no temporary arrays; only the
+//! tangent accumulator and the bark tint are zeroed first); [`write_into`] reuses the caller's
+//! allocation.
 
 use super::{ExportOptions, LeafMode, TexturePngs};
-use crate::mesh::{Material, TreeMesh, WIND_STRIDE};
+use crate::mesh::{Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
 use serde_json::{json, Map, Value};
 use std::sync::Arc;
 
 const ARRAY_BUFFER: u32 = 34962;
 const ELEMENT_ARRAY_BUFFER: u32 = 34963;
+const BYTE: u32 = 5120;
 const UNSIGNED_BYTE: u32 = 5121;
 const UNSIGNED_SHORT: u32 = 5123;
 const UNSIGNED_INT: u32 = 5125;
@@ -73,10 +88,16 @@ enum Data<'a> {
     /// `u32` values written as `u16` (all known to fit).
     U16(&'a [u32]),
     Bytes(&'a [u8]),
-    /// Tangents of a mesh, computed into the output ([`super::tangents_into`]).
-    Tangents(&'a TreeMesh),
+    /// Unit vectors (3 floats each) as normalised `i8` `VEC3` padded to 4 bytes ([`snorm8_unit`]).
+    Snorm3(&'a [f32]),
+    /// Normals and tangents of a mesh interleaved, 8 bytes per vertex: the normal as in
+    /// [`Data::Snorm3`], then the tangent (computed into the output,
+    /// [`super::frames_snorm8_append`]) as a normalised `i8` `VEC4`.
+    Frames(&'a TreeMesh),
+    /// [`Data::Frames`] from given normals (3 floats each) and tangents (4 floats, `w` = ±1).
+    FramesOf(&'a [f32], &'a [f32]),
     /// Bark tint of a mesh, computed into the output ([`super::bark_colors_into`]).
-    BarkColors(&'a TreeMesh),
+    BarkColors(&'a TreeMesh, Bounds),
     /// Instance matrices (16 floats each) decomposed ([`super::decompose`]) into the output:
     /// translation (`VEC3`), rotation (`VEC4`) or scale (`VEC3`).
     Trs(&'a [f32], Part),
@@ -90,6 +111,97 @@ enum Part {
     Scale,
 }
 
+/// Bytes of the stack block the writers fill before appending it to the output.
+const BLOCK: usize = 4096;
+
+/// Appends `f(item)`, `W` bytes per item of `E` values of `src`, to `out` through a stack block:
+/// `out` only ever grows by copies of written bytes (no zero fill, one pass over the data).
+#[inline(always)]
+fn emit<T: Copy, const E: usize, const W: usize>(out: &mut Vec<u8>, src: &[T], f: impl Fn(&[T; E]) -> [u8; W]) {
+    let per = BLOCK / W;
+    let mut block = [0u8; BLOCK];
+    for c in src.chunks(per * E) {
+        let k = c.len() / E;
+        for (d, x) in block[..k * W].chunks_exact_mut(W).zip(c.chunks_exact(E)) {
+            let x: &[T; E] = x.try_into().expect("E values");
+            d.copy_from_slice(&f(x));
+        }
+        out.extend_from_slice(&block[..k * W]);
+    }
+}
+
+/// `N` floats as little-endian bytes (`B` = 4 `N`).
+#[inline(always)]
+fn le<const N: usize, const B: usize>(v: [f32; N]) -> [u8; B] {
+    let mut o = [0u8; B];
+    for (d, x) in o.chunks_exact_mut(4).zip(v) {
+        d.copy_from_slice(&x.to_le_bytes());
+    }
+    o
+}
+
+/// `x` in -1..1 as a normalised `i8` (glTF: `x = max(c / 127, -1)`), rounded to nearest (ties
+/// to even) by the float addition of 1.5 · 2²³, which leaves the integer in the low mantissa
+/// bits: exact IEEE arithmetic, the same on every target, and cheaper than a conversion.
+#[inline(always)]
+fn snorm8(x: f32) -> i8 {
+    const MAGIC: f32 = 12_582_912.0; // 1.5 · 2^23
+    let r = x.clamp(-1.0, 1.0) * 127.0 + MAGIC;
+    (r.to_bits() as i32 - MAGIC.to_bits() as i32) as i8
+}
+
+/// A vertex's normal and tangent (unit vectors, `w` = ±1) as the 8 bytes of [`Data::Frames`].
+#[inline(always)]
+pub(super) fn frame_bytes(n: [f32; 3], t: [f32; 3], w: f32) -> [u8; 8] {
+    let (n, t) = (snorm8_unit(n), snorm8_unit(t));
+    [n[0] as u8, n[1] as u8, n[2] as u8, 0, t[0] as u8, t[1] as u8, t[2] as u8, if w < 0.0 { 0x81 } else { 0x7f }]
+}
+
+/// 127², the squared length of a unit vector in normalised `i8`.
+const UNIT2: i32 = 127 * 127;
+
+/// A unit vector as three normalised `i8`, unit within the glTF validator's tolerance for
+/// quantised vectors (|length − 1| ≤ 0.00674): each component rounded to nearest, and when that
+/// misses (rare: rounding can be off by up to 0.0068), [`snorm8_unit_closest`].
+#[inline(always)]
+pub(super) fn snorm8_unit(v: [f32; 3]) -> [i8; 3] {
+    let q = [snorm8(v[0]), snorm8(v[1]), snorm8(v[2])];
+    let (x, y, z) = (i32::from(q[0]), i32::from(q[1]), i32::from(q[2]));
+    // Length 126.2..127.8, inside the validator's 126.14..127.86.
+    if (15_926..=16_333).contains(&(x * x + y * y + z * z)) {
+        q
+    } else {
+        snorm8_unit_closest(v)
+    }
+}
+
+/// The floor/ceiling combination of `127 v` whose length is closest to 127 (first in
+/// `x`-fastest order on ties). Within 0.5 of 127 for any unit `v`.
+#[cold]
+#[inline(never)]
+fn snorm8_unit_closest(v: [f32; 3]) -> [i8; 3] {
+    let len2 = |q: [i32; 3]| q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+    let lo = v.map(|x| {
+        let x = x.clamp(-1.0, 1.0) * 127.0;
+        let t = x as i32; // toward zero
+        if (t as f32) > x {
+            t - 1
+        } else {
+            t
+        }
+    });
+    let mut best = lo;
+    let mut err = i32::MAX;
+    for k in 0..8 {
+        let c = [lo[0] + (k & 1), lo[1] + ((k >> 1) & 1), lo[2] + ((k >> 2) & 1)].map(|x| x.clamp(-127, 127));
+        let e = (len2(c) - UNIT2).abs();
+        if e < err {
+            (best, err) = (c, e);
+        }
+    }
+    best.map(|x| x as i8)
+}
+
 impl Data<'_> {
     fn byte_len(&self) -> usize {
         match self {
@@ -97,59 +209,59 @@ impl Data<'_> {
             Data::U32(s) => s.len() * 4,
             Data::U16(s) => s.len() * 2,
             Data::Bytes(s) => s.len(),
-            Data::Tangents(m) => m.vertex_count() * 16,
-            Data::BarkColors(m) => m.vertex_count() * 4,
+            Data::Snorm3(s) => s.len() / 3 * 4,
+            Data::Frames(m) => m.vertex_count() * 8,
+            Data::FramesOf(n, _) => n.len() / 3 * 8,
+            Data::BarkColors(m, _) => m.vertex_count() * 4,
             Data::Trs(m, part) => m.len() / 16 * if *part == Part::Rotation { 16 } else { 12 },
         }
     }
 
-    /// Appends the little-endian bytes to `out`, in blocks small enough to stay in cache
-    /// between the zero-fill of `resize` and the write that replaces it.
-    fn append(&self, out: &mut Vec<u8>) {
-        const BLOCK: usize = 16 * 1024;
-        let mut put = |len: usize, write: &dyn Fn(&mut [u8])| {
-            let at = out.len();
-            out.resize(at + len, 0);
-            write(&mut out[at..]);
-        };
-        match *self {
-            Data::F32(s) => s.chunks(BLOCK).for_each(|c| put(c.len() * 4, &|d| Data::F32(c).write(d))),
-            Data::U32(s) => s.chunks(BLOCK).for_each(|c| put(c.len() * 4, &|d| Data::U32(c).write(d))),
-            Data::U16(s) => s.chunks(BLOCK).for_each(|c| put(c.len() * 2, &|d| Data::U16(c).write(d))),
-            Data::Bytes(s) => out.extend_from_slice(s),
-            Data::Tangents(_) | Data::BarkColors(_) | Data::Trs(..) => put(self.byte_len(), &|d| self.write(d)),
+    /// Bytes past the view's end the writer uses as scratch before it truncates them (the
+    /// tangent accumulator, 16 bytes per vertex): the output reserves room for them.
+    fn scratch_len(&self) -> usize {
+        match self {
+            Data::Frames(m) => m.vertex_count() * 16,
+            _ => 0,
         }
     }
 
-    /// Writes the little-endian bytes into `dst` (exactly `byte_len` bytes).
-    fn write(&self, dst: &mut [u8]) {
-        match self {
+    /// Appends the little-endian bytes to `out`.
+    fn append(&self, out: &mut Vec<u8>) {
+        match *self {
             Data::F32(s) => {
-                dst.chunks_exact_mut(4).zip(s.iter()).for_each(|(d, v)| d.copy_from_slice(&v.to_le_bytes()))
+                let whole = s.len() / 4 * 4;
+                emit::<_, 4, 16>(out, &s[..whole], |v| le(*v));
+                emit::<_, 1, 4>(out, &s[whole..], |v| v[0].to_le_bytes());
             }
-            Data::U32(s) => {
-                dst.chunks_exact_mut(4).zip(s.iter()).for_each(|(d, v)| d.copy_from_slice(&v.to_le_bytes()))
-            }
-            Data::U16(s) => {
-                dst.chunks_exact_mut(2).zip(s.iter()).for_each(|(d, &v)| d.copy_from_slice(&(v as u16).to_le_bytes()))
-            }
-            Data::Bytes(s) => dst.copy_from_slice(s),
-            Data::Tangents(m) => {
-                dst.fill(0);
-                super::tangents_into(&m.positions, &m.normals, &m.uvs, &m.indices, dst)
-            }
-            Data::BarkColors(m) => super::bark_colors_into(m, dst),
-            Data::Trs(m, part) => {
-                let width = if *part == Part::Rotation { 16 } else { 12 };
-                for (d, m) in dst.chunks_exact_mut(width).zip(m.chunks_exact(16)) {
-                    let v: &[f32] = match part {
-                        Part::Translation => &m[12..15],
-                        Part::Rotation => &super::decompose(m).1,
-                        Part::Scale => &super::decompose_scale(m),
-                    };
-                    d.chunks_exact_mut(4).zip(v).for_each(|(d, x)| d.copy_from_slice(&x.to_le_bytes()));
+            Data::U32(s) => emit::<_, 1, 4>(out, s, |v| v[0].to_le_bytes()),
+            Data::U16(s) => emit::<_, 1, 2>(out, s, |v| (v[0] as u16).to_le_bytes()),
+            Data::Bytes(s) => out.extend_from_slice(s),
+            Data::Snorm3(s) => emit::<_, 3, 4>(out, s, |v| {
+                let [x, y, z] = snorm8_unit(*v);
+                [x as u8, y as u8, z as u8, 0]
+            }),
+            Data::Frames(m) => super::frames_snorm8_append(&m.positions, &m.normals, &m.uvs, &m.indices, out),
+            Data::FramesOf(n, t) => {
+                let mut block = [0u8; BLOCK];
+                let per = BLOCK / 8;
+                for (n, t) in n.chunks(3 * per).zip(t.chunks(4 * per)) {
+                    let k = n.len() / 3;
+                    for ((d, n), t) in block[..8 * k].chunks_exact_mut(8).zip(n.chunks_exact(3)).zip(t.chunks_exact(4))
+                    {
+                        d.copy_from_slice(&frame_bytes([n[0], n[1], n[2]], [t[0], t[1], t[2]], t[3]));
+                    }
+                    out.extend_from_slice(&block[..8 * k]);
                 }
             }
+            Data::BarkColors(m, b) => {
+                let at = out.len();
+                out.resize(at + self.byte_len(), 0);
+                super::bark_colors_in(m, &b, &mut out[at..]);
+            }
+            Data::Trs(m, Part::Translation) => emit::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
+            Data::Trs(m, Part::Rotation) => emit::<_, 16, 16>(out, m, |m| le(super::decompose_rotation(m))),
+            Data::Trs(m, Part::Scale) => emit::<_, 16, 12>(out, m, |m| le(super::decompose_scale(m))),
         }
     }
 }
@@ -166,6 +278,8 @@ struct Doc<'a> {
     meshes: Vec<Value>,
     nodes: Vec<Value>,
     bin_len: usize,
+    /// Whether an accessor needs `KHR_mesh_quantization`.
+    quantized: bool,
 }
 
 /// One accessor's description.
@@ -246,20 +360,26 @@ impl<'a> Doc<'a> {
     /// The vertex attributes of a mesh (shared by its primitives).
     fn attributes(&mut self, m: &'a TreeMesh, extra: &VertexExtras<'a>) -> Map<String, Value> {
         let n = m.vertex_count();
-        let b = m.bounds();
+        let b = extra.bounds.unwrap_or_else(|| m.bounds());
         let mut at = Map::new();
         let pos = Acc { minmax: Some((b.min.to_vec(), b.max.to_vec())), ..Acc::new(FLOAT, "VEC3", n) };
         at.insert("POSITION".into(), json!(self.array(Data::F32(&m.positions), Some(ARRAY_BUFFER), pos)));
-        at.insert(
-            "NORMAL".into(),
-            json!(self.array(Data::F32(&m.normals), Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC3", n))),
-        );
+        // KHR_mesh_quantization: normals and tangents as normalised bytes, interleaved when
+        // both are written (normal 3 bytes + 1 padding, tangent 4), else the normals alone.
+        self.quantized = true;
+        let (view, stride) = match extra.tangents {
+            Some(t) => (self.view(t, Some(ARRAY_BUFFER), Some(8)), 8),
+            None => (self.view(Data::Snorm3(&m.normals), Some(ARRAY_BUFFER), Some(4)), 4),
+        };
+        let normal = Acc { normalized: true, ..Acc::new(BYTE, "VEC3", n) };
+        at.insert("NORMAL".into(), json!(self.accessor(view, normal)));
         at.insert(
             "TEXCOORD_0".into(),
             json!(self.array(Data::F32(&m.uvs), Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC2", n))),
         );
-        if let Some(t) = extra.tangents {
-            at.insert("TANGENT".into(), json!(self.array(t, Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC4", n))));
+        if stride == 8 {
+            let tangent = Acc { normalized: true, offset: 4, ..Acc::new(BYTE, "VEC4", n) };
+            at.insert("TANGENT".into(), json!(self.accessor(view, tangent)));
         }
         if let Some(c) = extra.colors {
             let acc = Acc { normalized: true, ..Acc::new(UNSIGNED_BYTE, "VEC4", n) };
@@ -317,6 +437,8 @@ struct VertexExtras<'a> {
     tangents: Option<Data<'a>>,
     colors: Option<Data<'a>>,
     wind: Option<&'a [f32]>,
+    /// The mesh's bounds when already known.
+    bounds: Option<Bounds>,
 }
 
 /// Everything computed (not borrowed from the tree) before the document is laid out.
@@ -414,10 +536,12 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     };
     if has_bark {
         let wind = (opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE).then_some(&bark.wind[..]);
+        let bounds = bark.bounds();
         let extra = VertexExtras {
-            tangents: (normal_maps && owned.bark_pngs.is_some()).then_some(Data::Tangents(bark)),
-            colors: opts.vertex_colors.then_some(Data::BarkColors(bark)),
+            tangents: (normal_maps && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
+            colors: opts.vertex_colors.then_some(Data::BarkColors(bark, bounds)),
             wind,
+            bounds: Some(bounds),
         };
         let mesh = doc.mesh("bark", bark, &extra, pick);
         doc.nodes.push(json!({"name": "bark", "mesh": mesh}));
@@ -425,9 +549,10 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     }
     if let Some(b) = &owned.baked {
         let extra = VertexExtras {
-            tangents: (!b.tangents.is_empty()).then_some(Data::F32(&b.tangents)),
+            tangents: (!b.tangents.is_empty()).then_some(Data::FramesOf(&b.mesh.normals, &b.tangents)),
             colors: opts.vertex_colors.then_some(Data::Bytes(&b.colors)),
             wind: None,
+            bounds: None,
         };
         let mesh = doc.mesh("leaves", &b.mesh, &extra, pick);
         doc.nodes.push(json!({"name": "leaves", "mesh": mesh}));
@@ -435,7 +560,10 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     }
     if instanced {
         let m = &f.matrices[..];
-        let extra = VertexExtras { tangents: owned.leaf_tangents.as_deref().map(Data::F32), ..VertexExtras::default() };
+        let extra = VertexExtras {
+            tangents: owned.leaf_tangents.as_deref().map(|t| Data::FramesOf(&f.mesh.normals, t)),
+            ..VertexExtras::default()
+        };
         let mesh = doc.mesh("leaf", &f.mesh, &extra, |_| pick(Material::Leaves));
         let n = f.count();
         let mut attrs = Map::new();
@@ -494,16 +622,27 @@ fn assemble(
         root.insert("bufferViews".into(), Value::Array(doc.views));
         root.insert("buffers".into(), json!([{"byteLength": doc.bin_len}]));
     }
+    let mut used = Vec::new();
     if instanced {
-        root.insert("extensionsUsed".into(), json!(["EXT_mesh_gpu_instancing"]));
+        used.push("EXT_mesh_gpu_instancing");
+    }
+    if doc.quantized {
+        used.push("KHR_mesh_quantization");
+        root.insert("extensionsRequired".into(), json!(["KHR_mesh_quantization"]));
+    }
+    if !used.is_empty() {
+        root.insert("extensionsUsed".into(), json!(used));
     }
     let json = Value::Object(root).to_string();
     let json_len = json.len().next_multiple_of(4);
     let bin_len = doc.bin_len.next_multiple_of(4);
     let has_bin = doc.bin_len > 0;
     let total = 12 + 8 + json_len + if has_bin { 8 + bin_len } else { 0 };
+    // Room for the scratch some writers use past their view (see `Data::scratch_len`).
+    let bin_start = 12 + 8 + json_len + 8;
+    let high = doc.data.iter().map(|(o, d)| bin_start + o + d.scratch_len()).max().unwrap_or(0);
     out.clear();
-    out.reserve_exact(total);
+    out.reserve_exact(total.max(high));
     let word = |out: &mut Vec<u8>, w: u32| out.extend_from_slice(&w.to_le_bytes());
     word(out, MAGIC);
     word(out, 2);
@@ -515,7 +654,7 @@ fn assemble(
     if has_bin {
         word(out, bin_len as u32);
         word(out, CHUNK_BIN);
-        let bin_start = out.len();
+        debug_assert_eq!(out.len(), bin_start);
         for (offset, d) in &doc.data {
             out.resize(bin_start + offset, 0); // alignment padding
             d.append(out);
@@ -523,4 +662,43 @@ fn assemble(
         out.resize(bin_start + bin_len, 0);
     }
     debug_assert_eq!(out.len(), total);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn snorm8_rounds_to_nearest_and_saturates() {
+        assert_eq!([1.0, -1.0, 0.0, 0.5, -0.5, 2.0, -2.0].map(snorm8), [127, -127, 0, 64, -64, 127, -127]);
+        // 0.5 · 127 = 63.5: ties to even.
+        assert_eq!(snorm8(63.5 / 127.0), 64);
+        assert_eq!(snorm8(62.5 / 127.0), 62);
+    }
+
+    #[test]
+    fn quantised_unit_vectors_stay_unit_within_the_validator_tolerance() {
+        // A dense spiral over the sphere, plus the axes and diagonals.
+        let n = 200_000;
+        let mut dirs: Vec<[f32; 3]> = (0..n)
+            .map(|i| {
+                let z = 1.0 - 2.0 * (i as f32 + 0.5) / n as f32;
+                let r = (1.0 - z * z).max(0.0).sqrt();
+                let a = i as f32 * 2.399_963;
+                let v = glam::Vec3::new(r * crate::math::cos(a), r * crate::math::sin(a), z).normalize();
+                v.to_array()
+            })
+            .collect();
+        dirs.extend([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [0.577_350_3; 3]]);
+        let mut fixed = 0;
+        for v in dirs {
+            let q = snorm8_unit(v);
+            let d = q.map(|c| f32::from(c) / 127.0);
+            let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            assert!((len - 1.0).abs() <= 0.00674, "{v:?} -> {q:?} ({len})");
+            assert!((0..3).all(|k| (d[k] - v[k]).abs() <= 1.0 / 127.0), "{v:?} -> {q:?}");
+            fixed += usize::from(q != v.map(snorm8));
+        }
+        assert!(fixed > 0 && fixed < n / 100, "{fixed} vectors needed the closest-length search");
+    }
 }

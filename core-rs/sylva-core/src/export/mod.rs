@@ -146,8 +146,12 @@ pub fn bark_colors(mesh: &TreeMesh) -> Vec<u8> {
 
 /// [`bark_colors`] written into `out` (4 bytes per vertex).
 pub fn bark_colors_into(mesh: &TreeMesh, out: &mut [u8]) {
+    bark_colors_in(mesh, &mesh.bounds(), out);
+}
+
+/// [`bark_colors_into`] with the mesh's bounds already known.
+pub(crate) fn bark_colors_in(mesh: &TreeMesh, b: &crate::mesh::Bounds, out: &mut [u8]) {
     let n = mesh.vertex_count();
-    let b = mesh.bounds();
     let height = (b.max[1] - b.min[1]).max(1e-6);
     let foot = 0.08 * height;
     let steps = (TINT_STEPS - 1) as f32;
@@ -198,30 +202,46 @@ fn unorm8(x: f32) -> u8 {
 /// perpendicular to the normal and normalised. Vertices no triangle gives a direction get any
 /// unit vector perpendicular to the normal.
 pub fn tangents(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32]) -> Vec<f32> {
-    let mut bytes = vec![0u8; positions.len() / 3 * 16];
-    tangents_into(positions, normals, uvs, indices, &mut bytes);
-    bytes.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect()
+    let mut acc = vec![0u8; positions.len() / 3 * 16];
+    tangent_sums(positions, uvs, indices, &mut acc);
+    let mut out = Vec::with_capacity(acc.len() / 4);
+    for (o, nn) in acc.chunks_exact(16).zip(normals.chunks_exact(3)) {
+        let (u, w) = tangent_of(o.try_into().expect("16 bytes per vertex"), nn);
+        out.extend_from_slice(&[u.x, u.y, u.z, w]);
+    }
+    out
 }
 
-/// [`tangents`] written as little-endian `f32` bytes into `out` (16 bytes per vertex, which must
-/// be zero on entry: it is the accumulator). The GLB writer computes the tangents straight into
-/// its output buffer this way, without a temporary array.
-pub fn tangents_into(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32], out: &mut [u8]) {
-    #[inline(always)]
-    fn get(o: &[u8; 16]) -> [f32; 4] {
-        let f = |k: usize| f32::from_le_bytes([o[k], o[k + 1], o[k + 2], o[k + 3]]);
-        [f(0), f(4), f(8), f(12)]
+/// Normals and [`tangents`] appended to `out` as glTF normalised `i8`, 8 bytes per vertex: the
+/// normal (`xyz`, one byte of padding), then the tangent (`xyz`, `w` = ±127); each vector unit
+/// within the glTF validator's tolerance (see [`glb`]). The `16 n` bytes from the current end of
+/// `out` serve as the tangent accumulator, compacted in place (vertex `v` reads bytes
+/// `16 v..16 v + 16` and then writes `8 v..8 v + 8`, which no later vertex reads) and then
+/// truncated: no temporary array, and the pages touched are the output's own (reserve the room
+/// to avoid a reallocation).
+pub fn frames_snorm8_append(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32], out: &mut Vec<u8>) {
+    let n = positions.len() / 3;
+    let at = out.len();
+    out.resize(at + 16 * n, 0);
+    let acc = &mut out[at..];
+    tangent_sums(positions, uvs, indices, acc);
+    for (v, nn) in normals.chunks_exact(3).enumerate().take(n) {
+        let o: [u8; 16] = acc[16 * v..16 * v + 16].try_into().expect("16 bytes per vertex");
+        let (u, w) = tangent_of(&o, nn);
+        acc[8 * v..8 * v + 8].copy_from_slice(&glb::frame_bytes([nn[0], nn[1], nn[2]], u.to_array(), w));
     }
-    #[inline(always)]
-    fn put(o: &mut [u8; 16], v: [f32; 4]) {
-        for (k, x) in v.iter().enumerate() {
-            o[4 * k..4 * k + 4].copy_from_slice(&x.to_le_bytes());
-        }
-    }
-    #[inline(always)]
-    fn slot(out: &mut [u8], v: usize) -> &mut [u8; 16] {
-        (&mut out[16 * v..16 * v + 16]).try_into().expect("16 bytes per vertex")
-    }
+    out.truncate(at + 8 * n);
+}
+
+/// Little-endian `f32` `k` of a 16-byte accumulator slot.
+#[inline(always)]
+fn f32_at(o: &[u8; 16], k: usize) -> f32 {
+    f32::from_le_bytes([o[4 * k], o[4 * k + 1], o[4 * k + 2], o[4 * k + 3]])
+}
+
+/// Lengyel's sums: per vertex, 4 little-endian `f32` in `acc` (zero on entry): the UV-area
+/// weighted `dP/du` of its triangles and the sum of their handedness votes.
+fn tangent_sums(positions: &[f32], uvs: &[f32], indices: &[u32], acc: &mut [u8]) {
     let p = |i: usize| Vec3::new(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
     for tri in indices.chunks_exact(3) {
         let (a, b, c) = (tri[0] as usize, tri[1] as usize, tri[2] as usize);
@@ -236,21 +256,30 @@ pub fn tangents_into(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &
         let s = if r > 0.0 { 1.0 } else { -1.0 };
         let dir = (e1 * dv2 - e2 * dv1) * s;
         for v in [a, b, c] {
-            let o = slot(out, v);
-            let [x, y, z, w] = get(o);
-            put(o, [x + dir.x, y + dir.y, z + dir.z, w + s]);
+            let o: &mut [u8; 16] = (&mut acc[16 * v..16 * v + 16]).try_into().expect("16 bytes per vertex");
+            let sum = [f32_at(o, 0) + dir.x, f32_at(o, 1) + dir.y, f32_at(o, 2) + dir.z, f32_at(o, 3) + s];
+            for (d, x) in o.chunks_exact_mut(4).zip(sum) {
+                d.copy_from_slice(&x.to_le_bytes());
+            }
         }
     }
-    for (o, nn) in out.chunks_exact_mut(16).zip(normals.chunks_exact(3)) {
-        let o: &mut [u8; 16] = o.try_into().expect("16 bytes per vertex");
-        let [x, y, z, w] = get(o);
-        let nv = Vec3::new(nn[0], nn[1], nn[2]);
-        let d = Vec3::new(x, y, z);
-        let u = crate::math::unit_or(d - nv * nv.dot(d), || {
-            crate::math::unit_or(nv.cross(Vec3::Y), || crate::math::unit_or(nv.cross(Vec3::X), || Vec3::X))
-        });
-        put(o, [u.x, u.y, u.z, if w < 0.0 { -1.0 } else { 1.0 }]);
-    }
+}
+
+/// A vertex's tangent from its sums ([`tangent_sums`]) and normal: the sum made perpendicular to
+/// the normal and normalised (any perpendicular unit vector when that fails), and `w` = ±1.
+#[inline(always)]
+fn tangent_of(o: &[u8; 16], nn: &[f32]) -> (Vec3, f32) {
+    let nv = Vec3::new(nn[0], nn[1], nn[2]);
+    let d = Vec3::new(f32_at(o, 0), f32_at(o, 1), f32_at(o, 2));
+    let u = crate::math::unit_or(d - nv * nv.dot(d), || any_perpendicular(nv));
+    (u, if f32_at(o, 3) < 0.0 { -1.0 } else { 1.0 })
+}
+
+/// A unit vector perpendicular to `n` (for vertices no triangle gives a tangent).
+#[cold]
+#[inline(never)]
+fn any_perpendicular(n: Vec3) -> Vec3 {
+    crate::math::unit_or(n.cross(Vec3::Y), || crate::math::unit_or(n.cross(Vec3::X), || Vec3::X))
 }
 
 /// One leaf instance matrix (column-major 4×4) as glTF TRS: translation, unit rotation
@@ -258,16 +287,18 @@ pub fn tangents_into(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &
 /// axes; a mirroring matrix gets a negative `x` scale. Exact for the foliage's matrices, whose
 /// axes are perpendicular.
 pub fn decompose(m: &[f32]) -> ([f32; 3], [f32; 4], [f32; 3]) {
-    let (c0, c1) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]));
-    let s = Vec3::from(decompose_scale(m));
-    let safe = |v: Vec3, l: f32| if l != 0.0 { v / l } else { v };
-    let (x, y) = (safe(c0, s.x), safe(c1, s.y));
-    // Re-orthonormalise (Gram-Schmidt) so the quaternion is a proper rotation.
-    let x = crate::math::unit_or(x, || Vec3::X);
-    let y = crate::math::unit_or(y - x * x.dot(y), || crate::math::unit_or(x.cross(Vec3::Z), || Vec3::Y));
-    let z = x.cross(y);
-    let q = Quat::from_mat3(&Mat3::from_cols(x, y, z)).normalize();
-    ([m[12], m[13], m[14]], q.to_array(), s.to_array())
+    ([m[12], m[13], m[14]], decompose_rotation(m), decompose_scale(m))
+}
+
+/// The rotation part of [`decompose`]: the unit quaternion `[x, y, z, w]` of the first two axis
+/// columns made orthonormal (Gram-Schmidt; the first negated when the matrix mirrors, as its
+/// scale is) and their cross product.
+pub fn decompose_rotation(m: &[f32]) -> [f32; 4] {
+    let (c0, c1, c2) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]), Vec3::new(m[8], m[9], m[10]));
+    let c0 = if c0.cross(c1).dot(c2) < 0.0 { -c0 } else { c0 };
+    let x = crate::math::unit_or(c0, || Vec3::X);
+    let y = crate::math::unit_or(c1 - x * x.dot(c1), || crate::math::unit_or(x.cross(Vec3::Z), || Vec3::Y));
+    Quat::from_mat3(&Mat3::from_cols(x, y, x.cross(y))).normalize().to_array()
 }
 
 /// The scale part of [`decompose`]: the lengths of the three axis columns, the first negative
