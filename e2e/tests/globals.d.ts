@@ -9,6 +9,17 @@ interface Window {
   };
   /** Set by the tests' init scripts. */
   __cspViolations?: string[];
-  __longTasks?: { start: number; duration: number }[];
+  __longTasks?: { start: number; duration: number; script?: string }[];
   __xss?: unknown;
+}
+
+/** Long Animation Frames API (Chromium 123+; not yet in TypeScript's DOM types). */
+interface PerformanceScriptTiming extends PerformanceEntry {
+  invoker: string;
+  invokerType: string;
+  sourceURL: string;
+  sourceFunctionName: string;
+}
+interface PerformanceLongAnimationFrameTiming extends PerformanceEntry {
+  scripts: PerformanceScriptTiming[];
 }

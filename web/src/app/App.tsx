@@ -73,6 +73,7 @@ export function App() {
     () =>
       installDebugHook({
         geometries: () => viewerRef.current?.gpuGeometries ?? null,
+        programs: () => viewerRef.current?.gpuPrograms ?? null,
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
           if (!host) return;

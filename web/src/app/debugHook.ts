@@ -13,6 +13,8 @@ export interface SylvaDebugHook {
   setTimeLimit(ms: number): void;
   /** Geometries alive on the GPU (three.js `renderer.info.memory.geometries`), for leak tests. */
   geometries(): number | null;
+  /** Shader programs compiled so far, for jank tests. */
+  programs(): number | null;
   /** Puts the camera at `from` looking at `to` (metres, Y up), e.g. for close-up screenshots. */
   view(from: [number, number, number], to: [number, number, number]): void;
   /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */

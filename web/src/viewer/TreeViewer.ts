@@ -202,6 +202,11 @@ export class TreeViewer {
     return this.renderer.info.memory.geometries;
   }
 
+  /** Shader programs compiled so far (three.js `renderer.info.programs`), for jank tests. */
+  get gpuPrograms(): number {
+    return this.renderer.info.programs?.length ?? 0;
+  }
+
   /** Points the camera at the current tree's bounds. */
   frame(): void {
     const sphere = this.tree?.geometry.boundingSphere;
