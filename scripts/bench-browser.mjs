@@ -45,7 +45,9 @@ export async function benchBrowser(runs = 25) {
       '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
   });
   try {
-    const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
+    // Wind paused (reduced motion): software WebGL would otherwise spend the CPU on animation
+    // frames that a real GPU draws for free, and the round trip would measure SwiftShader.
+    const page = await browser.newPage({ viewport: { width: 1000, height: 700 }, reducedMotion: 'reduce' });
     await page.goto(`${url}?v=1`);
     const stat = page.getByTestId('stat-roundtrip');
     const hash = page.getByTestId('stat-hash');

@@ -24,16 +24,37 @@ export interface GrowthEditor {
   setGroup(index: number, group: VolumeGroup): void;
 }
 
-/** Writes `vol=` into the page URL (or removes it), keeping every other key. */
+/**
+ * `search` with its `vol=` entry replaced by `vol=<text>` (or removed when `text` is empty). Every
+ * other entry is kept byte for byte: re-serialising the query (URLSearchParams) would re-encode
+ * a hostile entry such as `%ZZ` into a valid `%25ZZ`, and the link's own notices would be lost
+ * if the app read the URL after that.
+ */
+export function withVolumesQuery(search: string, text: string): string {
+  const pieces = search
+    .replace(/^\?/, '')
+    .split('&')
+    .filter((piece) => piece !== '' && piece.split('=', 1)[0] !== VOLUMES_KEY);
+  if (text) pieces.push(`${VOLUMES_KEY}=${encodeURIComponent(text)}`);
+  return pieces.length > 0 ? `?${pieces.join('&')}` : '';
+}
+
+/** Writes `vol=` into the page URL (or removes it), keeping every other entry as it is. */
 function writeVolumesToUrl(volumes: readonly VolumePrimitive[]): void {
-  const query = new URLSearchParams(window.location.search);
+  const current = window.location.search;
+  const hasVolumes = current
+    .replace(/^\?/, '')
+    .split('&')
+    .some((p) => p.split('=', 1)[0] === VOLUMES_KEY);
   const text = encodeVolumes(volumes);
-  if (text) query.set(VOLUMES_KEY, text);
-  else query.delete(VOLUMES_KEY);
-  const search = query.toString();
-  const url = `${window.location.pathname}${search ? `?${search}` : ''}${window.location.hash}`;
-  if (url !== `${window.location.pathname}${window.location.search}${window.location.hash}`) {
-    window.history.replaceState(window.history.state, '', url);
+  if (!text && !hasVolumes) return;
+  const search = withVolumesQuery(current, text);
+  if (search !== current) {
+    window.history.replaceState(
+      window.history.state,
+      '',
+      `${window.location.pathname}${search}${window.location.hash}`,
+    );
   }
 }
 
