@@ -373,7 +373,7 @@ define_params! {
         root_depth: f32 = 0.6; [0.0, 3.0, 0.05] "", "Trunk", "Root Depth",
             "How far the roots dive below the ground toward their tips, in root radii (0 = along the surface).";
         hole_count: u32 = 0; [0, 16, 1] "", "Trunk", "Holes",
-            "Number of tree holes cut into the trunk (and level-1 stems at least Hole Min Radius thick), at concave spots of the bark, below big branch junctions and between root starts (0 = none).";
+            "Number of tree holes cut into the trunk (and level-1 stems at least Hole Min Radius thick), at concave spots of the bark, below big branch junctions and between root starts (0 = none). Fewer are cut where there is no room, or when a hole would pass the vertex budget.";
         hole_size: f32 = 0.35; [0.05, 1.0, 0.01] "", "Trunk", "Hole Size",
             "Half-width of a hole's opening as a fraction of the local stem radius (holes are 1.5 times taller than wide).";
         hole_depth: f32 = 0.5; [0.05, 0.9, 0.01] "", "Trunk", "Hole Depth",

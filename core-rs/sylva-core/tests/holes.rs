@@ -222,3 +222,23 @@ fn new_vertices_get_wind_from_the_rim() {
     }
     assert!(changed > 0);
 }
+
+/// Regression (CI fuzz case): cavities add vertices after the tube's budget check, so a tree
+/// just under `max_vertices` came out over it once holes were cut. Holes that don't fit are
+/// skipped now: the budget holds, with fewer holes.
+#[test]
+fn holes_never_take_the_mesh_past_the_vertex_budget() {
+    // Without welding the tube's count is exact, so the budget can sit right above it.
+    let p = TreeParams { weld: false, ..thick(8) };
+    let (before, after, all) = before_after(&p);
+    assert!(all.len() >= 2, "{all:?}");
+    let added = after.vertex_count() - before.vertex_count();
+    // Room for about one hole: the tube fits, the first cavity fits, the rest don't.
+    let tight = TreeParams { max_vertices: (before.vertex_count() + added / all.len()) as u32, ..p.clone() };
+    let (_, cut_tight, some) = before_after(&tight);
+    assert!(cut_tight.vertex_count() <= tight.max_vertices as usize);
+    assert!(!some.is_empty() && some.len() < all.len(), "{} of {}", some.len(), all.len());
+    let g = generate(&tight).unwrap();
+    assert!(g.stats.vertices <= tight.max_vertices as usize);
+    assert_eq!(g.stats.holes, some.len());
+}

@@ -709,6 +709,9 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
     }
     let kids = children(skeleton, &patches);
     let mut regions: Vec<(Region, Cavity)> = Vec::new();
+    // Cavities add vertices: a hole that would take the mesh past the vertex budget is skipped,
+    // so the budget holds with holes too (fewer holes, never a bigger mesh).
+    let mut room = (p.max_vertices as usize).saturating_sub(mesh.vertex_count());
     for c in cands {
         if regions.len() >= p.hole_count as usize {
             break;
@@ -764,6 +767,10 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
             }
         }
         let Some((region, cav)) = found else { continue };
+        if cav.verts.len() > room {
+            continue;
+        }
+        room -= cav.verts.len();
         let patch = &mut patches[pi];
         for &k in &region.faces {
             for &v in &mesh.indices[k as usize * 3..k as usize * 3 + 3] {
