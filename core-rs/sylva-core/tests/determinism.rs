@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "63826ee10c07a122"),
-    ("quaking_aspen", "a289df8833c65358"),
-    ("black_tupelo", "cdefeef3530a1d6c"),
-    ("weeping_willow", "41f2b8d4fa73267a"),
-    ("ca_black_oak", "a253462c34b548b2"),
-    ("fir", "8f057da952805b67"),
-    ("oak", "b26ca9ab4b59f903"),
-    ("cypress", "e6ac28872dbac5c2"),
-    ("umbrella", "5619d35b037050af"),
-    ("weeping", "845c62d24d6e2b0c"),
-    ("grown_broadleaf", "f6cd8d805c39f75a"),
-    ("grown_shrub", "4723ce49887f4996"),
-    ("grown_hedgerow", "6179717aeb513a8b"),
-    ("grown_beside_wall", "f06a15bfc45146a3"),
-    ("grown_bushy", "37d4c4ae7639486f"),
+    ("default", "9ebdd3672806c973"),
+    ("quaking_aspen", "2ff232666a95a842"),
+    ("black_tupelo", "a81e5183de9807a3"),
+    ("weeping_willow", "60a782c98af55436"),
+    ("ca_black_oak", "4da996c23232638d"),
+    ("fir", "1c7fd4e10213a9cf"),
+    ("oak", "d5a71fad198689fa"),
+    ("cypress", "d5aada14de3ce6f2"),
+    ("umbrella", "2ef1442501c748fa"),
+    ("weeping", "4c3cf2395c261ad8"),
+    ("grown_broadleaf", "bcdc35bd5259db15"),
+    ("grown_shrub", "007d56c892a40513"),
+    ("grown_hedgerow", "0f63f834ed25fdc9"),
+    ("grown_beside_wall", "8c82a5e3185687fe"),
+    ("grown_bushy", "be4baa5305595dd8"),
 ];
 
 #[test]

@@ -322,6 +322,20 @@ impl MeshBuilder {
         self.mesh.indices.extend_from_slice(indices);
     }
 
+    /// Replace vertex `i`'s normal.
+    #[inline]
+    pub fn set_normal(&mut self, i: u32, n: glam::Vec3) {
+        let k = i as usize * 3;
+        self.mesh.normals[k..k + 3].copy_from_slice(&n.to_array());
+    }
+
+    /// Vertex `i`'s wind record (zeros when this builder has no wind attributes).
+    #[inline]
+    pub fn wind_at(&self, i: u32) -> [f32; WIND_STRIDE] {
+        let k = i as usize * WIND_STRIDE;
+        self.mesh.wind.get(k..k + WIND_STRIDE).map_or([0.0; WIND_STRIDE], |w| w.try_into().expect("stride"))
+    }
+
     /// Vertex `i`'s uv.
     #[inline]
     pub fn uv_at(&self, i: u32) -> [f32; 2] {

@@ -89,17 +89,26 @@ pub struct WeldStats {
     pub split_fallbacks: usize,
 }
 
+/// Insert `t` into the sorted `out[first..]`.
+fn insert_sorted(out: &mut Vec<f32>, first: usize, t: f32) {
+    let k = out[first..].partition_point(|&x| x < t);
+    out.insert(first + k, t);
+}
+
 /// Number of sides around a stem of base radius `r` (m) at the given quality.
 pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
     let base = (quality * (3.0 + 30.0 * r.max(0.0).sqrt())).round() as u32;
     base.max((4 * lobes).min(96)).clamp(3, 96)
 }
 
-/// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`, plus the rings
-/// its children's junctions ask for (`extra`); a welded stem starts at `start` (its junction
-/// ring) instead of 0. The last ring sits just short of the tip; the apex closes the stem at t = 1.
-/// Returns how many planned rings the junction ring replaced.
-fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Vec<f32>) -> usize {
+/// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`. `feet` are the
+/// junctions of its welded children, sorted by `t_lo`: each footprint needs a ring at most
+/// [`weld::REACH`] footprint lengths below and above it, and gets one at its end where none is
+/// that close; two footprints side by side around the stem (`pad`: one column) that no ring
+/// separates get one between them, so that their holes never share a quad. A welded stem starts
+/// at `start` (its junction ring) instead of 0. The last ring sits just short of the tip; the
+/// apex closes the stem at t = 1. Returns how many planned rings the junction ring replaced.
+fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad: f32, start: f32, out: &mut Vec<f32>) -> usize {
     let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
@@ -126,8 +135,7 @@ fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Ve
             d = n;
         }
     }
-    out.extend_from_slice(extra);
-    let extra = stem.flare > 0.0 || stem.taper > 1.0 || !extra.is_empty();
+    let extra = stem.flare > 0.0 || stem.taper > 1.0;
     if stem.flare > 0.0 {
         // The flare lives in the lowest eighth and rises steeply: rings packed toward the ground.
         let m = ((6.0 * quality).ceil() as usize).max(2);
@@ -158,6 +166,24 @@ fn plan_rings(stem: &Stem, quality: f32, extra: &[f32], start: f32, out: &mut Ve
         }
     }
     out.truncate(first + n);
+    let has_ring = |out: &[f32], lo: f32, hi: f32| {
+        let k = out.partition_point(|&x| x < lo);
+        k < out.len() && out[k] <= hi
+    };
+    for (i, f) in feet.iter().enumerate() {
+        let reach = weld::REACH * (f.t_hi - f.t_lo);
+        if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
+            insert_sorted(out, first, f.t_lo);
+        }
+        if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
+            insert_sorted(out, first, f.t_hi);
+        }
+        for e in &feet[..i] {
+            if e.t_hi <= f.t_lo && f.side_by_side(e, pad) && !has_ring(&out[first..], e.t_hi, f.t_lo) {
+                insert_sorted(out, first, 0.5 * (e.t_hi + f.t_lo));
+            }
+        }
+    }
     let mut dropped = 0;
     if start > 0.0 {
         // Drop the rings the junction replaces; the junction ring is the first.
@@ -231,20 +257,14 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
     // Welding wins: a twig candidate with a junction is swept as a tube and welded.
     let twigs: Vec<bool> = twig_candidates.iter().zip(&junctions).map(|(&t, j)| t && j.is_none()).collect();
-    // Rings each parent needs across its children's footprints, grouped by parent.
-    let mut inserts: Vec<(u32, f32)> = Vec::new();
-    for j in junctions.iter().flatten() {
-        for k in 0..=j.rows {
-            inserts.push((j.parent, j.t_lo + (j.t_hi - j.t_lo) * k as f32 / j.rows as f32));
-        }
-    }
-    inserts.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let inserted: Vec<f32> = inserts.iter().map(|x| x.1).collect();
+    // The junctions of each parent's welded children, grouped by parent, sorted along it.
+    let mut inserted: Vec<weld::Junction> = junctions.iter().flatten().copied().collect();
+    inserted.sort_by(|a, b| a.parent.cmp(&b.parent).then(a.t_lo.total_cmp(&b.t_lo)));
     let mut extra = Vec::with_capacity(n);
     let mut at = 0;
     for i in 0..n as u32 {
         let from = at;
-        while at < inserts.len() && inserts[at].0 == i {
+        while at < inserted.len() && inserted[at].parent == i {
             at += 1;
         }
         extra.push(from..at);
@@ -270,7 +290,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             continue;
         }
         let t0 = junctions[i].map_or(0.0, |j| j.t_start);
-        let dropped = plan_rings(s, q, &inserted[extra[i].clone()], t0, &mut ts);
+        let dropped = plan_rings(s, q, &inserted[extra[i].clone()], TAU / sides[i] as f32, t0, &mut ts);
         if is_dense(i) {
             holes::densify(s, sides[i], p, &mut ts, start);
         }
@@ -280,9 +300,9 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         // Quads, tip fan and base fan; a junction's zip and collar quads.
         indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
         if junctions[i].is_some() {
-            // Either the collar loops, or a fallback sweeping the dropped rings again (the
-            // junction ring itself stays one of them).
-            vertices += (dropped.saturating_sub(1).max(loops)) as u64 * ring;
+            // Either the footprint loop and the collar loops, or a fallback sweeping the dropped
+            // rings again (the junction ring itself stays one of them).
+            vertices += (dropped.saturating_sub(1).max(loops + 1)) as u64 * ring;
             bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
                 + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
                 * 3;
@@ -297,14 +317,19 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
     let winds = stem_winds(skeleton, p.seed);
     let mut frames: Vec<Frame> = vec![Frame::default(); ts.len()];
-    let mut meshes: Vec<StemMesh> = Vec::with_capacity(n);
+    let mut meshes: Vec<Option<StemMesh>> = (0..n).map(|_| None).collect();
     let mut claimed: Vec<bool> = Vec::with_capacity(indices as usize / 6);
     let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
     let mut scratch = weld::Scratch::default();
     let mut stats = WeldStats::default();
     let is_clone = |i: usize| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level);
-    let mut blocks: Vec<Range<u32>> = Vec::with_capacity(n);
-    for (i, stem) in stems.iter().enumerate() {
+    let mut blocks: Vec<Range<u32>> = vec![0..0; n];
+    // Level by level (parents still come first): a split clone, planned before its original's
+    // children, also opens its original before them.
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by_key(|&i| stems[i].level);
+    for &i in &order {
+        let stem = &stems[i];
         let plan = &mut plans[i];
         let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
         let block_start = out.next_index();
@@ -312,8 +337,8 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             let mut m = twig::sweep(stem, &ts[plan.rings.clone()], plan.rings.start, table, &winds[i], &mut out);
             m.claim = claimed.len();
             claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
-            meshes.push(m);
-            blocks.push(block_start..out.next_index());
+            meshes[i] = Some(m);
+            blocks[i] = block_start..out.next_index();
             continue;
         }
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
@@ -330,7 +355,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         };
         let mut m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
         if let Some(j) = &junctions[i] {
-            let parent = &meshes[j.parent as usize];
+            let parent = meshes[j.parent as usize].as_ref().expect("parents are swept first");
             let ok = weld::join(
                 &weld::Join {
                     junction: j,
@@ -356,7 +381,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
                 // Fall back to a closed tube from the parent's axis, as if never welded.
                 out.truncate_vertices(m.first);
                 let start = ts.len();
-                plan_rings(stem, q, &inserted[extra[i].clone()], 0.0, &mut ts);
+                plan_rings(stem, q, &inserted[extra[i].clone()], TAU / sides[i] as f32, 0.0, &mut ts);
                 if is_dense(i) {
                     holes::densify(stem, sides[i], p, &mut ts, start);
                 }
@@ -381,10 +406,10 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         }
         m.claim = claimed.len();
         claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
-        meshes.push(m);
-        blocks.push(block_start..out.next_index());
+        meshes[i] = Some(m);
+        blocks[i] = block_start..out.next_index();
     }
-    for m in &meshes {
+    for m in meshes.iter().flatten() {
         emit(m, &claimed, &mut out);
     }
     out.extend_indices(&bridges);
