@@ -390,7 +390,7 @@ fn glb_wind_attributes_share_one_strided_view() {
 fn glb_wind_of_the_presets_within_a_millimetre() {
     // The generator's own wind data: pivots, distances and radii within 1 mm on every preset
     // with wind, phase and stiffness within 1/65535.
-    for name in ["default", "ca_black_oak", "weeping_willow", "grown_bushy"] {
+    for name in presets::PRESETS.iter().map(|p| p.name) {
         let g = preset(name);
         if g.mesh.wind.is_empty() {
             continue;

@@ -32,8 +32,8 @@
 //!   (`q` the stored integer; `q / 65535` is what a GPU reads from a normalised attribute), with
 //!   `offset` and `scale` in the bark mesh's `extras.wind_attributes` (next to a description of
 //!   the fields): the pivot, distance and radius span the mesh's range (a step of 0.46 mm per
-//!   30 m), `level` spans 0..3 (levels are exactly 0, 21845, 43690, 65535), `phase` and
-//!   `stiffness` 0..1 ([`WindCodec`]). Custom attribute names start with `_` as glTF requires;
+//!   30 m of range), `level` spans 0..3 (levels are exactly 0, 21845, 43690, 65535), `phase` and
+//!   `stiffness` 0..1 (`WindCodec`). Custom attribute names start with `_` as glTF requires;
 //!   three.js's GLTFLoader loads them as `_wind_pivot` and `_wind_params` geometry attributes
 //!   (normalised) and the mesh's extras as `userData`.
 //! * **Leaves**, [`LeafMode::Instanced`]: the leaf mesh (leaf units) on a node with
@@ -100,7 +100,7 @@ enum Data<'a> {
     U16(&'a [u32]),
     Bytes(&'a [u8]),
     /// Unit vectors (3 floats each) as normalised `i8` `VEC3` padded to 4 bytes
-    /// ([`quant::snorm8_units`]).
+    /// ([`super::normals_snorm8_append`]).
     Snorm3(&'a [f32]),
     /// Normals and tangents of a mesh interleaved, 8 bytes per vertex: the normal as in
     /// [`Data::Snorm3`], then the tangent (computed into the output,
@@ -501,7 +501,7 @@ pub fn write(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
     out
 }
 
-/// [`write`] into `out` (cleared first), reusing its allocation: repeated exports of big trees
+/// [`write()`] into `out` (cleared first), reusing its allocation: repeated exports of big trees
 /// then skip the operating system's zeroing of fresh pages.
 pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     let bark = &g.mesh;
