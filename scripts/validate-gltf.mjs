@@ -6,8 +6,8 @@
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
 //
-// Then, when the wasm build exists (web/src/wasm), checks that the wasm exporter writes the same
-// bytes as the native one (default tree, both leaf modes).
+// Then, when the wasm build exists (web/src/wasm), checks that the wasm exporters (`to_glb`,
+// `to_glb_file`) write the same bytes as the native one (default tree, both leaf modes).
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -67,7 +67,13 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
       const native = readFileSync(file);
       rmSync(file);
       const fromWasm = tree.to_glb(JSON.stringify({ leaves }));
-      const same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
+      let same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
+      // `to_glb_file` (the bytes read in place from the module's memory) writes the same file.
+      if (typeof tree.to_glb_file === 'function') {
+        const file = tree.to_glb_file(JSON.stringify({ leaves }));
+        same &&= Buffer.compare(native, Buffer.from(file.memory().buffer, file.ptr(), file.byte_length())) === 0;
+        file.free();
+      }
       if (!same) failed++;
       console.log(`wasm parity (default, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`);
     }

@@ -2,7 +2,8 @@
 //!
 //! ```text
 //! sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.glb|FILE.obj]
-//!                [--leaves instanced|baked|none] [--no-textures] [--no-wind] [--report skeleton|mesh]
+//!                [--leaves instanced|baked|none] [--no-textures] [--no-tangents] [--no-wind]
+//!                [--report skeleton|mesh]
 //! sylva envelope --shape NAME [--samples N]
 //! sylva params [--markdown]
 //! sylva presets
@@ -21,7 +22,8 @@ use sylva_core::{presets, SylvaError};
 
 const USAGE: &str = "usage:
   sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.glb|FILE.obj]
-                 [--leaves instanced|baked|none] [--no-textures] [--no-wind] [--report skeleton|mesh]
+                 [--leaves instanced|baked|none] [--no-textures] [--no-tangents] [--no-wind]
+                 [--report skeleton|mesh]
   sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
@@ -29,10 +31,11 @@ const USAGE: &str = "usage:
 
 export (generate --out):
   FILE.glb      glTF 2.0 binary: bark + leaf meshes, PBR materials, embedded PNG textures,
-                vertex colours, wind attributes (_WIND_PIVOT, _WIND_PARAMS)
+                tangents, vertex colours, wind attributes (_WIND_PIVOT, _WIND_PARAMS)
   FILE.obj      Wavefront OBJ + FILE.mtl + FILE_*.png textures (leaves baked)
   --leaves M    instanced (GLB: EXT_mesh_gpu_instancing, default), baked (one mesh), none
   --no-textures no images (plain material colours)
+  --no-tangents GLB: no TANGENT (viewers compute them; faster export of big trees)
   --no-wind     no wind attributes
 bench --glb: also time the GLB export (median, and the first export with PNG encoding).";
 
@@ -118,6 +121,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
                     .ok_or_else(|| format!("--leaves takes 'instanced', 'baked' or 'none', got '{v}'"))?;
             }
             "--no-textures" => export.textures = false,
+            "--no-tangents" => export.tangents = false,
             "--no-wind" => export.wind = false,
             "--report" => {
                 let what = value("--report")?;

@@ -102,6 +102,23 @@ impl Glb {
             .collect()
     }
 
+    /// The raw values of a normalised `u16` accessor, element by element.
+    fn unorm16(&self, i: u64) -> Vec<Vec<u16>> {
+        let a = self.accessor(i);
+        assert_eq!((a["componentType"].as_u64(), a["normalized"].as_bool()), (Some(5123), Some(true)));
+        let v = &self.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+        let n = components(a["type"].as_str().unwrap());
+        let stride = v["byteStride"].as_u64().map_or(n * 2, |s| s as usize);
+        let base = v["byteOffset"].as_u64().unwrap() as usize + a["byteOffset"].as_u64().unwrap_or(0) as usize;
+        (0..a["count"].as_u64().unwrap() as usize)
+            .map(|e| {
+                (0..n)
+                    .map(|k| u16::from_le_bytes(self.bin[base + e * stride + 2 * k..][..2].try_into().unwrap()))
+                    .collect()
+            })
+            .collect()
+    }
+
     /// Every view and accessor fits, is aligned and is consistent.
     fn check_layout(&self) {
         let views = self.json["bufferViews"].as_array().cloned().unwrap_or_default();
@@ -175,19 +192,29 @@ fn glb_container_layout_and_counts() {
     }
     // Normals and tangents: normalised i8 (KHR_mesh_quantization, required), interleaved in one
     // view (normal + 1 byte of padding, tangent); unit within the validator's tolerance, close to
-    // the mesh's normals, tangents perpendicular to them, w = ±1.
+    // the mesh's normals and to the float tangents (`export::tangents`), perpendicular, w = ±1.
     let (ta, na) = (glb.accessor(attrs["TANGENT"].as_u64().unwrap()), glb.accessor(attrs["NORMAL"].as_u64().unwrap()));
     assert_eq!(ta["bufferView"], na["bufferView"]);
     assert_eq!((na["byteOffset"].as_u64().unwrap_or(0), ta["byteOffset"].as_u64()), (0, Some(4)));
     assert_eq!(j["bufferViews"][na["bufferView"].as_u64().unwrap() as usize]["byteStride"], 8);
     let (t, n) = (glb.snorm8(attrs["TANGENT"].as_u64().unwrap()), glb.snorm8(attrs["NORMAL"].as_u64().unwrap()));
     let len = |v: &[f32]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    for (k, (t, n)) in t.iter().zip(&n).enumerate() {
+    let exact = export::tangents(&g.mesh.positions, &g.mesh.normals, &g.mesh.uvs, &g.mesh.indices);
+    for (k, ((t, n), e)) in t.iter().zip(&n).zip(exact.chunks_exact(4)).enumerate() {
         assert!((len(n) - 1.0).abs() <= 0.00674 && (len(t) - 1.0).abs() <= 0.00674, "{k}: {n:?} {t:?}");
         assert!((t[0] * n[0] + t[1] * n[1] + t[2] * n[2]).abs() < 0.03 && t[3].abs() == 1.0, "{k}: {n:?} {t:?}");
         let m = &g.mesh.normals[3 * k..3 * k + 3];
         assert!((0..3).all(|i| (n[i] - m[i]).abs() <= 1.0 / 127.0), "{k}: {n:?} vs {m:?}");
+        assert!((0..3).all(|i| (t[i] - e[i]).abs() <= 1.0 / 127.0) && t[3] == e[3], "{k}: {t:?} vs {e:?}");
     }
+    // Without tangents (option): the normals alone, 4 bytes each, the same bytes.
+    let plain = parse(&export::to_glb(&g, &ExportOptions { tangents: false, ..Default::default() }));
+    plain.check_layout();
+    let attrs = &plain.mesh_of("bark")["primitives"][0]["attributes"];
+    assert!(attrs.get("TANGENT").is_none());
+    let na = plain.accessor(attrs["NORMAL"].as_u64().unwrap());
+    assert_eq!(plain.json["bufferViews"][na["bufferView"].as_u64().unwrap() as usize]["byteStride"], 4);
+    assert_eq!(plain.snorm8(attrs["NORMAL"].as_u64().unwrap()), n);
     // Leaves, instanced: one TRS + colour per leaf, unit quaternions.
     let leaves = glb.node("leaves").unwrap();
     let inst = &leaves["extensions"]["EXT_mesh_gpu_instancing"]["attributes"];
@@ -264,32 +291,124 @@ fn glb_leaf_modes_and_options() {
     assert!(plain.json["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"].is_array());
 }
 
+/// The wind attributes of `glb`'s bark decoded as the mesh's `extras.wind_attributes` say:
+/// 8 values per vertex, and the step (`scale / 65535`) of each component.
+fn decoded_wind(glb: &Glb) -> (Vec<[f32; 8]>, [f32; 8]) {
+    let bark = glb.mesh_of("bark");
+    let attrs = &bark["primitives"][0]["attributes"];
+    let doc = &bark["extras"]["wind_attributes"];
+    let mut out: Vec<[f32; 8]> = Vec::new();
+    let mut step = [0.0; 8];
+    for (half, key) in ["_WIND_PIVOT", "_WIND_PARAMS"].iter().enumerate() {
+        let f = |name: &str| -> Vec<f32> {
+            doc[key][name].as_array().unwrap().iter().map(|v| v.as_f64().unwrap() as f32).collect()
+        };
+        let (offset, scale) = (f("offset"), f("scale"));
+        for (e, q) in glb.unorm16(attrs[key].as_u64().unwrap()).iter().enumerate() {
+            if half == 0 {
+                out.push([0.0; 8]);
+            }
+            for k in 0..4 {
+                out[e][4 * half + k] = offset[k] + scale[k] * (f32::from(q[k]) / 65_535.0);
+            }
+        }
+        for k in 0..4 {
+            step[4 * half + k] = scale[k] / 65_535.0;
+        }
+    }
+    (out, step)
+}
+
 #[test]
 fn glb_wind_attributes_share_one_strided_view() {
     let mut g = preset("grown_bushy");
     let n = g.mesh.vertex_count();
-    // Synthetic wind data: 8 distinct floats per vertex.
-    g.mesh.wind = (0..n * 8).map(|i| i as f32 * 0.25).collect();
+    // Synthetic wind data: 8 distinct values per vertex, levels 0..3, phase and stiffness 0..1.
+    g.mesh.wind = (0..n * 8)
+        .map(|i| match i % 8 {
+            3 => (i / 8 % 4) as f32,
+            4 | 5 => (i / 8 % 1000) as f32 / 999.0,
+            k => i as f32 * 0.25 - k as f32,
+        })
+        .collect();
     let glb = parse(&export::to_glb(&g, &ExportOptions::default()));
     glb.check_layout();
     let bark = glb.mesh_of("bark");
     let attrs = &bark["primitives"][0]["attributes"];
     let (pivot, params) = (attrs["_WIND_PIVOT"].as_u64().unwrap(), attrs["_WIND_PARAMS"].as_u64().unwrap());
     let (a, b) = (glb.accessor(pivot), glb.accessor(params));
+    // Normalised u16 VEC4 x 2 over one view, 16 bytes per vertex, right after the colours.
     assert_eq!(a["bufferView"], b["bufferView"]);
-    assert_eq!(glb.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize]["byteStride"], 32);
-    assert_eq!((a["byteOffset"].as_u64().unwrap_or(0), b["byteOffset"].as_u64().unwrap()), (0, 16));
+    let view = &glb.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+    assert_eq!(view["byteStride"], 16);
+    assert_eq!((a["byteOffset"].as_u64().unwrap_or(0), b["byteOffset"].as_u64().unwrap()), (0, 8));
     assert_eq!((a["type"].as_str(), a["count"].as_u64()), (Some("VEC4"), Some(n as u64)));
-    let (pv, pp) = (glb.floats(pivot), glb.floats(params));
-    assert_eq!(pv[5], g.mesh.wind[40..44].to_vec());
-    assert_eq!(pp[5], g.mesh.wind[44..48].to_vec());
-    assert!(bark["extras"]["wind_attributes"]["_WIND_PARAMS"].as_str().unwrap().contains("stiffness"));
+    let colors = &glb.json["bufferViews"]
+        [glb.accessor(attrs["COLOR_0"].as_u64().unwrap())["bufferView"].as_u64().unwrap() as usize];
+    assert_eq!(
+        colors["byteOffset"].as_u64().unwrap() + colors["byteLength"].as_u64().unwrap(),
+        view["byteOffset"].as_u64().unwrap()
+    );
+    assert_eq!(glb.json["extensionsRequired"], serde_json::json!(["KHR_mesh_quantization"]));
+    // Decoded within half a step (plus float rounding) of the mesh's values; levels exact, the
+    // fixed ranges as documented.
+    let (wind, step) = decoded_wind(&glb);
+    for (v, (w, m)) in wind.iter().zip(g.mesh.wind.chunks_exact(8)).enumerate() {
+        for k in 0..8 {
+            assert!(
+                (w[k] - m[k]).abs() <= step[k] * 0.5 + m[k].abs() * 2e-7 + 1e-6,
+                "vertex {v} [{k}]: {} vs {}",
+                w[k],
+                m[k]
+            );
+        }
+        assert_eq!(w[3].round(), m[3]);
+    }
+    let doc = &bark["extras"]["wind_attributes"];
+    assert_eq!(doc["_WIND_PIVOT"]["scale"][3], 3.0);
+    assert_eq!(
+        (doc["_WIND_PARAMS"]["offset"][0].as_f64(), doc["_WIND_PARAMS"]["scale"][1].as_f64()),
+        (Some(0.0), Some(1.0))
+    );
+    assert!(doc["_WIND_PARAMS"]["fields"].as_str().unwrap().contains("stiffness"));
+    assert!(doc["decode"].as_str().unwrap().contains("65535"));
+    // The levels 0..3 are 0, 21845, 43690, 65535.
+    let q = glb.unorm16(pivot);
+    assert!((0..4).all(|e| u32::from(q[e][3]) == 21_845 * (e as u32 % 4)));
     // Off by option; and an empty `wind` writes nothing.
     let off = parse(&export::to_glb(&g, &ExportOptions { wind: false, ..Default::default() }));
     assert!(off.mesh_of("bark")["primitives"][0]["attributes"].get("_WIND_PIVOT").is_none());
+    let only = parse(&export::to_glb(&g, &ExportOptions { vertex_colors: false, ..Default::default() }));
+    only.check_layout();
+    assert_eq!(decoded_wind(&only).0, wind, "the same wind without the colours");
     g.mesh.wind.clear();
     let none = parse(&export::to_glb(&g, &ExportOptions::default()));
     assert!(none.mesh_of("bark")["primitives"][0]["attributes"].get("_WIND_PARAMS").is_none());
+}
+
+#[test]
+fn glb_wind_of_the_presets_within_a_millimetre() {
+    // The generator's own wind data: pivots, distances and radii within 1 mm on every preset
+    // with wind, phase and stiffness within 1/65535.
+    for name in presets::PRESETS.iter().map(|p| p.name) {
+        let g = preset(name);
+        if g.mesh.wind.is_empty() {
+            continue;
+        }
+        let glb = parse(&export::to_glb(&g, &ExportOptions { textures: false, ..Default::default() }));
+        let (wind, step) = decoded_wind(&glb);
+        assert!(
+            step.iter().enumerate().all(|(k, s)| *s <= if k == 4 || k == 5 { 1.0 / 65_535.0 } else { 0.002 }),
+            "{name}: {step:?}"
+        );
+        let mut worst = [0f32; 8];
+        for (w, m) in wind.iter().zip(g.mesh.wind.chunks_exact(8)) {
+            for k in 0..8 {
+                worst[k] = worst[k].max((w[k] - m[k]).abs());
+            }
+        }
+        assert!(worst.iter().all(|e| *e <= 0.001), "{name}: {worst:?}");
+    }
 }
 
 #[test]

@@ -155,6 +155,15 @@ impl GeneratedTree {
         let opts = export_options(options_json)?;
         Ok(sylva_core::export::to_glb(&self.0, &opts))
     }
+    /// [`GeneratedTree::to_glb`] left in the module's memory, for JS to read without the copy
+    /// `to_glb` makes: `new Uint8Array(file.memory().buffer, file.ptr(), file.byte_length())`,
+    /// then `file.free()`. Read the view (e.g. into a `Blob`) before calling the module again:
+    /// a call that grows the memory detaches the buffer. Freed files leave their memory to the
+    /// next export, which then writes into pages already mapped.
+    pub fn to_glb_file(&self, options_json: &str) -> Result<GlbFile, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(GlbFile(sylva_core::export::to_glb(&self.0, &opts)))
+    }
     /// The tree as Wavefront OBJ text (bark and baked leaves; `mtllib NAME.mtl`, see
     /// `sylva_core::export::obj`). `name` is the file stem the OBJ refers to.
     pub fn to_obj(&self, name: &str, options_json: &str) -> Result<String, JsValue> {
@@ -176,6 +185,26 @@ impl GeneratedTree {
     pub fn obj_texture(&self, options_json: &str, index: usize) -> Result<Vec<u8>, JsValue> {
         let opts = export_options(options_json)?;
         Ok(sylva_core::export::obj::texture_png(&self.0, &opts, index).unwrap_or_default())
+    }
+}
+
+/// An exported file in the module's memory ([`GeneratedTree::to_glb_file`]).
+#[wasm_bindgen]
+pub struct GlbFile(Vec<u8>);
+
+#[wasm_bindgen]
+impl GlbFile {
+    /// Byte offset of the file in `memory().buffer`.
+    pub fn ptr(&self) -> usize {
+        self.0.as_ptr() as usize
+    }
+    /// Length of the file in bytes.
+    pub fn byte_length(&self) -> usize {
+        self.0.len()
+    }
+    /// The module's `WebAssembly.Memory`.
+    pub fn memory(&self) -> JsValue {
+        wasm_bindgen::memory()
     }
 }
 

@@ -119,12 +119,21 @@ export function Toolbar(props: Props) {
         const [first] = response.files;
         if (response.files.length === 1 && first) {
           const name = first.name;
-          downloadBlob(new Blob([first.bytes as BlobPart], { type: first.mime }), name);
+          const blob =
+            'blob' in first
+              ? first.blob
+              : new Blob([first.bytes as BlobPart], { type: first.mime });
+          downloadBlob(blob, name);
           setStatus({ kind: 'ok', text: `Saved ${name}.` });
         } else {
           const name = `${baseName}-${format}.zip`;
           downloadBlob(
-            new Blob([zipStore(response.files) as BlobPart], { type: 'application/zip' }),
+            new Blob(
+              [zipStore(response.files.flatMap((f) => ('bytes' in f ? [f] : []))) as BlobPart],
+              {
+                type: 'application/zip',
+              },
+            ),
             name,
           );
           setStatus({

@@ -5,18 +5,38 @@ import type { WasmApi } from '../core/types';
 import { createHandler } from '../worker/handler';
 import type { WorkerResponse } from '../worker/protocol';
 import { ExportClient } from './exportClient';
-import { exportFormatsOf, fileStem } from './exportHandler';
+import { exportFormatsOf, fileStem, type ExportableTree } from './exportHandler';
+import type { ExportedFile } from './exportProtocol';
 import { crc32, zipStore } from './zip';
 
 /** The real wasm whose trees hide the exporters (a core from before the export branch). */
 function withoutExporters(): WasmApi {
   const real = loadWasm();
-  const hidden = new Set(['to_glb', 'to_obj', 'to_mtl', 'obj_texture', 'obj_texture_names']);
+  const hidden = new Set([
+    'to_glb_file',
+    'to_glb',
+    'to_obj',
+    'to_mtl',
+    'obj_texture',
+    'obj_texture_names',
+  ]);
   return {
     ...real,
     generate: (json: string) =>
       new Proxy(real.generate(json), {
         get: (tree, key): unknown => (hidden.has(String(key)) ? undefined : Reflect.get(tree, key)),
+      }),
+  };
+}
+
+/** The real wasm whose trees lack `to_glb_file` (a core from before it). */
+function withoutFileExport(): WasmApi {
+  const real = loadWasm();
+  return {
+    ...real,
+    generate: (json: string) =>
+      new Proxy(real.generate(json), {
+        get: (tree, key): unknown => (key === 'to_glb_file' ? undefined : Reflect.get(tree, key)),
       }),
   };
 }
@@ -49,7 +69,7 @@ describe('export feature check', () => {
 });
 
 describe('export request (worker handler, real core)', () => {
-  it('GLB: regenerates the params, glTF 2.0 binary, bytes transferred', () => {
+  it('GLB: regenerates the params, glTF 2.0 binary, a Blob read from the core memory', async () => {
     const { sent, handle } = collect(loadWasm());
     handle({ type: 'generate', id: 1, params: { seed: 3, levels: 2 } });
     const shown = sent[0]?.message;
@@ -68,12 +88,27 @@ describe('export request (worker handler, real core)', () => {
     const [file] = message.files;
     expect(file?.name).toBe('oak-1.glb');
     expect(file?.mime).toBe('model/gltf-binary');
-    const bytes = file?.bytes ?? new Uint8Array(0);
+    if (!file || !('blob' in file)) throw new Error('a GLB comes as a Blob');
+    expect(file.blob.type).toBe('model/gltf-binary');
+    const bytes = new Uint8Array(await file.blob.arrayBuffer());
     const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     expect(new TextDecoder().decode(bytes.subarray(0, 4))).toBe('glTF');
     expect(view.getUint32(4, true)).toBe(2);
     expect(view.getUint32(8, true)).toBe(bytes.length);
-    expect(sent.at(-1)?.transfer).toEqual([bytes.buffer]);
+    expect(sent.at(-1)?.transfer).toEqual([]);
+    // The same bytes as the copying exporter.
+    const tree = loadWasm().generate(JSON.stringify({ seed: 3, levels: 2 })) as ExportableTree;
+    expect(bytes).toEqual(tree.to_glb?.(JSON.stringify({ leaves: 'baked' })));
+    tree.free();
+  });
+
+  it('GLB from a core with only the copying exporter: bytes transferred', () => {
+    const { sent, handle } = collect(withoutFileExport());
+    handle({ type: 'export', id: 5, params: { levels: 2 }, format: 'glb' });
+    const [file] = exported(sent).files;
+    if (!file || !('bytes' in file)) throw new Error('bytes expected');
+    expect(new TextDecoder().decode(file.bytes.subarray(0, 4))).toBe('glTF');
+    expect(sent.at(-1)?.transfer).toEqual([file.bytes.buffer]);
   });
 
   it('OBJ: the OBJ, its MTL and the textures the MTL names', () => {
@@ -82,14 +117,16 @@ describe('export request (worker handler, real core)', () => {
     const files = exported(sent).files;
     const names = files.map((f) => f.name);
     expect(names.slice(0, 2)).toEqual(['fir.obj', 'fir.mtl']);
-    const obj = new TextDecoder().decode(files[0]?.bytes);
-    const mtl = new TextDecoder().decode(files[1]?.bytes);
+    const bytesOf = (f: ExportedFile | undefined) =>
+      f && 'bytes' in f ? f.bytes : new Uint8Array(0);
+    const obj = new TextDecoder().decode(bytesOf(files[0]));
+    const mtl = new TextDecoder().decode(bytesOf(files[1]));
     expect(obj).toMatch(/^mtllib fir\.mtl$/m);
     expect(obj).toMatch(/^v -?\d/m);
     expect(mtl).toMatch(/^newmtl /m);
     for (const texture of files.slice(2)) {
       expect(mtl).toContain(texture.name);
-      expect([...texture.bytes.subarray(0, 4)]).toEqual([0x89, 0x50, 0x4e, 0x47]);
+      expect([...bytesOf(texture).subarray(0, 4)]).toEqual([0x89, 0x50, 0x4e, 0x47]);
     }
   });
 
@@ -127,7 +164,9 @@ describe('ExportClient', () => {
     });
     expect(await client.formats()).toEqual(['glb', 'obj']);
     const response = await client.export({ seed: 2 }, [], 'glb');
-    expect(new TextDecoder().decode(response.files[0]?.bytes.subarray(0, 4))).toBe('glTF');
+    const [glb] = response.files;
+    const bytes = glb && 'blob' in glb ? new Uint8Array(await glb.blob.arrayBuffer()) : null;
+    expect(new TextDecoder().decode(bytes?.subarray(0, 4))).toBe('glTF');
     await expect(client.export({ levels: 99 }, [], 'obj')).rejects.toThrow(/levels/i);
     client.dispose();
     expect(stopped).toBe(1);

@@ -1,6 +1,7 @@
 /**
  * Worker side of the mesh export: feature detection of the core's exporters and one export
- * (regenerate, serialise, transfer). The core's API (`GeneratedTree`): `to_glb(options_json)`,
+ * (regenerate, serialise, transfer). The core's API (`GeneratedTree`): `to_glb_file(options_json)`
+ * (the GLB left in the module's memory, read through a view) or `to_glb(options_json)` (a copy),
  * `to_obj(name, options_json)`, `to_mtl(name, options_json)`, `obj_texture_names(name,
  * options_json)` and `obj_texture(options_json, index)` (PNG files the MTL refers to).
  */
@@ -10,8 +11,17 @@ import { volumeToCore } from '../core/volumes';
 import type { WorkerResponse } from '../worker/protocol';
 import type { ExportedFile, ExportFormat, ExportRequest } from './exportProtocol';
 
+/** A GLB in the core's memory (`GeneratedTree.to_glb_file`): read it, then free it. */
+export interface CoreFile {
+  ptr(): number;
+  byte_length(): number;
+  memory(): WebAssembly.Memory;
+  free(): void;
+}
+
 /** A generated tree with the (optional: older cores and fakes lack them) exporters. */
 export type ExportableTree = WasmTree & {
+  to_glb_file?(optionsJson: string): CoreFile;
   to_glb?(optionsJson: string): Uint8Array;
   to_obj?(name: string, optionsJson: string): string;
   to_mtl?(name: string, optionsJson: string): string;
@@ -27,7 +37,7 @@ export function exportFormatsOf(wasm: object): ExportFormat[] {
   const has = (name: string): boolean =>
     typeof (proto as Record<string, unknown>)[name] === 'function';
   const formats: ExportFormat[] = [];
-  if (has('to_glb')) formats.push('glb');
+  if (has('to_glb_file') || has('to_glb')) formats.push('glb');
   if (has('to_obj') && has('to_mtl')) formats.push('obj');
   return formats;
 }
@@ -56,10 +66,19 @@ export function exportFiles(
 ): ExportedFile[] {
   const options = JSON.stringify(leaves ? { leaves } : {});
   if (format === 'glb') {
+    const file = { name: `${fileStem(name)}.glb`, mime: 'model/gltf-binary' };
+    if (typeof tree.to_glb_file === 'function') {
+      const glb = tree.to_glb_file(options);
+      try {
+        // The view is read at once (into the Blob), before the module could grow its memory.
+        const view = new Uint8Array(glb.memory().buffer, glb.ptr(), glb.byte_length());
+        return [{ ...file, blob: new Blob([view], { type: file.mime }) }];
+      } finally {
+        glb.free();
+      }
+    }
     if (typeof tree.to_glb !== 'function') throw new Error('This Sylva core has no GLB exporter.');
-    return [
-      { name: `${fileStem(name)}.glb`, mime: 'model/gltf-binary', bytes: tree.to_glb(options) },
-    ];
+    return [{ ...file, bytes: tree.to_glb(options) }];
   }
   if (typeof tree.to_obj !== 'function' || typeof tree.to_mtl !== 'function') {
     throw new Error('This Sylva core has no OBJ exporter.');
@@ -81,7 +100,8 @@ export function exportFiles(
 }
 
 /**
- * Answers an export request: regenerates the tree and posts the files (buffers transferred).
+ * Answers an export request: regenerates the tree and posts the files (byte buffers
+ * transferred, Blobs shared).
  * Throws what `generate` or an exporter threw; the handler reports it like a generate error.
  */
 export function exportTree(
@@ -98,7 +118,7 @@ export function exportTree(
     const files = exportFiles(tree, request.format, request.leaves, request.name);
     post(
       { type: 'exported', id: request.id, format: request.format, hash, files },
-      files.map((f) => f.bytes.buffer),
+      files.flatMap((f) => ('bytes' in f ? [f.bytes.buffer] : [])),
     );
   } finally {
     try {

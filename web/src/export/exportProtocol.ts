@@ -1,7 +1,7 @@
 /**
  * Worker messages of the mesh export (GLB, OBJ + MTL). The app asks a separate export worker,
- * never the interactive one: an export regenerates the current params and returns the files'
- * bytes as transferables.
+ * never the interactive one: an export regenerates the current params and returns the files,
+ * as transferable bytes or (GLB) as a Blob made in the worker straight from the core's memory.
  */
 import type { Params, VolumePrimitive } from '../core/types';
 
@@ -24,12 +24,14 @@ export interface ExportRequest {
   name?: string;
 }
 
-/** One exported file (name as the files refer to each other, e.g. the OBJ's `mtllib`). */
-export interface ExportedFile {
-  name: string;
-  mime: string;
-  bytes: Uint8Array;
-}
+/**
+ * One exported file (name as the files refer to each other, e.g. the OBJ's `mtllib`): its bytes,
+ * transferred, or a Blob. A GLB comes as a Blob the worker made from a view of the core's memory
+ * (`to_glb_file`): one copy of a file that may be hundreds of MB, and none on the main thread.
+ */
+export type ExportedFile = { name: string; mime: string } & (
+  { bytes: Uint8Array } | { blob: Blob }
+);
 
 /** The exported files of request `id`, with the tree's content hash. */
 export interface ExportResponse {

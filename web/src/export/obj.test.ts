@@ -148,6 +148,31 @@ describe('GLB export', () => {
       expect(normal.normalized).toBe(true);
       expect(Math.hypot(normal.getX(7), normal.getY(7), normal.getZ(7))).toBeCloseTo(1, 2);
       expect((bark.geometry.index?.count ?? 0) / 3).toBe(meta.triangles);
+      // Wind: normalised u16 attributes; offset + scale · value (from the mesh's extras, which
+      // three.js puts in userData) gives back the core's wind data within half a step.
+      const wind = tree.wind();
+      const doc = bark.userData.wind_attributes as Record<
+        string,
+        { offset: number[]; scale: number[] }
+      >;
+      for (const [name, key, first] of [
+        ['_wind_pivot', '_WIND_PIVOT', 0],
+        ['_wind_params', '_WIND_PARAMS', 4],
+      ] as const) {
+        const attr = bark.geometry.getAttribute(name);
+        expect(attr.array).toBeInstanceOf(Uint16Array);
+        expect(attr.normalized).toBe(true);
+        const { offset, scale } = doc[key] ?? { offset: [], scale: [] };
+        for (const v of [0, 7, 1000, attr.count - 1]) {
+          for (let k = 0; k < 4; k++) {
+            const decoded = (offset[k] ?? 0) + (scale[k] ?? 0) * attr.getComponent(v, k);
+            const step = (scale[k] ?? 0) / 65535;
+            expect(Math.abs(decoded - (wind[8 * v + first + k] ?? 0))).toBeLessThanOrEqual(
+              step / 2 + 1e-5,
+            );
+          }
+        }
+      }
     } finally {
       tree.free();
     }

@@ -4,16 +4,17 @@
 //! **File layout**: 12-byte header (`glTF`, version 2, total length), a JSON chunk padded with
 //! spaces to 4 bytes, a BIN chunk padded with zeros to 4 bytes. One buffer (the BIN chunk);
 //! every buffer view starts on a 4-byte boundary and holds one tightly packed array, except the
-//! normal view (`byteStride` 4: three bytes and one of padding) and the wind view (below). Vertex views have `target` 34962 (ARRAY_BUFFER), index views 34963
+//! normal views (`byteStride` 4: three bytes and one of padding, or 8 with the tangent) and the
+//! wind view (below). Vertex views have `target` 34962 (ARRAY_BUFFER), index views 34963
 //! (ELEMENT_ARRAY_BUFFER); image and instancing views have none.
 //!
 //! **Scene**: node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
 //!
 //! * **Bark** mesh: one primitive per material group of [`TreeMesh`], sharing the attributes
 //!   `POSITION` (float, with min/max), `NORMAL`, `TEXCOORD_0` (float: bark UVs run past 1),
-//!   `TANGENT` (with normal maps), `COLOR_0` (RGBA8 normalised, see [`super::bark_colors`]) and
-//!   the wind attributes; indices are `u16` when there are at most 65,535 vertices, `u32`
-//!   otherwise.
+//!   `TANGENT` (with normal maps, unless [`ExportOptions::tangents`] is off), `COLOR_0` (RGBA8
+//!   normalised, see [`super::bark_colors`]) and the wind attributes; indices are `u16` when
+//!   there are at most 65,535 vertices, `u32` otherwise.
 //! * **Quantisation** (`KHR_mesh_quantization`, in `extensionsUsed` and `extensionsRequired`
 //!   whenever there is a mesh): `NORMAL` is a normalised `i8` `VEC3` (padded to 4 bytes) and
 //!   `TANGENT` a normalised `i8` `VEC4` (`w` = ±127), in every mesh. Each vector is rounded to
@@ -22,14 +23,19 @@
 //!   length. This saves 20 of the 28 bytes per vertex the float normal and tangent took, the
 //!   bytes a big export spends most of its time writing. The bark's tangents are computed
 //!   straight into the output ([`super::frames_snorm8_append`]).
-//! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 floats per vertex stay
-//!   interleaved in one view with `byteStride` 32, read by two `VEC4` float accessors:
-//!   `_WIND_PIVOT` = `pivot_x, pivot_y, pivot_z` (m, the base of the vertex's stem), `level`
-//!   (0 trunk, 1, 2, 3); `_WIND_PARAMS` = `phase` (0..1, per stem), `stiffness` (0..1, 1 =
-//!   rigid trunk base), `distance` (m, path length from the root), `radius` (m). Custom
-//!   attribute names start with `_` as glTF requires; the mesh's `extras.wind_attributes`
-//!   repeats this description. three.js's GLTFLoader loads them as `_wind_pivot` and
-//!   `_wind_params` geometry attributes.
+//! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 values per vertex as
+//!   normalised `u16`, interleaved in one view with `byteStride` 16 right after the colours,
+//!   read by two `VEC4` accessors: `_WIND_PIVOT` = `pivot_x, pivot_y, pivot_z` (m, the base of
+//!   the vertex's stem), `level` (0 trunk, 1, 2, 3); `_WIND_PARAMS` = `phase` (0..1, per stem),
+//!   `stiffness` (0..1, 1 = rigid trunk base), `distance` (m, path length from the root),
+//!   `radius` (m). Component `k` of an attribute decodes as `offset[k] + scale[k] · q / 65535`
+//!   (`q` the stored integer; `q / 65535` is what a GPU reads from a normalised attribute), with
+//!   `offset` and `scale` in the bark mesh's `extras.wind_attributes` (next to a description of
+//!   the fields): the pivot, distance and radius span the mesh's range (a step of 0.46 mm per
+//!   30 m of range), `level` spans 0..3 (levels are exactly 0, 21845, 43690, 65535), `phase` and
+//!   `stiffness` 0..1 (`WindCodec`). Custom attribute names start with `_` as glTF requires;
+//!   three.js's GLTFLoader loads them as `_wind_pivot` and `_wind_params` geometry attributes
+//!   (normalised) and the mesh's extras as `userData`.
 //! * **Leaves**, [`LeafMode::Instanced`]: the leaf mesh (leaf units) on a node with
 //!   `EXT_mesh_gpu_instancing` (`TRANSLATION`, `ROTATION`, `SCALE` decomposed from the foliage
 //!   matrices, `_COLOR_0` the per-leaf RGB tint, float, as three.js reads it into
@@ -47,11 +53,15 @@
 //! hash. The JSON is built with `serde_json` maps (sorted keys), floats are written from `f64`
 //! so an `f32` min/max reads back exactly: equal trees give equal bytes.
 //!
-//! **Writing**: one pass per view, appended in order into a buffer reserved at its final size,
-//! through a small stack block (no zero fill of the big arrays, no temporary arrays; only the
-//! tangent accumulator and the bark tint are zeroed first); [`write_into`] reuses the caller's
-//! allocation.
+//! **Writing**: one pass per view, appended in order into a buffer reserved at its final size:
+//! float and index arrays as one `memcpy` each (a `memory.copy` in wasm), the rest through a
+//! small stack block (no zero fill of the big arrays and no temporary arrays, except the tangent
+//! accumulator and the colours, zeroed in the output itself); the colours and the wind share
+//! one pass over the wind records. Ranges (bounds, wind) are found with plain comparisons and
+//! square roots are IEEE ones: no libm calls, which are function calls in wasm.
+//! [`write_into`] reuses the caller's allocation.
 
+use super::quant::{Unorm16, LANES};
 use super::{ExportOptions, LeafMode, TexturePngs};
 use crate::mesh::{Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
@@ -77,6 +87,7 @@ const CHUNK_BIN: u32 = 0x004e_4942;
 
 /// Description of the wind attributes, stored in the bark mesh's `extras`.
 const WIND_PIVOT_DOC: &str = "pivot_x, pivot_y, pivot_z (m, base of the vertex's stem), level (0 trunk, 1, 2, 3)";
+const WIND_DECODE_DOC: &str = "both attributes are normalized unsigned shorts: component k = offset[k] + scale[k] * (q / 65535), q the stored integer (what a GPU reads as 0..1 times scale, plus offset)";
 const WIND_PARAMS_DOC: &str =
     "phase (0..1, per stem), stiffness (0..1, 1 = rigid trunk base), distance (m, path length from the root), radius (m)";
 
@@ -88,7 +99,8 @@ enum Data<'a> {
     /// `u32` values written as `u16` (all known to fit).
     U16(&'a [u32]),
     Bytes(&'a [u8]),
-    /// Unit vectors (3 floats each) as normalised `i8` `VEC3` padded to 4 bytes ([`snorm8_unit`]).
+    /// Unit vectors (3 floats each) as normalised `i8` `VEC3` padded to 4 bytes
+    /// ([`super::normals_snorm8_append`]).
     Snorm3(&'a [f32]),
     /// Normals and tangents of a mesh interleaved, 8 bytes per vertex: the normal as in
     /// [`Data::Snorm3`], then the tangent (computed into the output,
@@ -96,8 +108,10 @@ enum Data<'a> {
     Frames(&'a TreeMesh),
     /// [`Data::Frames`] from given normals (3 floats each) and tangents (4 floats, `w` = ±1).
     FramesOf(&'a [f32], &'a [f32]),
-    /// Bark tint of a mesh, computed into the output ([`super::bark_colors_into`]).
-    BarkColors(&'a TreeMesh, Bounds),
+    /// The bark's colours (4 bytes per vertex, [`super::BarkTint`], when `Some(bounds)`)
+    /// followed by its wind data (16 bytes per vertex, [`WindCodec`], when `Some`): two views
+    /// written in one pass over the wind records.
+    BarkExtras(&'a TreeMesh, Option<Bounds>, Option<WindCodec>),
     /// Instance matrices (16 floats each) decomposed ([`super::decompose`]) into the output:
     /// translation (`VEC3`), rotation (`VEC4`) or scale (`VEC3`).
     Trs(&'a [f32], Part),
@@ -130,6 +144,19 @@ fn emit<T: Copy, const E: usize, const W: usize>(out: &mut Vec<u8>, src: &[T], f
     }
 }
 
+/// Appends 4-byte words as little-endian bytes: one `memcpy` (a `memory.copy` in wasm) of the
+/// array's bytes on little-endian targets, a loop over the values elsewhere.
+#[inline(always)]
+fn copy_words<T: bytemuck::Pod>(out: &mut Vec<u8>, src: &[T], le: impl Fn(T) -> [u8; 4]) {
+    if cfg!(target_endian = "little") {
+        out.extend_from_slice(bytemuck::cast_slice(src));
+    } else {
+        for x in src {
+            out.extend_from_slice(&le(*x));
+        }
+    }
+}
+
 /// `N` floats as little-endian bytes (`B` = 4 `N`).
 #[inline(always)]
 fn le<const N: usize, const B: usize>(v: [f32; N]) -> [u8; B] {
@@ -140,66 +167,37 @@ fn le<const N: usize, const B: usize>(v: [f32; N]) -> [u8; B] {
     o
 }
 
-/// `x` in -1..1 as a normalised `i8` (glTF: `x = max(c / 127, -1)`), rounded to nearest (ties
-/// to even) by the float addition of 1.5 · 2²³, which leaves the integer in the low mantissa
-/// bits: exact IEEE arithmetic, the same on every target, and cheaper than a conversion.
-#[inline(always)]
-fn snorm8(x: f32) -> i8 {
-    const MAGIC: f32 = 12_582_912.0; // 1.5 · 2^23
-    let r = x.clamp(-1.0, 1.0) * 127.0 + MAGIC;
-    (r.to_bits() as i32 - MAGIC.to_bits() as i32) as i8
-}
+/// The `u16` encodings of the 8 wind values of a mesh (`TreeMesh::wind`): `pivot_x`, `pivot_y`,
+/// `pivot_z`, `distance` and `radius` over the range the mesh's values span; `level` over 0..3
+/// (levels 0, 1, 2, 3 are exactly 0, 21845, 43690, 65535), `phase` and `stiffness` over 0..1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct WindCodec(pub [Unorm16; WIND_STRIDE]);
 
-/// A vertex's normal and tangent (unit vectors, `w` = ±1) as the 8 bytes of [`Data::Frames`].
-#[inline(always)]
-pub(super) fn frame_bytes(n: [f32; 3], t: [f32; 3], w: f32) -> [u8; 8] {
-    let (n, t) = (snorm8_unit(n), snorm8_unit(t));
-    [n[0] as u8, n[1] as u8, n[2] as u8, 0, t[0] as u8, t[1] as u8, t[2] as u8, if w < 0.0 { 0x81 } else { 0x7f }]
-}
-
-/// 127², the squared length of a unit vector in normalised `i8`.
-const UNIT2: i32 = 127 * 127;
-
-/// A unit vector as three normalised `i8`, unit within the glTF validator's tolerance for
-/// quantised vectors (|length − 1| ≤ 0.00674): each component rounded to nearest, and when that
-/// misses (rare: rounding can be off by up to 0.0068), [`snorm8_unit_closest`].
-#[inline(always)]
-pub(super) fn snorm8_unit(v: [f32; 3]) -> [i8; 3] {
-    let q = [snorm8(v[0]), snorm8(v[1]), snorm8(v[2])];
-    let (x, y, z) = (i32::from(q[0]), i32::from(q[1]), i32::from(q[2]));
-    // Length 126.2..127.8, inside the validator's 126.14..127.86.
-    if (15_926..=16_333).contains(&(x * x + y * y + z * z)) {
-        q
-    } else {
-        snorm8_unit_closest(v)
+impl WindCodec {
+    /// The codec of `wind` (8 floats per vertex): one pass for the ranges. Every value lies in
+    /// its component's range, so the encoding never clamps: the fixed ranges are used only when
+    /// the data fits them (they always do for the generator's meshes), else the data's range.
+    pub fn of(wind: &[f32]) -> WindCodec {
+        let (lo, hi) = super::ranges::<WIND_STRIDE>(wind);
+        let fixed = |k: usize, max: f32| {
+            if lo[k] >= 0.0 && hi[k] <= max {
+                Unorm16 { offset: 0.0, scale: max }
+            } else {
+                Unorm16::over(lo[k], hi[k])
+            }
+        };
+        let data = |k: usize| Unorm16::over(lo[k], hi[k]);
+        WindCodec([data(0), data(1), data(2), fixed(3, 3.0), fixed(4, 1.0), fixed(5, 1.0), data(6), data(7)])
     }
-}
 
-/// The floor/ceiling combination of `127 v` whose length is closest to 127 (first in
-/// `x`-fastest order on ties). Within 0.5 of 127 for any unit `v`.
-#[cold]
-#[inline(never)]
-fn snorm8_unit_closest(v: [f32; 3]) -> [i8; 3] {
-    let len2 = |q: [i32; 3]| q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-    let lo = v.map(|x| {
-        let x = x.clamp(-1.0, 1.0) * 127.0;
-        let t = x as i32; // toward zero
-        if (t as f32) > x {
-            t - 1
-        } else {
-            t
-        }
-    });
-    let mut best = lo;
-    let mut err = i32::MAX;
-    for k in 0..8 {
-        let c = [lo[0] + (k & 1), lo[1] + ((k >> 1) & 1), lo[2] + ((k >> 2) & 1)].map(|x| x.clamp(-127, 127));
-        let e = (len2(c) - UNIT2).abs();
-        if e < err {
-            (best, err) = (c, e);
-        }
+    /// `offset` and `scale` of components `k..k + 4` as JSON.
+    fn json(&self, k: usize) -> Value {
+        let c = &self.0[k..k + 4];
+        json!({
+            "offset": floats(&c.iter().map(|e| e.offset).collect::<Vec<_>>()),
+            "scale": floats(&c.iter().map(|e| e.scale).collect::<Vec<_>>()),
+        })
     }
-    best.map(|x| x as i8)
 }
 
 impl Data<'_> {
@@ -212,7 +210,9 @@ impl Data<'_> {
             Data::Snorm3(s) => s.len() / 3 * 4,
             Data::Frames(m) => m.vertex_count() * 8,
             Data::FramesOf(n, _) => n.len() / 3 * 8,
-            Data::BarkColors(m, _) => m.vertex_count() * 4,
+            Data::BarkExtras(m, colors, wind) => {
+                m.vertex_count() * (if colors.is_some() { 4 } else { 0 } + if wind.is_some() { 16 } else { 0 })
+            }
             Data::Trs(m, part) => m.len() / 16 * if *part == Part::Rotation { 16 } else { 12 },
         }
     }
@@ -229,40 +229,49 @@ impl Data<'_> {
     /// Appends the little-endian bytes to `out`.
     fn append(&self, out: &mut Vec<u8>) {
         match *self {
-            Data::F32(s) => {
-                let whole = s.len() / 4 * 4;
-                emit::<_, 4, 16>(out, &s[..whole], |v| le(*v));
-                emit::<_, 1, 4>(out, &s[whole..], |v| v[0].to_le_bytes());
-            }
-            Data::U32(s) => emit::<_, 1, 4>(out, s, |v| v[0].to_le_bytes()),
+            Data::F32(s) => copy_words(out, s, f32::to_le_bytes),
+            Data::U32(s) => copy_words(out, s, u32::to_le_bytes),
             Data::U16(s) => emit::<_, 1, 2>(out, s, |v| (v[0] as u16).to_le_bytes()),
             Data::Bytes(s) => out.extend_from_slice(s),
-            Data::Snorm3(s) => emit::<_, 3, 4>(out, s, |v| {
-                let [x, y, z] = snorm8_unit(*v);
-                [x as u8, y as u8, z as u8, 0]
-            }),
+            Data::Snorm3(s) => super::normals_snorm8_append(s, out),
             Data::Frames(m) => super::frames_snorm8_append(&m.positions, &m.normals, &m.uvs, &m.indices, out),
-            Data::FramesOf(n, t) => {
-                let mut block = [0u8; BLOCK];
-                let per = BLOCK / 8;
-                for (n, t) in n.chunks(3 * per).zip(t.chunks(4 * per)) {
-                    let k = n.len() / 3;
-                    for ((d, n), t) in block[..8 * k].chunks_exact_mut(8).zip(n.chunks_exact(3)).zip(t.chunks_exact(4))
-                    {
-                        d.copy_from_slice(&frame_bytes([n[0], n[1], n[2]], [t[0], t[1], t[2]], t[3]));
-                    }
-                    out.extend_from_slice(&block[..8 * k]);
-                }
-            }
-            Data::BarkColors(m, b) => {
-                let at = out.len();
-                out.resize(at + self.byte_len(), 0);
-                super::bark_colors_in(m, &b, &mut out[at..]);
-            }
+            Data::FramesOf(n, t) => super::frames_of_snorm8_append(n, t, out),
+            Data::BarkExtras(m, colors, wind) => bark_extras_append(m, colors, wind, out),
             Data::Trs(m, Part::Translation) => emit::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
             Data::Trs(m, Part::Rotation) => emit::<_, 16, 16>(out, m, |m| le(super::decompose_rotation(m))),
             Data::Trs(m, Part::Scale) => emit::<_, 16, 12>(out, m, |m| le(super::decompose_scale(m))),
         }
+    }
+}
+
+/// [`Data::BarkExtras`]: the colours are written into their (zeroed) view block by block while
+/// the wind records of the same block are appended after it, so the wind array is read once.
+fn bark_extras_append(m: &TreeMesh, colors: Option<Bounds>, wind: Option<WindCodec>, out: &mut Vec<u8>) {
+    let n = m.vertex_count();
+    let tint = colors.map(|b| super::BarkTint::new(m, &b));
+    let at = out.len();
+    if tint.is_some() {
+        out.resize(at + 4 * n, 0);
+    }
+    let w = if m.wind.len() == n * WIND_STRIDE { &m.wind[..] } else { &[][..] };
+    let codec = wind.map(|c| (c.0.map(|e| e.offset), c.0.map(|e| e.factor())));
+    let mut block = [0u8; 16 * LANES];
+    let mut base = 0;
+    while base < n {
+        let k = LANES.min(n - base);
+        if let Some(t) = &tint {
+            t.write(m, base, &mut out[at + 4 * base..at + 4 * (base + k)]);
+        }
+        if let Some((offset, factor)) = &codec {
+            let rec = w[WIND_STRIDE * base..WIND_STRIDE * (base + k)].chunks_exact(WIND_STRIDE);
+            for (d, r) in block.chunks_exact_mut(16).zip(rec) {
+                for c in 0..WIND_STRIDE {
+                    d[2 * c..2 * c + 2].copy_from_slice(&Unorm16::encode(offset[c], factor[c], r[c]).to_le_bytes());
+                }
+            }
+            out.extend_from_slice(&block[..16 * k]);
+        }
+        base += k;
     }
 }
 
@@ -303,10 +312,16 @@ fn floats(v: &[f32]) -> Value {
 }
 
 impl<'a> Doc<'a> {
-    /// Adds a buffer view (4-byte aligned) holding `d`; returns its index.
-    fn view(&mut self, d: Data<'a>, target: Option<u32>, stride: Option<usize>) -> usize {
+    /// Adds `d` to the BIN chunk (4-byte aligned); returns its offset.
+    fn data(&mut self, d: Data<'a>) -> usize {
         let offset = self.bin_len.next_multiple_of(4);
-        let len = d.byte_len();
+        self.bin_len = offset + d.byte_len();
+        self.data.push((offset, d));
+        offset
+    }
+
+    /// Adds a buffer view of `len` bytes at `offset`; returns its index.
+    fn view_at(&mut self, offset: usize, len: usize, target: Option<u32>, stride: Option<usize>) -> usize {
         let mut v = Map::new();
         v.insert("buffer".into(), json!(0));
         v.insert("byteOffset".into(), json!(offset));
@@ -318,9 +333,14 @@ impl<'a> Doc<'a> {
             v.insert("target".into(), json!(t));
         }
         self.views.push(Value::Object(v));
-        self.data.push((offset, d));
-        self.bin_len = offset + len;
         self.views.len() - 1
+    }
+
+    /// Adds a buffer view (4-byte aligned) holding `d`; returns its index.
+    fn view(&mut self, d: Data<'a>, target: Option<u32>, stride: Option<usize>) -> usize {
+        let len = d.byte_len();
+        let offset = self.data(d);
+        self.view_at(offset, len, target, stride)
     }
 
     fn accessor(&mut self, view: usize, a: Acc) -> usize {
@@ -360,7 +380,7 @@ impl<'a> Doc<'a> {
     /// The vertex attributes of a mesh (shared by its primitives).
     fn attributes(&mut self, m: &'a TreeMesh, extra: &VertexExtras<'a>) -> Map<String, Value> {
         let n = m.vertex_count();
-        let b = extra.bounds.unwrap_or_else(|| m.bounds());
+        let b = extra.bounds.unwrap_or_else(|| super::bounds_of(&m.positions));
         let mut at = Map::new();
         let pos = Acc { minmax: Some((b.min.to_vec(), b.max.to_vec())), ..Acc::new(FLOAT, "VEC3", n) };
         at.insert("POSITION".into(), json!(self.array(Data::F32(&m.positions), Some(ARRAY_BUFFER), pos)));
@@ -381,14 +401,26 @@ impl<'a> Doc<'a> {
             let tangent = Acc { normalized: true, offset: 4, ..Acc::new(BYTE, "VEC4", n) };
             at.insert("TANGENT".into(), json!(self.accessor(view, tangent)));
         }
-        if let Some(c) = extra.colors {
-            let acc = Acc { normalized: true, ..Acc::new(UNSIGNED_BYTE, "VEC4", n) };
-            at.insert("COLOR_0".into(), json!(self.array(c, Some(ARRAY_BUFFER), acc)));
+        let color = Acc { normalized: true, ..Acc::new(UNSIGNED_BYTE, "VEC4", n) };
+        let mut wind_view = None;
+        match extra.colors {
+            Some(Colors::Bytes(c)) => {
+                at.insert("COLOR_0".into(), json!(self.array(Data::Bytes(c), Some(ARRAY_BUFFER), color)));
+            }
+            Some(Colors::Bark(b)) => {
+                let offset = self.data(Data::BarkExtras(m, Some(b), extra.wind));
+                let view = self.view_at(offset, 4 * n, Some(ARRAY_BUFFER), None);
+                at.insert("COLOR_0".into(), json!(self.accessor(view, color)));
+                wind_view = extra.wind.map(|_| self.view_at(offset + 4 * n, 16 * n, Some(ARRAY_BUFFER), Some(16)));
+            }
+            None => {}
         }
         if let Some(w) = extra.wind {
-            let view = self.view(Data::F32(w), Some(ARRAY_BUFFER), Some(WIND_STRIDE * 4));
-            at.insert("_WIND_PIVOT".into(), json!(self.accessor(view, Acc::new(FLOAT, "VEC4", n))));
-            let params = Acc { offset: 16, ..Acc::new(FLOAT, "VEC4", n) };
+            let view = wind_view
+                .unwrap_or_else(|| self.view(Data::BarkExtras(m, None, Some(w)), Some(ARRAY_BUFFER), Some(16)));
+            let pivot = Acc { normalized: true, ..Acc::new(UNSIGNED_SHORT, "VEC4", n) };
+            at.insert("_WIND_PIVOT".into(), json!(self.accessor(view, pivot)));
+            let params = Acc { normalized: true, offset: 8, ..Acc::new(UNSIGNED_SHORT, "VEC4", n) };
             at.insert("_WIND_PARAMS".into(), json!(self.accessor(view, params)));
         }
         at
@@ -420,10 +452,13 @@ impl<'a> Doc<'a> {
         let mut mesh = Map::new();
         mesh.insert("name".into(), json!(name));
         mesh.insert("primitives".into(), Value::Array(primitives));
-        if extra.wind.is_some() {
+        if let Some(w) = &extra.wind {
+            let (mut pivot, mut params) = (w.json(0), w.json(4));
+            pivot["fields"] = json!(WIND_PIVOT_DOC);
+            params["fields"] = json!(WIND_PARAMS_DOC);
             mesh.insert(
                 "extras".into(),
-                json!({"wind_attributes": {"_WIND_PIVOT": WIND_PIVOT_DOC, "_WIND_PARAMS": WIND_PARAMS_DOC}}),
+                json!({"wind_attributes": {"_WIND_PIVOT": pivot, "_WIND_PARAMS": params, "decode": WIND_DECODE_DOC}}),
             );
         }
         self.meshes.push(Value::Object(mesh));
@@ -435,10 +470,20 @@ impl<'a> Doc<'a> {
 #[derive(Default)]
 struct VertexExtras<'a> {
     tangents: Option<Data<'a>>,
-    colors: Option<Data<'a>>,
-    wind: Option<&'a [f32]>,
+    colors: Option<Colors<'a>>,
+    /// The wind attributes (the mesh's `wind`) and their encoding.
+    wind: Option<WindCodec>,
     /// The mesh's bounds when already known.
     bounds: Option<Bounds>,
+}
+
+/// Where a mesh's `COLOR_0` comes from.
+#[derive(Clone, Copy)]
+enum Colors<'a> {
+    /// RGBA8 per vertex.
+    Bytes(&'a [u8]),
+    /// The bark tint of the mesh with these bounds ([`super::BarkTint`]).
+    Bark(Bounds),
 }
 
 /// Everything computed (not borrowed from the tree) before the document is laid out.
@@ -456,7 +501,7 @@ pub fn write(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
     out
 }
 
-/// [`write`] into `out` (cleared first), reusing its allocation: repeated exports of big trees
+/// [`write()`] into `out` (cleared first), reusing its allocation: repeated exports of big trees
 /// then skip the operating system's zeroing of fresh pages.
 pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     let bark = &g.mesh;
@@ -464,13 +509,15 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     let has_bark = bark.vertex_count() > 0 && !bark.indices.is_empty();
     let has_leaves = opts.leaves != LeafMode::None && f.count() > 0 && !f.mesh.indices.is_empty();
     let normal_maps = opts.textures && opts.normal_maps;
+    // Tangents only for the normal maps, and only when asked for.
+    let tangents = normal_maps && opts.tangents;
     let leaf_pngs = if opts.textures && has_leaves { super::leaf_pngs(f) } else { None };
     let instanced = has_leaves && opts.leaves == LeafMode::Instanced;
     let owned = Owned {
         bark_pngs: (has_bark && opts.textures).then(|| super::bark_pngs(opts.bark_texture_size)),
         baked: (has_leaves && opts.leaves == LeafMode::Baked)
-            .then(|| super::bake_leaves(f, normal_maps && leaf_pngs.is_some())),
-        leaf_tangents: (instanced && normal_maps && leaf_pngs.is_some())
+            .then(|| super::bake_leaves(f, tangents && leaf_pngs.is_some())),
+        leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
             .then(|| super::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
         leaf_pngs,
     };
@@ -535,11 +582,12 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
     };
     if has_bark {
-        let wind = (opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE).then_some(&bark.wind[..]);
-        let bounds = bark.bounds();
+        let wind =
+            (opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE).then(|| WindCodec::of(&bark.wind));
+        let bounds = super::bounds_of(&bark.positions);
         let extra = VertexExtras {
-            tangents: (normal_maps && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
-            colors: opts.vertex_colors.then_some(Data::BarkColors(bark, bounds)),
+            tangents: (tangents && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
+            colors: opts.vertex_colors.then_some(Colors::Bark(bounds)),
             wind,
             bounds: Some(bounds),
         };
@@ -550,7 +598,7 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
     if let Some(b) = &owned.baked {
         let extra = VertexExtras {
             tangents: (!b.tangents.is_empty()).then_some(Data::FramesOf(&b.mesh.normals, &b.tangents)),
-            colors: opts.vertex_colors.then_some(Data::Bytes(&b.colors)),
+            colors: opts.vertex_colors.then_some(Colors::Bytes(&b.colors)),
             wind: None,
             bounds: None,
         };
@@ -662,43 +710,4 @@ fn assemble(
         out.resize(bin_start + bin_len, 0);
     }
     debug_assert_eq!(out.len(), total);
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn snorm8_rounds_to_nearest_and_saturates() {
-        assert_eq!([1.0, -1.0, 0.0, 0.5, -0.5, 2.0, -2.0].map(snorm8), [127, -127, 0, 64, -64, 127, -127]);
-        // 0.5 · 127 = 63.5: ties to even.
-        assert_eq!(snorm8(63.5 / 127.0), 64);
-        assert_eq!(snorm8(62.5 / 127.0), 62);
-    }
-
-    #[test]
-    fn quantised_unit_vectors_stay_unit_within_the_validator_tolerance() {
-        // A dense spiral over the sphere, plus the axes and diagonals.
-        let n = 200_000;
-        let mut dirs: Vec<[f32; 3]> = (0..n)
-            .map(|i| {
-                let z = 1.0 - 2.0 * (i as f32 + 0.5) / n as f32;
-                let r = (1.0 - z * z).max(0.0).sqrt();
-                let a = i as f32 * 2.399_963;
-                let v = glam::Vec3::new(r * crate::math::cos(a), r * crate::math::sin(a), z).normalize();
-                v.to_array()
-            })
-            .collect();
-        dirs.extend([[1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [0.577_350_3; 3]]);
-        let mut fixed = 0;
-        for v in dirs {
-            let q = snorm8_unit(v);
-            let d = q.map(|c| f32::from(c) / 127.0);
-            let len = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-            assert!((len - 1.0).abs() <= 0.00674, "{v:?} -> {q:?} ({len})");
-            assert!((0..3).all(|k| (d[k] - v[k]).abs() <= 1.0 / 127.0), "{v:?} -> {q:?}");
-            fixed += usize::from(q != v.map(snorm8));
-        }
-        assert!(fixed > 0 && fixed < n / 100, "{fixed} vectors needed the closest-length search");
-    }
 }

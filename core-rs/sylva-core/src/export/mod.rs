@@ -23,12 +23,15 @@
 pub mod glb;
 pub mod obj;
 pub mod png;
+mod quant;
+
+use quant::LANES;
 
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
 use crate::mesh::TreeMesh;
 use crate::Generated;
-use glam::{Mat3, Quat, Vec3};
+use glam::{Mat3, Vec3};
 use std::sync::{Arc, Mutex};
 
 /// How the leaves are written.
@@ -66,9 +69,13 @@ pub struct ExportOptions {
     pub wind: bool,
     /// Embed (GLB) or reference (OBJ) the baked textures. Default `true`.
     pub textures: bool,
-    /// With `textures`: the normal maps and, for them, per-vertex tangents (GLB `TANGENT`).
-    /// Default `true`.
+    /// With `textures`: the normal maps. Default `true`.
     pub normal_maps: bool,
+    /// With `normal_maps`: per-vertex tangents (GLB `TANGENT`, 4 bytes per vertex). Default
+    /// `true`. Without them viewers compute their own (the glTF 2.0 specification asks for
+    /// MikkTSpace; the Khronos validator warns that such a tangent space may differ between
+    /// implementations); computing them is the most expensive part of a big export.
+    pub tangents: bool,
     /// Per-vertex colours (`COLOR_0`): bark tint, baked leaf colours. Default `true`.
     pub vertex_colors: bool,
     /// Edge of the square bark textures in texels, a power of two from 16 to 2048. Default 512.
@@ -82,6 +89,7 @@ impl Default for ExportOptions {
             wind: true,
             textures: true,
             normal_maps: true,
+            tangents: true,
             vertex_colors: true,
             bark_texture_size: 512,
         }
@@ -112,6 +120,7 @@ impl ExportOptions {
                 "wind" => o.wind = flag()?,
                 "textures" => o.textures = flag()?,
                 "normal_maps" => o.normal_maps = flag()?,
+                "tangents" => o.tangents = flag()?,
                 "vertex_colors" => o.vertex_colors = flag()?,
                 "bark_texture_size" => {
                     o.bark_texture_size =
@@ -151,35 +160,100 @@ pub fn bark_colors_into(mesh: &TreeMesh, out: &mut [u8]) {
 
 /// [`bark_colors_into`] with the mesh's bounds already known.
 pub(crate) fn bark_colors_in(mesh: &TreeMesh, b: &crate::mesh::Bounds, out: &mut [u8]) {
-    let n = mesh.vertex_count();
-    let height = (b.max[1] - b.min[1]).max(1e-6);
-    let foot = 0.08 * height;
-    let steps = (TINT_STEPS - 1) as f32;
-    // Table [young][ground] of RGBA words.
-    let mut table = vec![[0u8; 4]; TINT_STEPS * TINT_STEPS];
-    for (k, e) in table.iter_mut().enumerate() {
-        let (young, ground) = ((k / TINT_STEPS) as f32 / steps, (k % TINT_STEPS) as f32 / steps);
-        let light = 0.82 + 0.18 * young - 0.22 * ground;
-        let grey = 0.12 * young; // young bark: less brown
-        let r = light * ((1.0 - 0.10 * ground) * (1.0 - grey) + grey);
-        let g = light * (1.0 + 0.04 * ground);
-        let bl = light * ((1.0 - 0.12 * ground) * (1.0 - grey) + grey * 1.02);
-        *e = [unorm8(r), unorm8(g), unorm8(bl), 255];
+    let tint = BarkTint::new(mesh, b);
+    for (k, c) in out.chunks_mut(4 * LANES).enumerate() {
+        tint.write(mesh, k * LANES, c);
     }
-    let (y_young, y_ground) = (steps / height, steps / foot.max(1e-6));
-    let step = |x: f32| (x.clamp(0.0, steps) + 0.5) as usize;
-    let ys = mesh.positions.chunks_exact(3).map(|p| p[1] - b.min[1]);
-    if mesh.wind.len() == n * crate::mesh::WIND_STRIDE && n > 0 {
-        let stiff = mesh.wind.chunks_exact(crate::mesh::WIND_STRIDE).map(|w| w[5]);
-        for ((c, y), s) in out.chunks_exact_mut(4).zip(ys).zip(stiff) {
-            let young = step((1.0 - s) * steps);
-            c.copy_from_slice(&table[young * TINT_STEPS + step(steps - y * y_ground)]);
+}
+
+/// The bark tint of one mesh ([`bark_colors`]): the table and the scales of its two inputs.
+pub(crate) struct BarkTint {
+    /// `[young][ground]` RGBA words.
+    table: Vec<[u8; 4]>,
+    min_y: f32,
+    y_young: f32,
+    y_ground: f32,
+    /// Whether "young" comes from the wind data's stiffness.
+    stiffness: bool,
+}
+
+impl BarkTint {
+    pub(crate) fn new(mesh: &TreeMesh, b: &crate::mesh::Bounds) -> BarkTint {
+        let height = (b.max[1] - b.min[1]).max(1e-6);
+        let foot = 0.08 * height;
+        let steps = (TINT_STEPS - 1) as f32;
+        let mut table = vec![[0u8; 4]; TINT_STEPS * TINT_STEPS];
+        for (k, e) in table.iter_mut().enumerate() {
+            let (young, ground) = ((k / TINT_STEPS) as f32 / steps, (k % TINT_STEPS) as f32 / steps);
+            let light = 0.82 + 0.18 * young - 0.22 * ground;
+            let grey = 0.12 * young; // young bark: less brown
+            let r = light * ((1.0 - 0.10 * ground) * (1.0 - grey) + grey);
+            let g = light * (1.0 + 0.04 * ground);
+            let bl = light * ((1.0 - 0.12 * ground) * (1.0 - grey) + grey * 1.02);
+            *e = [unorm8(r), unorm8(g), unorm8(bl), 255];
         }
-    } else {
-        for (c, y) in out.chunks_exact_mut(4).zip(ys) {
-            c.copy_from_slice(&table[step(y * y_young) * TINT_STEPS + step(steps - y * y_ground)]);
+        let n = mesh.vertex_count();
+        BarkTint {
+            table,
+            min_y: b.min[1],
+            y_young: steps / height,
+            y_ground: steps / foot.max(1e-6),
+            stiffness: n > 0 && mesh.wind.len() == n * crate::mesh::WIND_STRIDE,
         }
     }
+
+    /// The colours of vertices `first..first + out.len() / 4` into `out`.
+    #[inline(always)]
+    pub(crate) fn write(&self, mesh: &TreeMesh, first: usize, out: &mut [u8]) {
+        let k = out.len() / 4;
+        let steps = (TINT_STEPS - 1) as f32;
+        let step = |x: f32| (x.clamp(0.0, steps) + 0.5) as i32 as usize;
+        let ys = mesh.positions[3 * first..3 * (first + k)].chunks_exact(3).map(|p| p[1] - self.min_y);
+        if self.stiffness {
+            let w = crate::mesh::WIND_STRIDE;
+            let stiff = mesh.wind[w * first..w * (first + k)].chunks_exact(w).map(|r| r[5]);
+            for ((c, y), s) in out.chunks_exact_mut(4).zip(ys).zip(stiff) {
+                c.copy_from_slice(&self.table[step((1.0 - s) * steps) * TINT_STEPS + step(steps - y * self.y_ground)]);
+            }
+        } else {
+            for (c, y) in out.chunks_exact_mut(4).zip(ys) {
+                c.copy_from_slice(&self.table[step(y * self.y_young) * TINT_STEPS + step(steps - y * self.y_ground)]);
+            }
+        }
+    }
+}
+
+/// Bounds of points (3 floats each) with plain comparisons (`f32::min` is a libm call in wasm);
+/// a zero box when there are none. The same box as `TreeMesh::bounds` (NaN never wins).
+pub(crate) fn bounds_of(positions: &[f32]) -> crate::mesh::Bounds {
+    if positions.len() < 3 {
+        return crate::mesh::Bounds { min: [0.0; 3], max: [0.0; 3] };
+    }
+    // Four points per record: 12 lanes run as vector code where there is vector code.
+    let whole = positions.len() / 12 * 12;
+    let (lo4, hi4) = ranges::<12>(&positions[..whole]);
+    let (mut lo, mut hi) = ranges::<3>(&positions[whole..]);
+    for j in 0..4 {
+        for k in 0..3 {
+            lo[k] = if lo4[3 * j + k] < lo[k] { lo4[3 * j + k] } else { lo[k] };
+            hi[k] = if hi4[3 * j + k] > hi[k] { hi4[3 * j + k] } else { hi[k] };
+        }
+    }
+    crate::mesh::Bounds { min: lo, max: hi }
+}
+
+/// Per-lane smallest and largest values of records of `N` floats (infinities for none), with
+/// plain comparisons (NaN never wins).
+pub(crate) fn ranges<const N: usize>(v: &[f32]) -> ([f32; N], [f32; N]) {
+    let mut lo = [f32::INFINITY; N];
+    let mut hi = [f32::NEG_INFINITY; N];
+    for r in v.chunks_exact(N) {
+        for k in 0..N {
+            lo[k] = if r[k] < lo[k] { r[k] } else { lo[k] };
+            hi[k] = if r[k] > hi[k] { r[k] } else { hi[k] };
+        }
+    }
+    (lo, hi)
 }
 
 /// Steps per axis of the bark tint table ([`bark_colors`]).
@@ -206,61 +280,98 @@ pub fn tangents(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32]
     tangent_sums(positions, uvs, indices, &mut acc);
     let mut out = Vec::with_capacity(acc.len() / 4);
     for (o, nn) in acc.chunks_exact(16).zip(normals.chunks_exact(3)) {
-        let (u, w) = tangent_of(o.try_into().expect("16 bytes per vertex"), nn);
+        let (u, w) = tangent_of(bytemuck::pod_read_unaligned(o), &[nn[0], nn[1], nn[2]]);
         out.extend_from_slice(&[u.x, u.y, u.z, w]);
     }
     out
 }
 
+/// Unit normals (3 floats each) appended to `out` as glTF normalised `i8`, 4 bytes per vertex
+/// (`xyz`, one byte of padding), each unit within the glTF validator's tolerance (see [`glb`]).
+pub fn normals_snorm8_append(normals: &[f32], out: &mut Vec<u8>) {
+    let mut block = [0u8; 4 * LANES];
+    for c in normals.chunks(3 * LANES) {
+        for (d, v) in block.chunks_exact_mut(4).zip(c.chunks_exact(3)) {
+            d.copy_from_slice(&quant::snorm8_unit_word([v[0], v[1], v[2]]).to_le_bytes());
+        }
+        out.extend_from_slice(&block[..c.len() / 3 * 4]);
+    }
+}
+
 /// Normals and [`tangents`] appended to `out` as glTF normalised `i8`, 8 bytes per vertex: the
 /// normal (`xyz`, one byte of padding), then the tangent (`xyz`, `w` = ±127); each vector unit
 /// within the glTF validator's tolerance (see [`glb`]). The `16 n` bytes from the current end of
-/// `out` serve as the tangent accumulator, compacted in place (vertex `v` reads bytes
-/// `16 v..16 v + 16` and then writes `8 v..8 v + 8`, which no later vertex reads) and then
-/// truncated: no temporary array, and the pages touched are the output's own (reserve the room
-/// to avoid a reallocation).
+/// `out` serve as the tangent accumulator, compacted in place (block by block: the vertices
+/// `v` of a block read bytes `16 v..16 v + 16`, then write `8 v..8 v + 8`, which no later block
+/// reads) and then truncated: no temporary array, and the pages touched are the output's own
+/// (reserve the room to avoid a reallocation).
 pub fn frames_snorm8_append(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32], out: &mut Vec<u8>) {
     let n = positions.len() / 3;
     let at = out.len();
     out.resize(at + 16 * n, 0);
     let acc = &mut out[at..];
     tangent_sums(positions, uvs, indices, acc);
-    for (v, nn) in normals.chunks_exact(3).enumerate().take(n) {
-        let o: [u8; 16] = acc[16 * v..16 * v + 16].try_into().expect("16 bytes per vertex");
-        let (u, w) = tangent_of(&o, nn);
-        acc[8 * v..8 * v + 8].copy_from_slice(&glb::frame_bytes([nn[0], nn[1], nn[2]], u.to_array(), w));
+    let normals: &[[f32; 3]] = bytemuck::cast_slice(&normals[..3 * n]);
+    let mut block = [0u8; 8 * LANES];
+    for (b, nb) in normals.chunks(LANES).enumerate() {
+        let first = b * LANES;
+        for (v, (d, nn)) in block.chunks_exact_mut(8).zip(nb).enumerate() {
+            let o: [f32; 4] = bytemuck::pod_read_unaligned(&acc[16 * (first + v)..16 * (first + v) + 16]);
+            let (u, w) = tangent_of(o, nn);
+            d.copy_from_slice(&frame_word(*nn, u.to_array(), w).to_le_bytes());
+        }
+        // The block's output ends at 8 (first + LANES), before the next block's slots begin at
+        // 16 (first + LANES): nothing still to be read is overwritten.
+        acc[8 * first..8 * (first + nb.len())].copy_from_slice(&block[..8 * nb.len()]);
     }
     out.truncate(at + 8 * n);
 }
 
-/// Little-endian `f32` `k` of a 16-byte accumulator slot.
+/// A vertex's normal and tangent (unit vectors, `w` = ±1) as the 8 little-endian bytes of
+/// [`frames_snorm8_append`].
 #[inline(always)]
-fn f32_at(o: &[u8; 16], k: usize) -> f32 {
-    f32::from_le_bytes([o[4 * k], o[4 * k + 1], o[4 * k + 2], o[4 * k + 3]])
+fn frame_word(n: [f32; 3], t: [f32; 3], w: f32) -> u64 {
+    let w: u32 = if w < 0.0 { 0x81 } else { 0x7f };
+    u64::from(quant::snorm8_unit_word(n)) | u64::from(quant::snorm8_unit_word(t) | w << 24) << 32
 }
 
-/// Lengyel's sums: per vertex, 4 little-endian `f32` in `acc` (zero on entry): the UV-area
-/// weighted `dP/du` of its triangles and the sum of their handedness votes.
+/// Normals (3 floats each) and given tangents (4 floats each, `w` = ±1) appended to `out` as
+/// [`frames_snorm8_append`] writes them.
+pub fn frames_of_snorm8_append(normals: &[f32], tangents: &[f32], out: &mut Vec<u8>) {
+    let mut block = [0u8; 8 * LANES];
+    for (c, t) in normals.chunks(3 * LANES).zip(tangents.chunks(4 * LANES)) {
+        for ((d, n), t) in block.chunks_exact_mut(8).zip(c.chunks_exact(3)).zip(t.chunks_exact(4)) {
+            d.copy_from_slice(&frame_word([n[0], n[1], n[2]], [t[0], t[1], t[2]], t[3]).to_le_bytes());
+        }
+        out.extend_from_slice(&block[..c.len() / 3 * 8]);
+    }
+}
+
+/// Lengyel's sums: per vertex, 4 native-endian `f32` in `acc` (zero on entry, 16 bytes per
+/// vertex, any alignment): the UV-area weighted `dP/du` of its triangles and the sum of their
+/// handedness votes.
 fn tangent_sums(positions: &[f32], uvs: &[f32], indices: &[u32], acc: &mut [u8]) {
-    let p = |i: usize| Vec3::new(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+    let n = acc.len() / 16;
+    let pos: &[[f32; 3]] = bytemuck::cast_slice(&positions[..3 * n]);
+    let uv: &[[f32; 2]] = bytemuck::cast_slice(&uvs[..2 * n]);
     for tri in indices.chunks_exact(3) {
         let (a, b, c) = (tri[0] as usize, tri[1] as usize, tri[2] as usize);
-        let (pa, pb, pc) = (p(a), p(b), p(c));
-        let (e1, e2) = (pb - pa, pc - pa);
-        let (du1, dv1) = (uvs[2 * b] - uvs[2 * a], uvs[2 * b + 1] - uvs[2 * a + 1]);
-        let (du2, dv2) = (uvs[2 * c] - uvs[2 * a], uvs[2 * c + 1] - uvs[2 * a + 1]);
+        let (pa, pb, pc) = (pos[a], pos[b], pos[c]);
+        let (ua, ub, uc) = (uv[a], uv[b], uv[c]);
+        let e1 = [pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]];
+        let e2 = [pc[0] - pa[0], pc[1] - pa[1], pc[2] - pa[2]];
+        let (du1, dv1) = (ub[0] - ua[0], ub[1] - ua[1]);
+        let (du2, dv2) = (uc[0] - ua[0], uc[1] - ua[1]);
         let r = du1 * dv2 - du2 * dv1;
         if r == 0.0 || !r.is_finite() {
             continue;
         }
         let s = if r > 0.0 { 1.0 } else { -1.0 };
-        let dir = (e1 * dv2 - e2 * dv1) * s;
+        let d = [(e1[0] * dv2 - e2[0] * dv1) * s, (e1[1] * dv2 - e2[1] * dv1) * s, (e1[2] * dv2 - e2[2] * dv1) * s, s];
         for v in [a, b, c] {
-            let o: &mut [u8; 16] = (&mut acc[16 * v..16 * v + 16]).try_into().expect("16 bytes per vertex");
-            let sum = [f32_at(o, 0) + dir.x, f32_at(o, 1) + dir.y, f32_at(o, 2) + dir.z, f32_at(o, 3) + s];
-            for (d, x) in o.chunks_exact_mut(4).zip(sum) {
-                d.copy_from_slice(&x.to_le_bytes());
-            }
+            let slot = &mut acc[16 * v..16 * v + 16];
+            let o: [f32; 4] = bytemuck::pod_read_unaligned(slot);
+            slot.copy_from_slice(bytemuck::bytes_of(&[o[0] + d[0], o[1] + d[1], o[2] + d[2], o[3] + d[3]]));
         }
     }
 }
@@ -268,11 +379,11 @@ fn tangent_sums(positions: &[f32], uvs: &[f32], indices: &[u32], acc: &mut [u8])
 /// A vertex's tangent from its sums ([`tangent_sums`]) and normal: the sum made perpendicular to
 /// the normal and normalised (any perpendicular unit vector when that fails), and `w` = ±1.
 #[inline(always)]
-fn tangent_of(o: &[u8; 16], nn: &[f32]) -> (Vec3, f32) {
-    let nv = Vec3::new(nn[0], nn[1], nn[2]);
-    let d = Vec3::new(f32_at(o, 0), f32_at(o, 1), f32_at(o, 2));
+fn tangent_of(o: [f32; 4], nn: &[f32; 3]) -> (Vec3, f32) {
+    let nv = Vec3::from_array(*nn);
+    let d = Vec3::new(o[0], o[1], o[2]);
     let u = crate::math::unit_or(d - nv * nv.dot(d), || any_perpendicular(nv));
-    (u, if f32_at(o, 3) < 0.0 { -1.0 } else { 1.0 })
+    (u, if o[3] < 0.0 { -1.0 } else { 1.0 })
 }
 
 /// A unit vector perpendicular to `n` (for vertices no triangle gives a tangent).
@@ -298,7 +409,44 @@ pub fn decompose_rotation(m: &[f32]) -> [f32; 4] {
     let c0 = if c0.cross(c1).dot(c2) < 0.0 { -c0 } else { c0 };
     let x = crate::math::unit_or(c0, || Vec3::X);
     let y = crate::math::unit_or(c1 - x * x.dot(c1), || crate::math::unit_or(x.cross(Vec3::Z), || Vec3::Y));
-    Quat::from_mat3(&Mat3::from_cols(x, y, x.cross(y))).normalize().to_array()
+    let q = quat_from_axes(x, y, x.cross(y));
+    // `Quat::normalize`, with the IEEE square root (glam's goes through libm, a function call
+    // in wasm; both are correctly rounded, so the results are the same).
+    let inv = 1.0 / (q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]).sqrt();
+    q.map(|c| c * inv)
+}
+
+/// `Quat::from_mat3` of the rotation with these axis columns (glam's operations in glam's
+/// order, after DirectXMath's `XMQuaternionRotationMatrix`), with the IEEE square root.
+fn quat_from_axes(x: Vec3, y: Vec3, z: Vec3) -> [f32; 4] {
+    let (m00, m01, m02) = (x.x, x.y, x.z);
+    let (m10, m11, m12) = (y.x, y.y, y.z);
+    let (m20, m21, m22) = (z.x, z.y, z.z);
+    if m22 <= 0.0 {
+        let dif10 = m11 - m00;
+        let omm22 = 1.0 - m22;
+        if dif10 <= 0.0 {
+            let four_xsq = omm22 - dif10;
+            let inv = 0.5 / four_xsq.sqrt();
+            [four_xsq * inv, (m01 + m10) * inv, (m02 + m20) * inv, (m12 - m21) * inv]
+        } else {
+            let four_ysq = omm22 + dif10;
+            let inv = 0.5 / four_ysq.sqrt();
+            [(m01 + m10) * inv, four_ysq * inv, (m12 + m21) * inv, (m20 - m02) * inv]
+        }
+    } else {
+        let sum10 = m11 + m00;
+        let opm22 = 1.0 + m22;
+        if sum10 <= 0.0 {
+            let four_zsq = opm22 - sum10;
+            let inv = 0.5 / four_zsq.sqrt();
+            [(m02 + m20) * inv, (m12 + m21) * inv, four_zsq * inv, (m01 - m10) * inv]
+        } else {
+            let four_wsq = opm22 + sum10;
+            let inv = 0.5 / four_wsq.sqrt();
+            [(m12 - m21) * inv, (m20 - m02) * inv, (m01 - m10) * inv, four_wsq * inv]
+        }
+    }
 }
 
 /// The scale part of [`decompose`]: the lengths of the three axis columns, the first negative
@@ -307,8 +455,9 @@ pub fn decompose_scale(m: &[f32]) -> [f32; 3] {
     let c0 = Vec3::new(m[0], m[1], m[2]);
     let c1 = Vec3::new(m[4], m[5], m[6]);
     let c2 = Vec3::new(m[8], m[9], m[10]);
-    let sx = c0.length();
-    [if c0.cross(c1).dot(c2) < 0.0 { -sx } else { sx }, c1.length(), c2.length()]
+    let len = |c: Vec3| c.dot(c).sqrt(); // `Vec3::length` with the IEEE square root
+    let sx = len(c0);
+    [if c0.cross(c1).dot(c2) < 0.0 { -sx } else { sx }, len(c1), len(c2)]
 }
 
 /// The leaves as one mesh in tree space: each instance's copy of the leaf mesh transformed by
@@ -452,6 +601,7 @@ pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Quat;
 
     #[test]
     fn options_from_json() {
@@ -476,6 +626,33 @@ mod tests {
             assert!((a - b).abs() < 1e-5, "{back} vs {m}");
         }
         assert!((Quat::from_array(r).length() - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn decompose_matches_glam_bit_for_bit() {
+        // The glam formulation the IEEE-square-root one replaces.
+        let glam_rotation = |m: &[f32]| {
+            let (c0, c1, c2) = (Vec3::from_slice(&m[0..3]), Vec3::from_slice(&m[4..7]), Vec3::from_slice(&m[8..11]));
+            let c0 = if c0.cross(c1).dot(c2) < 0.0 { -c0 } else { c0 };
+            let x = crate::math::unit_or(c0, || Vec3::X);
+            let y = crate::math::unit_or(c1 - x * x.dot(c1), || crate::math::unit_or(x.cross(Vec3::Z), || Vec3::Y));
+            Quat::from_mat3(&Mat3::from_cols(x, y, x.cross(y))).normalize().to_array()
+        };
+        let glam_scale = |m: &[f32]| {
+            let (c0, c1, c2) = (Vec3::from_slice(&m[0..3]), Vec3::from_slice(&m[4..7]), Vec3::from_slice(&m[8..11]));
+            let sx = c0.length();
+            [if c0.cross(c1).dot(c2) < 0.0 { -sx } else { sx }, c1.length(), c2.length()]
+        };
+        let mut rng = crate::rng::Rng::new(7, "decompose");
+        for i in 0..20_000 {
+            let mut r = || rng.next_f32() * 2.0 - 1.0;
+            let axis = Vec3::new(r(), r(), r()).normalize_or(Vec3::Y);
+            let q = Quat::from_axis_angle(axis, r() * 3.2);
+            let s = Vec3::new(if i % 3 == 0 { -0.3 } else { 0.3 } + r() * 0.1, 0.5 + r() * 0.2, 0.4);
+            let m = glam::Mat4::from_scale_rotation_translation(s, q, Vec3::new(r(), r(), r())).to_cols_array();
+            assert_eq!(decompose_rotation(&m).map(f32::to_bits), glam_rotation(&m).map(f32::to_bits), "{m:?}");
+            assert_eq!(decompose_scale(&m).map(f32::to_bits), glam_scale(&m).map(f32::to_bits), "{m:?}");
+        }
     }
 
     #[test]
