@@ -11,6 +11,7 @@ import { loadWasm, realPresets } from '../testing/realWasm';
 import type { WasmTree } from '../core/types';
 
 interface Exporting extends WasmTree {
+  wind(): Float32Array;
   to_glb(optionsJson: string): Uint8Array;
   to_obj(name: string, optionsJson: string): string;
   to_mtl(name: string, optionsJson: string): string;
