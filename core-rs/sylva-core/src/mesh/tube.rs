@@ -278,6 +278,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     let mut bridges_len = 0u64;
     let parent_of = |i: usize| stems[i].parent.map_or(0, |p| p as usize);
     let loops = weld::collar_loops(q);
+    let mut fallback: Vec<f32> = Vec::new();
     for (i, s) in stems.iter().enumerate() {
         let start = ts.len();
         if twigs[i] {
@@ -290,7 +291,9 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             continue;
         }
         let t0 = junctions[i].map_or(0.0, |j| j.t_start);
-        let dropped = plan_rings(s, q, &inserted[extra[i].clone()], TAU / sides[i] as f32, t0, &mut ts);
+        let feet = &inserted[extra[i].clone()];
+        let pad = TAU / sides[i] as f32;
+        plan_rings(s, q, feet, pad, t0, &mut ts);
         if is_dense(i) {
             holes::densify(s, sides[i], p, &mut ts, start);
         }
@@ -300,9 +303,16 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         // Quads, tip fan and base fan; a junction's zip and collar quads.
         indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
         if junctions[i].is_some() {
-            // Either the footprint loop and the collar loops, or a fallback sweeping the dropped
-            // rings again (the junction ring itself stays one of them).
-            vertices += (dropped.saturating_sub(1).max(loops + 1)) as u64 * ring;
+            // Either the footprint loop and the collar loops, or a fallback swept from the
+            // parent's axis: planned here as it would be (densified for holes too), so that the
+            // budget holds either way.
+            fallback.clear();
+            plan_rings(s, q, feet, pad, 0.0, &mut fallback);
+            if is_dense(i) {
+                holes::densify(s, sides[i], p, &mut fallback, 0);
+            }
+            let more = fallback.len().saturating_sub(plan.rings.len());
+            vertices += (more.max(loops + 1)) as u64 * ring;
             bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
                 + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
                 * 3;
