@@ -220,6 +220,7 @@ fn generate(args: &[String]) -> Result<String, String> {
         out["weld_fallbacks"] = g.stats.welds.weld_fallbacks.into();
         out["split_welds"] = g.stats.welds.split_welds.into();
         out["split_fallbacks"] = g.stats.welds.split_fallbacks.into();
+        out["forks"] = g.stats.welds.forks.into();
     }
     if opts.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g

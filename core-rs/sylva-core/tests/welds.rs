@@ -251,3 +251,26 @@ fn welding_adds_few_vertices_and_most_junctions_weld() {
     assert!(a < 1.6 * b, "welded {a} vs plain {b} vertices");
     assert!(welded.stats.welds.welds > 4 * welded.stats.welds.weld_fallbacks, "{:?}", welded.stats.welds);
 }
+
+#[test]
+fn shallow_splits_fork_into_a_smooth_y() {
+    // CA Black Oak's trunk splits at 3° to 14°: too shallow for a footprint on the original's
+    // side, so each such clone forks its original instead (one tube splitting in two).
+    let mut p = sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap();
+    p.levels = 1;
+    let g = generate(&p).unwrap();
+    assert_mesh_invariants(&g, "ca_black_oak, trunk only");
+    assert_closed(&g, "ca_black_oak, trunk only");
+    let stems = &g.skeleton.stems;
+    let splits = (1..stems.len()).filter(|&i| stems[stems[i].parent.unwrap() as usize].level == stems[i].level).count();
+    let w = g.stats.welds;
+    assert!(splits >= 10 && w.forks * 3 >= splits * 2, "{w:?} of {splits} splits");
+    assert_eq!(w.forks, w.split_welds, "{w:?}: every trunk split is shallow");
+    // A fork is one surface with its original.
+    assert_eq!(count_components(&g), stems.len() - w.welds, "{w:?}");
+    // Off: the clones sit in their originals as separate closed tubes.
+    p.weld = false;
+    let g = generate(&p).unwrap();
+    assert_eq!(g.stats.welds.forks, 0);
+    assert_eq!(count_components(&g), stems.len());
+}

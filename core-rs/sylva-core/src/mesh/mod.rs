@@ -3,6 +3,7 @@
 //! [`MeshBuilder`] (lyon's `GeometryBuilder` idea), so there is one layout to document and check.
 
 pub mod bark;
+pub mod fork;
 pub mod holes;
 pub mod topology;
 pub mod trunk;

@@ -15,7 +15,7 @@
 //! indices (skipping claimed quads) and the junctions' triangles.
 
 use super::trunk::{ring_circles, union_outline};
-use super::{holes, twig, weld, Material, MeshBuilder, TreeMesh, WIND_STRIDE};
+use super::{fork, holes, twig, weld, Material, MeshBuilder, TreeMesh, WIND_STRIDE};
 use crate::error::SylvaError;
 use crate::math::{cos, rad, sin, unit_or, TAU};
 use crate::params::TreeParams;
@@ -87,6 +87,8 @@ pub struct WeldStats {
     pub split_welds: usize,
     /// Of the fallbacks, split clones.
     pub split_fallbacks: usize,
+    /// Of the split welds, shallow splits built as a smooth Y fork ([`super::fork`]).
+    pub forks: usize,
 }
 
 /// Insert `t` into the sorted `out[first..]`.
@@ -254,7 +256,28 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             }
         })
         .collect();
+    let mut sides = sides;
+    if p.weld {
+        // Forks need an even number of sides on both branches of a split.
+        for (i, s) in stems.iter().enumerate() {
+            let split = |j: usize| {
+                weld::is_candidate(stems, j)
+                    && stems[j].parent.is_some_and(|q| stems[q as usize].level == stems[j].level)
+            };
+            if split(i) {
+                let o = s.parent.map_or(i, |q| q as usize);
+                sides[o] += sides[o] % 2;
+                sides[i] += sides[i] % 2;
+            }
+        }
+    }
     let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
+    // A fork's clone has its original's sides (column k of both points the same way).
+    for i in 0..n {
+        if let Some(j) = junctions[i].filter(|j| j.fork) {
+            sides[i] = sides[j.parent as usize];
+        }
+    }
     // Welding wins: a twig candidate with a junction is swept as a tube and welded.
     let twigs: Vec<bool> = twig_candidates.iter().zip(&junctions).map(|(&t, j)| t && j.is_none()).collect();
     // The junctions of each parent's welded children, grouped by parent, sorted along it.
@@ -297,6 +320,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         if is_dense(i) {
             holes::densify(s, sides[i], p, &mut ts, start);
         }
+        fork::keep_gaps(feet, &mut ts, start);
         let plan = StemPlan { rings: start..ts.len(), sides: sides[i] };
         let ring = u64::from(plan.sides) + 1;
         vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
@@ -311,6 +335,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             if is_dense(i) {
                 holes::densify(s, sides[i], p, &mut fallback, 0);
             }
+            fork::keep_gaps(feet, &mut fallback, 0);
             let more = fallback.len().saturating_sub(plan.rings.len());
             vertices += (more.max(loops + 1)) as u64 * ring;
             bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
@@ -354,50 +379,61 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
         let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
         let wind = &winds[i];
-        let sweep_plan = |ts: &[f32], rings: std::ops::Range<usize>, frames: &mut [Frame], out: &mut MeshBuilder| {
+        let sweep_plan = |ts: &[f32],
+                          rings: std::ops::Range<usize>,
+                          frames: &mut [Frame],
+                          start: Option<(Vec3, f32)>,
+                          out: &mut MeshBuilder| {
             let (ts, frames) = (&ts[rings.clone()], &mut frames[rings.clone()]);
             let mut m = match &profile {
-                Some(tp) => sweep_trunk(stem, ts, table, tp, wind, frames, out),
-                None => sweep(stem, ts, table, lobes, wind, frames, out),
+                Some(tp) => sweep_trunk(stem, ts, table, tp, wind, frames, start, out),
+                None => sweep(stem, ts, table, lobes, wind, frames, start, out),
             };
             m.ring0 = rings.start;
             m
         };
-        let mut m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
+        // A fork's clone starts from its original's frame and bark at the split.
+        let start = junctions[i].filter(|j| j.fork).and_then(|j| {
+            let parent = meshes[j.parent as usize].as_ref()?;
+            fork::clone_start(&j, parent, &ts, &frames, &out)
+        });
+        let mut m = sweep_plan(&ts, plan.rings.clone(), &mut frames, start, &mut out);
         if let Some(j) = &junctions[i] {
             let parent = meshes[j.parent as usize].as_ref().expect("parents are swept first");
-            let ok = weld::join(
-                &weld::Join {
-                    junction: j,
-                    parent,
-                    parent_stem: &stems[j.parent as usize],
-                    child: &m,
-                    child_stem: stem,
-                    ts: &ts,
-                    frames: &frames,
-                    wind,
-                    loops,
-                },
-                &mut claimed,
-                &mut out,
-                &mut bridges,
-                &mut scratch,
-            );
+            let join = weld::Join {
+                junction: j,
+                parent,
+                parent_stem: &stems[j.parent as usize],
+                child: &m,
+                child_stem: stem,
+                ts: &ts,
+                frames: &frames,
+                wind,
+                loops,
+            };
+            let ok = if j.fork {
+                start.is_some() && fork::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch.tris)
+            } else {
+                weld::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch)
+            };
             if ok {
                 m.base = Base::Welded;
                 stats.welds += 1;
                 stats.split_welds += usize::from(is_clone(i));
+                stats.forks += usize::from(j.fork);
             } else {
                 // Fall back to a closed tube from the parent's axis, as if never welded.
                 out.truncate_vertices(m.first);
                 let start = ts.len();
-                plan_rings(stem, q, &inserted[extra[i].clone()], TAU / sides[i] as f32, 0.0, &mut ts);
+                let feet = &inserted[extra[i].clone()];
+                plan_rings(stem, q, feet, TAU / sides[i] as f32, 0.0, &mut ts);
                 if is_dense(i) {
                     holes::densify(stem, sides[i], p, &mut ts, start);
                 }
+                fork::keep_gaps(feet, &mut ts, start);
                 frames.resize(ts.len(), Frame::default());
                 plan.rings = start..ts.len();
-                m = sweep_plan(&ts, plan.rings.clone(), &mut frames, &mut out);
+                m = sweep_plan(&ts, plan.rings.clone(), &mut frames, None, &mut out);
                 stats.weld_fallbacks += 1;
                 stats.split_fallbacks += usize::from(is_clone(i));
             }
@@ -529,6 +565,7 @@ fn sweep(
     lobes: Option<(u32, f32)>,
     wind: &StemWind,
     frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
     out: &mut MeshBuilder,
 ) -> StemMesh {
     match lobes {
@@ -536,9 +573,9 @@ fn sweep(
             let sides = circle.len() - 1;
             let lobe: Vec<f32> =
                 (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
-            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, frames, out)
+            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, frames, start, out)
         }
-        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, frames, out),
+        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, frames, start, out),
     }
 }
 
@@ -551,6 +588,7 @@ fn sweep_with(
     factor: &dyn Fn(usize, usize) -> f32,
     wind: &StemWind,
     frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
     out: &mut MeshBuilder,
 ) -> StemMesh {
     let sides = circle.len() - 1;
@@ -564,9 +602,11 @@ fn sweep_with(
     let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
     let mut seg = (0, stem.segment(0));
     let (_, t0) = seg.1.eval(0.0);
-    let mut normal = unit_or(stem.base_normal - t0 * stem.base_normal.dot(t0), || t0.any_orthonormal_vector());
+    // `start`: a fork's clone takes its original's frame normal and `v` at the split.
+    let (reference, v_base) = start.unwrap_or((stem.base_normal, 0.0));
+    let mut normal = unit_or(reference - t0 * reference.dot(t0), || t0.any_orthonormal_vector());
     // A welded stem starts at its junction ring: v starts where the full stem would have it.
-    let v0 = ts[0] * stem.length / (TAU * stem.radius.max(1e-6));
+    let v0 = v_base + ts[0] * stem.length / (TAU * stem.radius.max(1e-6));
     let mut v = v0;
     let mut prev: Option<(f32, f32)> = None; // (t, radius) of the previous ring
     let mut last_center = Vec3::ZERO;
@@ -740,6 +780,7 @@ fn sweep_trunk(
     tp: &TrunkProfile,
     wind: &StemWind,
     frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
     out: &mut MeshBuilder,
 ) -> StemMesh {
     let sides = circle.len() - 1;
@@ -763,5 +804,5 @@ fn sweep_trunk(
         }
         rings.push(rho.clone());
     }
-    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, frames, out)
+    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, frames, start, out)
 }

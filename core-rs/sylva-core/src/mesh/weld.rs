@@ -20,7 +20,9 @@
 //!    that would overlap one already accepted on the same parent, leave the parent's tube (below
 //!    its own junction ring, across the trunk's bottom cap or near the tip), leave at less than
 //!    10° or need a junction ring beyond half the child are not welded. Split clones are planned
-//!    first: a smooth Y matters more than a side twig.
+//!    first: a smooth Y matters more than a side twig. A split clone within 30° of its original
+//!    forks it instead ([`super::fork`]: the original's tube splits in two), when the two
+//!    tubes separate within the first half of the clone.
 //! 2. **Footprint loop** ([`join`], after the parent's and the child's rings are swept). For every
 //!    column of the child's junction ring, the line along the child's axis through that column,
 //!    widened to the collar's radius `r'`, is followed back to where it leaves the parent's
@@ -70,7 +72,7 @@ use glam::{Vec2, Vec3};
 /// it the child leaves the parent's surface too far along its own length.
 const MIN_SIN: f32 = 0.17;
 /// The junction ring must sit in the first half of the child.
-const MAX_START: f32 = 0.5;
+pub(crate) const MAX_START: f32 = 0.5;
 /// How far (in footprint lengths) the parent's nearest ring below and above a footprint may be:
 /// the hole spans the rows between them. Farther rings get a ring added at the footprint's end.
 pub(crate) const REACH: f32 = 1.0;
@@ -93,6 +95,9 @@ pub(crate) struct Junction {
     pub phi: f32,
     /// Half-width of the footprint around the parent (radians).
     pub beta: f32,
+    /// A shallow split clone forked from its original ([`super::fork`]): `t_lo` is the split
+    /// ring on the original, `t_hi` the original's next ring, and no other ring lies between.
+    pub fork: bool,
 }
 
 impl Junction {
@@ -120,7 +125,7 @@ pub(crate) fn collar_loops(quality: f32) -> usize {
 }
 
 /// How far the trunk's surface reaches beyond its nominal radius (lobes, fluting, ripple).
-fn surface_bound(p: &TreeParams) -> f32 {
+pub(crate) fn surface_bound(p: &TreeParams) -> f32 {
     let lobes = 1.0 + if p.lobes > 0 { p.lobe_depth } else { 0.0 };
     let refine =
         if p.refine_curves > 0 { (p.refine_offset + p.refine_radius) * (1.0 + p.refine_variation) } else { 0.0 };
@@ -184,15 +189,23 @@ fn geometry(stems: &[Stem], i: usize, p: &TreeParams) -> Option<Junction> {
     let n = unit_or(par.base_normal - t * par.base_normal.dot(t), || t.any_orthonormal_vector());
     let w = s.sample(t_start).0 - c;
     let phi = atan2(w.dot(t.cross(n)), w.dot(n));
-    Some(Junction { parent: pi, t_start, t_lo, t_hi, foot, phi, beta })
+    Some(Junction { parent: pi, t_start, t_lo, t_hi, foot, phi, beta, fork: false })
 }
 
 /// Step 1: the junction of every stem that can be welded (None for the others).
 pub(crate) fn plan(skeleton: &Skeleton, p: &TreeParams, sides: &[u32]) -> Vec<Option<Junction>> {
     let stems = &skeleton.stems;
     let n = stems.len();
-    let geo: Vec<Option<Junction>> =
-        (0..n).map(|i| if is_candidate(stems, i) { geometry(stems, i, p) } else { None }).collect();
+    // A shallow split clone forks its original; the others open a footprint in their parent.
+    let geo: Vec<Option<Junction>> = (0..n)
+        .map(|i| {
+            if is_candidate(stems, i) {
+                super::fork::geometry(stems, i, p, sides).or_else(|| geometry(stems, i, p))
+            } else {
+                None
+            }
+        })
+        .collect();
     let mut out = vec![None; n];
     // Accepted footprints per parent as linked lists: (junction, next).
     let mut head = vec![u32::MAX; n];
@@ -261,7 +274,7 @@ pub(crate) struct Scratch {
     pos: Vec<Vec3>,
     along: Vec<Vec3>,
     chord: Vec<f32>,
-    tris: Vec<u32>,
+    pub(crate) tris: Vec<u32>,
     /// The footprint loop: position, normal and wind per column of the junction ring.
     foot: Vec<(Vec3, Vec3, [f32; WIND_STRIDE], [f32; 2])>,
     /// The parent quad (row, column) under each footprint point, and where in it.
@@ -511,14 +524,7 @@ pub(crate) fn join(
         }
     }
     let collar_tris = sc.tris.len();
-    // Every new triangle must be non-degenerate and wound with its vertex normals.
-    let good = |out: &MeshBuilder, tris: &[u32]| {
-        tris.chunks_exact(3).all(|t| {
-            let ((a, na), (b, nb), (c, nc)) = (out.vertex_at(t[0]), out.vertex_at(t[1]), out.vertex_at(t[2]));
-            let cross = (b - a).cross(c - a);
-            cross.length_squared() > 0.0 && cross.dot(na + nb + nc) > 0.0
-        })
-    };
+    let good = well_wound;
     // The footprint loop is the crease between the parent's surface (the zip) and the collar:
     // its normal blends theirs, halfway if that suits both, else leaning to one side. The hole
     // is tried as found, then one quad wider all round (more room for the zip).
@@ -565,6 +571,16 @@ pub(crate) fn join(
     }
     out.truncate_vertices(first_new);
     false
+}
+
+/// True if every triangle of `tris` is non-degenerate and wound with its vertex normals (its
+/// face normal on the side of their sum).
+pub(crate) fn well_wound(out: &MeshBuilder, tris: &[u32]) -> bool {
+    tris.chunks_exact(3).all(|t| {
+        let ((a, na), (b, nb), (c, nc)) = (out.vertex_at(t[0]), out.vertex_at(t[1]), out.vertex_at(t[2]));
+        let cross = (b - a).cross(c - a);
+        cross.length_squared() > 0.0 && cross.dot(na + nb + nc) > 0.0
+    })
 }
 
 /// Step 5: the hole over parent rows `ra..rb` and columns `ja..jb`, zipped to the footprint loop
