@@ -14,9 +14,13 @@
 //!   clone's `v` continues the original's at `S`: bark UVs run on unbroken into both branches.
 //! * **Halves.** `S` is cut into two halves by the plane through the original's axis across the
 //!   clone's direction: columns `a..a+n/2` face the clone (inner), the rest face away (outer).
-//! * **Side patches.** The original's own quads from `S`'s outer half to `Jo`'s outer half stay;
-//!   the quads of `S`'s inner half are claimed, and `S`'s inner half is joined instead to the
-//!   clone's `Jc` columns `a..a+n/2` (the clone's outer half, facing the same way).
+//! * **Side patches** (the ramiform's twig-like patches). Row `S` of the original is claimed
+//!   (not emitted). `S`'s outer half is joined to `Jo`'s outer half, and `S`'s inner half to the
+//!   clone's `Jc` columns `a..a+n/2` (the clone's outer half, facing the same way), each by
+//!   [`rows`] rows of quads: per column a cubic Bezier from `S` (leaving along the original's
+//!   axis, so the trunk below flows on without a kink; toward the front and back of the
+//!   clone's patch leaning with the clone) to the ring (arriving along its branch's axis),
+//!   handles 0.4 of the chord, loops at even parameters, normals across the loops.
 //! * **Top patch (the crotch).** `Jo`'s inner half (facing the clone) and `Jc`'s inner half
 //!   (facing the original) both come down to a **crotch seam** from `S`'s front column to its
 //!   back column: where two tubes diverging at ±α meet, their surfaces cross on an ellipse in the
@@ -26,15 +30,16 @@
 //!   (times 0.9, or 0.7, 0.97 if a triangle turns the wrong way), with the normal of the two
 //!   columns' normals plus the branches' mean direction, and the original's wind record. The
 //!   seam's vertices are written twice, with the original's `u` and with the clone's, so each
-//!   side's bark stays continuous.
+//!   side's bark stays continuous. One row of quads joins the seam to each ring; the row's end
+//!   quads meet the side patches' end columns and are zipped strips ([`zip`]).
 //!
-//! The result is edge-manifold by construction: every edge of the opened half row, of `Jo`'s
-//! inner half and of `Jc` is used once more, and the seam's ends are `S`'s own front and back
-//! vertices, whose column edges the original's outer quads and the side patch already use.
-//! Every new triangle must be non-degenerate and wound with its vertex normals
-//! ([`super::weld::well_wound`]); else nothing is committed and the clone falls back to a
-//! separate tube. The original has no rings between `S` and `Jo` ([`keep_gaps`]), and no other
-//! child's footprint may use those rows (the fork's footprint spans the whole way round).
+//! The result is edge-manifold by construction: every edge of row `S`, of `Jo` and of `Jc` is
+//! used once more, the seam's edges by both crotch rows, and the seam's ends are `S`'s own front
+//! and back vertices. Every new triangle must be non-degenerate and wound with its vertex normals
+//! ([`super::weld::well_wound`]; a skewed side-patch quad may take its other diagonal); else
+//! nothing is committed and the clone falls back to a separate tube. The original has no rings
+//! between `S` and `Jo` ([`keep_gaps`]), and no other child's footprint may use those rows (the
+//! fork's footprint spans the whole way round).
 
 use super::tube::Frame;
 use super::weld::{surface_bound, well_wound, Join, Junction, MAX_START};
@@ -137,18 +142,95 @@ fn split_ring(j: &Junction, pm: &super::tube::StemMesh, ts: &[f32]) -> Option<us
     (rs + 1 < pts.len() && pts[rs] == j.t_lo && pts[rs + 1] == j.t_hi).then_some(rs)
 }
 
-/// Builds the fork of [`Join::child`] on [`Join::parent`] (see the module notes). On success the
-/// inner half of row `S` is marked in `claimed`, the crotch loop stays in `out` and the new
-/// triangles go to `bridges`; on failure nothing is changed.
+/// Number of quad rows of each branch's collar: about one per 1.5 radii of the fork's length
+/// at quality 1, 2 to 6.
+pub(crate) fn rows(j: &Junction, original: &Stem, quality: f32) -> usize {
+    let len = (j.t_hi - j.t_lo) * original.length;
+    let r = original.radius_at(j.t_lo).max(1e-6);
+    ((quality * len / (1.5 * r)).ceil() as usize).clamp(2, 6)
+}
+
+/// Vertices [`join`] adds at most for a fork of `sides` sides with `rows` side-patch rows: two
+/// side patches of `rows - 1` loops of `sides / 2 + 2` vertices (one a seam copy) and the
+/// crotch seam's inner vertices, twice.
+pub(crate) fn vertices(sides: u32, rows: usize) -> usize {
+    let h = sides as usize / 2;
+    2 * (rows - 1) * (h + 2) + 2 * (h - 1)
+}
+
+/// Indices [`join`] adds at most: the side patches' quads and the crotch's row of quads (whose
+/// end quads become fans of `rows + 1` triangles).
+pub(crate) fn indices(sides: u32, rows: usize) -> usize {
+    let h = sides as usize / 2;
+    3 * (2 * 2 * h * rows + 2 * 2 * h + 4 * rows)
+}
+
+/// One side patch: the half ring of `S` from column `start` (`h + 1` columns, around the stem)
+/// up to the same columns of a branch's ring, with `loops` loops between.
+struct Patch {
+    start: usize,
+    /// Whether the columns pass the seam (column `n`) inside: that column is stored twice.
+    wraps: bool,
+    /// First vertex of the loops (loop by loop, [`Patch::width`] vertices each).
+    first: u32,
+}
+
+impl Patch {
+    fn width(&self, h: usize) -> usize {
+        h + 1 + usize::from(self.wraps)
+    }
+
+    /// Slot in a loop of column `e` (0..=h) as the left (`right` false) or right end of a quad.
+    fn slot(&self, e: usize, right: bool, n: usize) -> usize {
+        let cu = self.start + e;
+        if self.wraps && (cu > n || (cu == n && !right)) {
+            e + 1
+        } else {
+            e
+        }
+    }
+
+    /// `u` of a slot's vertices (the seam copy has 1).
+    fn u(&self, e: usize, right: bool, n: usize) -> f32 {
+        let cu = self.start + e;
+        if cu == n && (right || !self.wraps) {
+            1.0
+        } else {
+            (cu % n) as f32 / n as f32
+        }
+    }
+
+    /// Vertex of a ring starting at `ring` under column `e` as a left or right end.
+    fn ring(&self, ring: u32, e: usize, right: bool, n: usize) -> u32 {
+        let cu = self.start + e;
+        if cu % n == 0 && cu > 0 && right {
+            ring + n as u32
+        } else {
+            ring + (cu % n) as u32
+        }
+    }
+
+    /// Loop `li`'s vertex of column `e`.
+    fn at(&self, li: usize, e: usize, right: bool, n: usize) -> u32 {
+        let h = n / 2;
+        self.first + (li * self.width(h) + self.slot(e, right, n)) as u32
+    }
+}
+
+/// Builds the fork of [`Join::child`] on [`Join::parent`] (see the module notes) with `rows`
+/// side-patch rows ([`rows`]). On success row `S` of the original is marked in `claimed`, the
+/// new vertices stay in `out` and the new triangles go to `bridges`; on failure nothing is
+/// changed.
 pub(crate) fn join(
     j: &Join,
+    rows: usize,
     claimed: &mut [bool],
     out: &mut MeshBuilder,
     bridges: &mut Vec<u32>,
     tris: &mut Vec<u32>,
 ) -> bool {
     let (pm, cm) = (j.parent, j.child);
-    if pm.sides != cm.sides || pm.sides % 2 != 0 {
+    if pm.sides != cm.sides || pm.sides % 2 != 0 || rows < 2 {
         return false;
     }
     let Some(rs) = split_ring(j.junction, pm, j.ts) else { return false };
@@ -165,50 +247,109 @@ pub(crate) fn join(
     let phi = atan2(w.dot(fs.tangent.cross(fs.normal)), w.dot(fs.normal));
     let a = (((phi - 0.5 * PI) / (TAU / n as f32)).round() as i64).rem_euclid(n as i64) as usize;
     let claim = |c: usize| pm.claim + rs * n + c % n;
-    if (0..h).any(|k| claimed[claim(a + k)]) {
+    if (0..n).any(|c| claimed[claim(c)]) {
         return false;
     }
     // The two vertices of the quad at column `c` of a ring (the second may be the seam copy).
     let quad = |first: u32, c: usize| (first + (c % n) as u32, first + (c % n) as u32 + 1);
     // The facing columns: Jo's column a + k and Jc's column a - k.
-    let p_at = |k: usize| if k < h { quad(o_first, a + k).0 } else { quad(o_first, a + h - 1).1 };
-    let q_at = |k: usize| if k < h { quad(c_first, a + n - k - 1).1 } else { quad(c_first, a + n - h).0 };
+    let p_at = |k: usize| o_first + ((a + k) % n) as u32;
+    let q_at = |k: usize| c_first + ((a + n - k) % n) as u32;
     let up = unit_or(fo.tangent + fc.tangent, || fs.tangent);
-    // The crotch seam runs from S's front column up between the facing halves and down to S's
-    // back column, as the two tubes' intersection does (an ellipse in the plane between them):
-    // at angle θ_k = π k / (n/2), `cos θ_k` of S's radius toward the front and `sin θ_k` of the
-    // way up to the facing columns' midpoint (times `RISES`, tried in order).
     let (sf, sb) = (s_first + (a % n) as u32, s_first + ((a + h) % n) as u32);
     let front = out.vertex_at(sf).0 - fs.centre;
+    let v_s = out.uv_at(sf)[1];
     let first_new = out.next_index();
-    // The seam's vertices twice: with the original's `u` (its side of the crotch) and with the
-    // clone's (the other side), so the bark's `u` never jumps inside a triangle.
-    let m_at = |k: usize, side: u32| match k {
+    // The seam's inner vertices, once per branch (each with its branch's `u`); its ends are S's
+    // front and back vertices.
+    let m_at = |k: usize, branch: u32| match k {
         0 => sf,
         k if k == h => sb,
-        k => first_new + side * (h as u32 - 1) + k as u32 - 1,
+        k => first_new + branch * (h as u32 - 1) + k as u32 - 1,
     };
-    let v_s = out.uv_at(sf)[1];
+    let loops = rows - 1;
+    // Side patches: the original's outer half (columns a + h ..= a + n) up to Jo, the clone's
+    // outer half (columns a ..= a + h) up to Jc.
+    let mut next = first_new + 2 * (h as u32 - 1);
+    let mut patch = |start: usize| {
+        let start = start % n;
+        let p = Patch { start, wraps: start + h > n, first: next };
+        next += (loops * p.width(h)) as u32;
+        p
+    };
+    let sides = [(patch(a + h), o_first, fo), (patch(a), c_first, fc)];
     for rise in RISES {
         out.truncate_vertices(first_new);
-        {
-            let mut rows = Vec::with_capacity(2 * (h - 1));
-            for side in 0..2 {
-                for k in 1..h {
-                    let ((pp, pn), (qp, qn)) = (out.vertex_at(p_at(k)), out.vertex_at(q_at(k)));
-                    // Both copies sway with the original (a crack would open between two records).
-                    let wr = out.wind_at(p_at(k));
-                    let theta = PI * k as f32 / h as f32;
-                    let up_by = rise * sin(theta);
-                    let bottom = fs.centre + front * cos(theta);
-                    let m = bottom + ((pp + qp) * 0.5 - bottom) * up_by;
-                    let nm = unit_or(pn + qn + up, || up);
-                    let [u, v] = out.uv_at(if side == 0 { p_at(k) } else { q_at(k) });
-                    rows.push((m, nm, [u, v_s + (v - v_s) * up_by], wr));
+        let mut verts: Vec<(Vec3, Vec3, [f32; 2], [f32; WIND_STRIDE])> = Vec::new();
+        // The crotch seam (see the module notes).
+        for branch in 0..2 {
+            for k in 1..h {
+                let ((pp, pn), (qp, qn)) = (out.vertex_at(p_at(k)), out.vertex_at(q_at(k)));
+                let theta = PI * k as f32 / h as f32;
+                let up_by = rise * sin(theta);
+                let base = fs.centre + front * cos(theta);
+                let m = base + ((pp + qp) * 0.5 - base) * up_by;
+                let nm = unit_or(pn + qn + up, || up);
+                // Both copies sway with the original (a crack would open between two records);
+                // distance and radius rise from S's with the seam, as `v` does.
+                let (w0, mut wr) = (out.wind_at(sf), out.wind_at(p_at(k)));
+                wr[6] = w0[6] + (wr[6] - w0[6]) * up_by;
+                wr[7] = w0[7] + (wr[7] - w0[7]) * up_by;
+                let [u, v] = out.uv_at(if branch == 0 { p_at(k) } else { q_at(k) });
+                verts.push((m, nm, [u, v_s + (v - v_s) * up_by], wr));
+            }
+        }
+        // Side patches: per column a cubic Bezier from S (leaving along the original's axis) to
+        // the branch's ring (arriving along the branch's axis); the loops at even parameters.
+        for (p, ring, f) in &sides {
+            let mut cols: Vec<(Vec3, Vec3, Vec3, Vec3)> = Vec::with_capacity(h + 1);
+            for e in 0..=h {
+                let (p0, p3) =
+                    (out.vertex_at(p.ring(s_first, e, false, n)).0, out.vertex_at(p.ring(*ring, e, false, n)).0);
+                let len = (p3 - p0).length();
+                // Leaving S along the original's axis, except toward the front and back of the
+                // clone's patch, which lean with the clone: there they must stay on the clone's
+                // side of the crotch seam, which leans half as much.
+                let t0 = if *ring == c_first {
+                    let side = sin(PI * e as f32 / h as f32);
+                    unit_or(fs.tangent * side + f.tangent * (1.0 - side), || fs.tangent)
+                } else {
+                    fs.tangent
+                };
+                cols.push((p0, p0 + t0 * (0.4 * len), p3 - f.tangent * (0.4 * len), p3));
+            }
+            let bez = |e: usize, u: f32| {
+                let (p0, b1, b2, p3) = cols[e];
+                let v = 1.0 - u;
+                let pos = p0 * (v * v * v) + b1 * (3.0 * u * v * v) + b2 * (3.0 * u * u * v) + p3 * (u * u * u);
+                let along = (b1 - p0) * (v * v) + (b2 - b1) * (2.0 * u * v) + (p3 - b2) * (u * u);
+                (pos, along)
+            };
+            for li in 0..loops {
+                let u = (li + 1) as f32 / rows as f32;
+                for slot in 0..p.width(h) {
+                    // Column of the slot, and whether it is the seam copy's right-end twin.
+                    let (e, right) = match (p.wraps, p.start + slot) {
+                        (true, cu) if cu > n => (slot - 1, false),
+                        (true, cu) if cu == n => (slot, true),
+                        _ => (slot, false),
+                    };
+                    let (pos, along) = bez(e, u);
+                    let around = bez((e + 1).min(h), u).0 - bez(e.saturating_sub(1), u).0;
+                    let nm = unit_or(around.cross(along), || unit_or(pos - f.centre, || up));
+                    let (bottom, top) = (p.ring(s_first, e, right, n), p.ring(*ring, e, right, n));
+                    let (w0, mut wr) = (out.wind_at(bottom), out.wind_at(top));
+                    wr[6] = w0[6] * (1.0 - u) + wr[6] * u;
+                    wr[7] = w0[7] * (1.0 - u) + wr[7] * u;
+                    let v = out.uv_at(bottom)[1] * (1.0 - u) + out.uv_at(top)[1] * u;
+                    verts.push((pos, nm, [p.u(e, right, n), v], wr));
                 }
             }
-            let block = out.alloc_vertices(rows.len());
-            for (k, (m, nm, uv, wr)) in rows.iter().enumerate() {
+        }
+        debug_assert_eq!(first_new as usize + verts.len(), next as usize);
+        {
+            let block = out.alloc_vertices(verts.len());
+            for (k, (m, nm, uv, wr)) in verts.iter().enumerate() {
                 block.positions[3 * k..3 * k + 3].copy_from_slice(&m.to_array());
                 block.normals[3 * k..3 * k + 3].copy_from_slice(&nm.to_array());
                 block.uvs[2 * k..2 * k + 2].copy_from_slice(uv);
@@ -218,21 +359,58 @@ pub(crate) fn join(
             }
         }
         tris.clear();
+        // Side patches, as the original's own quads.
+        for (p, ring, _) in &sides {
+            for row in 0..rows {
+                let lo = |e: usize, r: bool| if row == 0 { p.ring(s_first, e, r, n) } else { p.at(row - 1, e, r, n) };
+                let hi = |e: usize, r: bool| if row + 1 == rows { p.ring(*ring, e, r, n) } else { p.at(row, e, r, n) };
+                for e in 0..h {
+                    quad_tris(out, tris, [lo(e, false), lo(e + 1, true), hi(e + 1, true), hi(e, false)]);
+                }
+            }
+        }
+        // The patches' end columns (from S up to a ring), bottom to top.
+        let column = |p: &Patch, ring: u32, e: usize, right: bool| {
+            let mut c = vec![p.ring(s_first, e, right, n)];
+            c.extend((0..loops).map(|li| p.at(li, e, right, n)));
+            c.push(p.ring(ring, e, right, n));
+            c
+        };
+        let (po, pc) = (&sides[0].0, &sides[1].0);
+        // Height parameter of a seam vertex (0 at S, 1 at the rings), as placed above.
+        let lift = |k: usize| rise * sin(PI * k as f32 / h as f32);
+        let chain = |c: Vec<u32>| -> Vec<(u32, f32)> {
+            let last = (c.len() - 1) as f32;
+            c.into_iter().enumerate().map(|(i, v)| (v, i as f32 / last)).collect()
+        };
+        // The crotch, original's side: the seam up to Jo's inner half. Its end quads border the
+        // original's patch's end columns (S's front and back up to Jo): zipped strips.
         for k in 0..h {
-            // Side patch: S's inner half up to Jc's outer half, as the original's own quads.
-            let (s0, s1) = quad(s_first, a + k);
-            let (c0, c1) = quad(c_first, a + k);
-            tris.extend_from_slice(&[s0, s1, c1, s0, c1, c0]);
-            // Top patch, original's side: the crotch seam (below) up to Jo's inner half.
             let (p0, p1) = quad(o_first, a + k);
-            tris.extend_from_slice(&[m_at(k, 0), m_at(k + 1, 0), p1, m_at(k, 0), p1, p0]);
-            // Top patch, clone's side: the clone's columns run the other way.
+            let (m0, m1) = (m_at(k, 0), m_at(k + 1, 0));
+            if k == 0 {
+                zip(out, tris, &chain(column(po, o_first, h, true)), &[(m1, lift(1)), (p1, 1.0)]);
+            } else if k + 1 == h {
+                zip(out, tris, &[(m0, lift(k)), (p0, 1.0)], &chain(column(po, o_first, 0, false)));
+            } else {
+                tris.extend_from_slice(&[m0, m1, p1, m0, p1, p0]);
+            }
+        }
+        // The crotch, clone's side: the clone's columns run the other way.
+        for k in 0..h {
             let (q1, q0) = quad(c_first, a + n - k - 1);
-            tris.extend_from_slice(&[m_at(k + 1, 1), m_at(k, 1), q0, m_at(k + 1, 1), q0, q1]);
+            let (m0, m1) = (m_at(k, 1), m_at(k + 1, 1));
+            if k == 0 {
+                zip(out, tris, &[(m1, lift(1)), (q1, 1.0)], &chain(column(pc, c_first, 0, false)));
+            } else if k + 1 == h {
+                zip(out, tris, &chain(column(pc, c_first, h, true)), &[(m0, lift(k)), (q0, 1.0)]);
+            } else {
+                tris.extend_from_slice(&[m1, m0, q0, m1, q0, q1]);
+            }
         }
         if well_wound(out, tris) {
-            for k in 0..h {
-                claimed[claim(a + k)] = true;
+            for c in 0..n {
+                claimed[claim(c)] = true;
             }
             bridges.extend_from_slice(tris);
             return true;
@@ -240,6 +418,43 @@ pub(crate) fn join(
     }
     out.truncate_vertices(first_new);
     false
+}
+
+/// Triangulates the strip between two chains of vertices with height parameters (0 bottom, 1
+/// top), both listed bottom to top: the strip's boundary runs from `a[0]` to `b[0]`, up `b`,
+/// from `b`'s top to `a`'s top, and down `a`. Each step advances the chain whose next vertex is
+/// lower, unless only the other step keeps its triangle wound with its normals.
+fn zip(out: &MeshBuilder, tris: &mut Vec<u32>, a: &[(u32, f32)], b: &[(u32, f32)]) {
+    let (mut i, mut j) = (0, 0);
+    while i + 1 < a.len() || j + 1 < b.len() {
+        let step_a = [a[i].0, b[j].0, a[(i + 1).min(a.len() - 1)].0];
+        let step_b = [a[i].0, b[j].0, b[(j + 1).min(b.len() - 1)].0];
+        let (can_a, can_b) = (i + 1 < a.len(), j + 1 < b.len());
+        let mut take_a = can_a && (!can_b || a[i + 1].1 <= b[j + 1].1);
+        if take_a && can_b && !well_wound(out, &step_a) && well_wound(out, &step_b) {
+            take_a = false;
+        } else if !take_a && can_a && !well_wound(out, &step_b) && well_wound(out, &step_a) {
+            take_a = true;
+        }
+        if take_a {
+            tris.extend_from_slice(&step_a);
+            i += 1;
+        } else {
+            tris.extend_from_slice(&step_b);
+            j += 1;
+        }
+    }
+}
+
+/// A quad `[p, q, r, s]` (counter-clockwise) as two triangles, split along the diagonal that
+/// keeps both wound with their normals where only one does.
+fn quad_tris(out: &MeshBuilder, tris: &mut Vec<u32>, [p, q, r, s]: [u32; 4]) {
+    let split = [p, q, r, p, r, s];
+    if well_wound(out, &split) {
+        tris.extend_from_slice(&split);
+    } else {
+        tris.extend_from_slice(&[p, q, s, q, r, s]);
+    }
 }
 
 #[cfg(test)]

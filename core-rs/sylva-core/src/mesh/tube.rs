@@ -337,7 +337,13 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             }
             fork::keep_gaps(feet, &mut fallback, 0);
             let more = fallback.len().saturating_sub(plan.rings.len());
-            vertices += (more.max(loops + 1)) as u64 * ring;
+            let fork = junctions[i].filter(|j| j.fork).map(|j| fork::rows(&j, &stems[j.parent as usize], q));
+            let joined = match fork {
+                Some(rows) => fork::vertices(sides[i], rows) as u64,
+                None => (loops as u64 + 1) * ring,
+            };
+            vertices += (more as u64 * ring).max(joined);
+            bridges_len += fork.map_or(0, |rows| fork::indices(sides[i], rows) as u64);
             bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
                 + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
                 * 3;
@@ -412,7 +418,8 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
                 loops,
             };
             let ok = if j.fork {
-                start.is_some() && fork::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch.tris)
+                let rows = fork::rows(j, &stems[j.parent as usize], q);
+                start.is_some() && fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris)
             } else {
                 weld::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch)
             };
