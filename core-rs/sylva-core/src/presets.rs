@@ -178,7 +178,7 @@ pub const PRESETS: &[Preset] = &[
             ("levels", 3.0),
             ("scale", 10.0),
             ("scale_v", 10.0),
-            ("max_vertices", 6000000.0),
+            ("max_vertices", 7000000.0),
             // 72,000 twigs: five leaves each (not the default 25) keeps it under a million leaves.
             ("leaves", 5.0),
             ("base_size", 0.05),

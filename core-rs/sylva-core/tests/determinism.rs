@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "9ebdd3672806c973"),
-    ("quaking_aspen", "2ff232666a95a842"),
-    ("black_tupelo", "a81e5183de9807a3"),
-    ("weeping_willow", "19e420221ac203bf"),
-    ("ca_black_oak", "df7ef830c88db7b3"),
-    ("fir", "1c7fd4e10213a9cf"),
-    ("oak", "d5a71fad198689fa"),
-    ("cypress", "d5aada14de3ce6f2"),
-    ("umbrella", "2ef1442501c748fa"),
-    ("weeping", "4c3cf2395c261ad8"),
-    ("grown_broadleaf", "bcdc35bd5259db15"),
-    ("grown_shrub", "007d56c892a40513"),
-    ("grown_hedgerow", "0f63f834ed25fdc9"),
-    ("grown_beside_wall", "8c82a5e3185687fe"),
-    ("grown_bushy", "be4baa5305595dd8"),
+    ("default", "e7d19e9bb4466827"),
+    ("quaking_aspen", "ff80a5db3ea2da5b"),
+    ("black_tupelo", "8afa194cab056338"),
+    ("weeping_willow", "31a9726d507dbbfc"),
+    ("ca_black_oak", "bf6742d800414397"),
+    ("fir", "5327545399bb634b"),
+    ("oak", "728fbafa9153ebf2"),
+    ("cypress", "fb3f643013029ed8"),
+    ("umbrella", "10d26da62b6b2cf7"),
+    ("weeping", "23bdca4475358959"),
+    ("grown_broadleaf", "b407898ad46f3ff8"),
+    ("grown_shrub", "201cf4b3a01a9792"),
+    ("grown_hedgerow", "5380c8c008b93283"),
+    ("grown_beside_wall", "f8bea739e2b5f4f7"),
+    ("grown_bushy", "1b358ec0246268f3"),
 ];
 
 #[test]

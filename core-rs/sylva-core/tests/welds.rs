@@ -242,13 +242,14 @@ fn the_budget_counts_junctions_conservatively_but_not_wastefully() {
 
 /// Welding opens the parent under a footprint loop found on its own facets: no full rings are
 /// added across every footprint (they had doubled the default tree's vertices, 76k -> 161k),
-/// and most junctions still weld.
+/// and most junctions still weld. (The footprint loop's second copy for the child's bark
+/// coordinates costs a tenth: 116k -> 128k.)
 #[test]
 fn welding_adds_few_vertices_and_most_junctions_weld() {
     let welded = generate(&TreeParams::default()).unwrap();
     let plain = generate(&TreeParams { weld: false, ..TreeParams::default() }).unwrap();
     let (a, b) = (welded.stats.vertices as f64, plain.stats.vertices as f64);
-    assert!(a < 1.6 * b, "welded {a} vs plain {b} vertices");
+    assert!(a < 1.75 * b, "welded {a} vs plain {b} vertices");
     assert!(welded.stats.welds.welds > 4 * welded.stats.welds.weld_fallbacks, "{:?}", welded.stats.welds);
 }
 

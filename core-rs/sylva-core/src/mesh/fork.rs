@@ -33,6 +33,9 @@
 //!   side's bark stays continuous. One row of quads joins the seam to each ring; the row's end
 //!   quads meet the side patches' end columns and are zipped strips ([`zip`]).
 //!
+//! Triangles that straddle the original's texture seam get copies of their vertices a whole
+//! turn on ([`MeshBuilder::unwrap_u`]).
+//!
 //! The result is edge-manifold by construction: every edge of row `S`, of `Jo` and of `Jc` is
 //! used once more, the seam's edges by both crotch rows, and the seam's ends are `S`'s own front
 //! and back vertices. Every new triangle must be non-degenerate and wound with its vertex normals
@@ -155,7 +158,13 @@ pub(crate) fn rows(j: &Junction, original: &Stem, quality: f32) -> usize {
 /// crotch seam's inner vertices, twice.
 pub(crate) fn vertices(sides: u32, rows: usize) -> usize {
     let h = sides as usize / 2;
-    2 * (rows - 1) * (h + 2) + 2 * (h - 1)
+    2 * (rows - 1) * (h + 2) + 2 * (h - 1) + seam_copies(sides)
+}
+
+/// Copies [`join`] may add where its triangles cross the original's bark seam
+/// ([`MeshBuilder::unwrap_u`]).
+fn seam_copies(sides: u32) -> usize {
+    2 * (sides as usize + 1)
 }
 
 /// Indices [`join`] adds at most: the side patches' quads and the crotch's row of quads (whose
@@ -408,7 +417,9 @@ pub(crate) fn join(
                 tris.extend_from_slice(&[m1, m0, q0, m1, q0, q1]);
             }
         }
-        if well_wound(out, tris) {
+        if well_wound(out, tris)
+            && out.unwrap_u(tris, seam_copies(pm.sides), |i, k| pm.seam_twin(i, k).or_else(|| cm.seam_twin(i, k)))
+        {
             for c in 0..n {
                 claimed[claim(c)] = true;
             }

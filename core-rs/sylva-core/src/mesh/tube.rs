@@ -52,6 +52,20 @@ pub(crate) struct StemMesh {
     pub v0: f32,
 }
 
+impl StemMesh {
+    /// The seam twin of ring vertex `i` a whole turn of `u` on (`turns` = 1: a ring's first
+    /// vertex, `u` 0, to its last, `u` 1; -1 the other way), if `i` is one of this stem's.
+    pub(crate) fn seam_twin(&self, i: u32, turns: i32) -> Option<u32> {
+        let stride = self.sides + 1;
+        let k = i.checked_sub(self.first).filter(|&k| k < self.rings * stride)?;
+        match (k % stride, turns) {
+            (0, 1) => Some(i + self.sides),
+            (c, -1) if c == self.sides => Some(i - self.sides),
+            _ => None,
+        }
+    }
+}
+
 /// How a stem's base ring is closed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Base {
@@ -340,7 +354,9 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             let fork = junctions[i].filter(|j| j.fork).map(|j| fork::rows(&j, &stems[j.parent as usize], q));
             let joined = match fork {
                 Some(rows) => fork::vertices(sides[i], rows) as u64,
-                None => (loops as u64 + 1) * ring,
+                // The footprint loop twice, the collar loops, and up to a ring of copies across
+                // the parent's seam (`MeshBuilder::unwrap_u`).
+                None => (loops as u64 + 3) * ring,
             };
             vertices += (more as u64 * ring).max(joined);
             bridges_len += fork.map_or(0, |rows| fork::indices(sides[i], rows) as u64);

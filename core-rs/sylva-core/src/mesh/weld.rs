@@ -53,6 +53,12 @@
 //!    triangles lie on the parent's facets. Quads join the footprint loop, the collar loops and
 //!    the junction ring. The footprint loop is the crease between the two: its normal blends the
 //!    parent's and the collar's, halfway where that suits every triangle, else leaning to one side.
+//! 6. **Bark coordinates.** The footprint loop is written twice at the same places: with the
+//!    parent's `u`, `v` for the zip (the parent's bark runs on up to the footprint) and with the
+//!    child's for the collar (the child's runs on down to it), so neither texture is squeezed
+//!    across a row; the two copies share normals and sway, so the surface stays closed. Zip
+//!    triangles that straddle the parent's texture seam get copies of their vertices a whole
+//!    turn on ([`MeshBuilder::unwrap_u`]).
 //!
 //! Every new triangle is checked before anything is committed: non-degenerate and wound with its
 //! vertex normals. If no footprint point is
@@ -477,15 +483,24 @@ pub(crate) fn join(
         }
         sc.chord.push(len);
     }
-    // Write the loops (seam duplicated: column nr repeats column 0 with u = 1).
+    // Write the loops (seam duplicated: column nr repeats column 0 with u = 1), then the
+    // footprint loop again with the child's bark coordinates (see `uv_seam`).
     let cs = j.child_stem;
     let record = j.wind.record(cs, jn.t_start, rc);
     let stride_c = nr + 1;
     let first_new = out.next_index();
+    let uv_seam = first_new + (loops * stride_c) as u32;
     sc.collar_n.clear();
     {
-        let block = out.alloc_vertices(loops * stride_c);
-        for li in 0..loops {
+        let block = out.alloc_vertices((loops + 1) * stride_c);
+        for li in 0..=loops {
+            // Loop `loops` is the footprint loop's copy: same place, normal and sway as the
+            // footprint loop (no crack under wind), but `u`, `v` and distance continue the
+            // collar's, so the child's bark runs on down to the footprint instead of being
+            // smeared across the first collar row (the parent's `u` range is a small part of
+            // the child's 0..1).
+            let (li, copy) = if li == loops { (0, true) } else { (li, false) };
+            let row = if copy { loops } else { li };
             let back = 1.0 - li as f32 / (loops + 1) as f32;
             for c in 0..stride_c {
                 let m = c % nr;
@@ -493,17 +508,25 @@ pub(crate) fn join(
                 let around = sc.pos[li * nr + (m + 1) % nr] - sc.pos[li * nr + (m + nr - 1) % nr];
                 let radial = sc.pos[k] - jf.centre;
                 let collar = unit_or(around.cross(sc.along[k]), || unit_or(radial, || jf.normal));
-                if li == 0 && c < nr {
+                if li == 0 && !copy && c < nr {
                     sc.collar_n.push(collar);
                 }
-                let slot = li * stride_c + c;
+                let slot = row * stride_c + c;
                 block.positions[slot * 3..slot * 3 + 3].copy_from_slice(&sc.pos[k].to_array());
                 block.normals[slot * 3..slot * 3 + 3].copy_from_slice(&collar.to_array());
                 let dist = back * sc.chord[m];
-                let uv = if li == 0 { sc.foot[m].3 } else { [c as f32 / nr as f32, j.child.v0 - dist / (TAU * rc)] };
+                let uv = if li == 0 && !copy {
+                    sc.foot[m].3
+                } else {
+                    [c as f32 / nr as f32, j.child.v0 - dist / (TAU * rc)]
+                };
                 block.uvs[slot * 2..slot * 2 + 2].copy_from_slice(&uv);
                 let wr = if li == 0 {
-                    sc.foot[m].2
+                    let mut wr = sc.foot[m].2;
+                    if copy {
+                        wr[6] = record[6] - dist;
+                    }
+                    wr
                 } else {
                     let mut wr = record;
                     wr[6] -= dist;
@@ -518,6 +541,7 @@ pub(crate) fn join(
     for li in 0..loops {
         let lo = first_new + (li * stride_c) as u32;
         let hi = if li + 1 < loops { lo + stride_c as u32 } else { j.child.first };
+        let lo = if li == 0 { uv_seam } else { lo };
         for m in 0..nr as u32 {
             let (a, b, c, d) = (lo + m, lo + m + 1, hi + m + 1, hi + m);
             sc.tris.extend_from_slice(&[a, b, c, a, c, d]);
@@ -534,6 +558,7 @@ pub(crate) fn join(
         for m in 0..stride_c {
             let n = unit_or(sc.foot[m % nr].1 * (1.0 - w) + sc.collar_n[m % nr] * w, || sc.collar_n[m % nr]);
             out.set_normal(first_new + m as u32, n);
+            out.set_normal(uv_seam + m as u32, n);
         }
         if !good(out, &sc.tris[..collar_tris]) {
             continue;
@@ -558,7 +583,10 @@ pub(crate) fn join(
                 jb += 1;
             }
             sc.tris.truncate(collar_tris);
-            if zip_hole(sc, j, (ra, rb, ja, jb), first_new) && good(out, &sc.tris[collar_tris..]) {
+            if zip_hole(sc, j, (ra, rb, ja, jb), first_new)
+                && good(out, &sc.tris[collar_tris..])
+                && out.unwrap_u(&mut sc.tris[collar_tris..], stride_c, |i, k| j.parent.seam_twin(i, k))
+            {
                 for r in ra..rb {
                     for c in ja..jb {
                         claimed[claim(r, c)] = true;

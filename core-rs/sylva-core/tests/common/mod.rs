@@ -40,6 +40,15 @@ pub fn assert_mesh_invariants(g: &Generated, name: &str) {
         }
     }
     assert_eq!(inverted, 0, "{name}: {inverted} triangles wound against their normals");
+    // Continuous bark: no triangle crosses a stem's texture seam (u near 0 with u near 1, which
+    // squeezes the whole bark texture into one triangle); zips and forks that straddle a seam
+    // use copies of their vertices a whole turn on.
+    let crossing = m
+        .indices
+        .chunks_exact(3)
+        .filter(|t| sylva_core::mesh::seam_shifts([t[0], t[1], t[2]].map(|i| m.uvs[i as usize * 2])) != [0; 3])
+        .count();
+    assert_eq!(crossing, 0, "{name}: {crossing} triangles cross a bark seam");
     // Standing on the ground: nothing below it except roots that dive on purpose, and those only
     // as deep as their skeleton says.
     let deepest = g
