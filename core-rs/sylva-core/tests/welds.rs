@@ -269,6 +269,27 @@ fn shallow_splits_fork_into_a_smooth_y() {
     assert_eq!(w.forks, w.split_welds, "{w:?}: every trunk split is shallow");
     // A fork is one surface with its original.
     assert_eq!(count_components(&g), stems.len() - w.welds, "{w:?}");
+    // The base split is three-way (two clones leave the trunk at one point): the second clone
+    // forks one step up, at the first fork's upper ring, so all three are one piece.
+    let twins: Vec<usize> =
+        (1..stems.len()).filter(|&i| stems[i].parent == Some(0) && stems[i].offset == stems[1].offset).collect();
+    assert_eq!(twins.len(), 2, "CA Black Oak's trunk splits in three at its base");
+    let piece = pieces(&g, &weld_ids(&g));
+    // Triangles by the wind record of their first vertex: (pivot y, level, phase) tells stems
+    // apart (the trunk's first triangle starts at vertex 0).
+    let key = |t: &[u32]| {
+        let w = &g.mesh.wind[t[0] as usize * 8..];
+        (w[1].to_bits(), w[3].to_bits(), w[4].to_bits())
+    };
+    let trunk_key = key(&g.mesh.indices[..3]);
+    let pieces_where = |keep: &dyn Fn((u32, u32, u32)) -> bool| -> std::collections::BTreeSet<u32> {
+        g.mesh.indices.chunks_exact(3).zip(&piece).filter(|(t, _)| keep(key(t))).map(|(_, &p)| p).collect()
+    };
+    let trunk = pieces_where(&|k| k == trunk_key);
+    assert_eq!(trunk.len(), 1, "the trunk is one piece");
+    let split_y = stems[twins[0]].base().y.to_bits();
+    let clones = pieces_where(&|k| k.0 == split_y && k != trunk_key);
+    assert_eq!(clones, trunk, "both clones at the base split are in the trunk's piece");
     // Off: the clones sit in their originals as separate closed tubes.
     p.weld = false;
     let g = generate(&p).unwrap();

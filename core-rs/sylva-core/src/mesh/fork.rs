@@ -68,6 +68,20 @@ const RISES: [f32; 3] = [0.9, 0.7, 0.97];
 /// quarter radii) at which their centres are [`CLEARANCE`] times their radii apart. `sides` are
 /// the stems' numbers of sides: the original's must be even.
 pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) -> Option<Junction> {
+    geometry_from(stems, i, p, sides, None)
+}
+
+/// [`geometry`] with the split moved up the original to `from` (its `t`; None: the clone's own
+/// base). A second clone that leaves at the same point as a fork forks one step up, at that
+/// fork's ring `Jo` (a fork's rows are its own): the clone then seems to leave a little higher,
+/// where it has already drawn a little away, rather than becoming a separate tube.
+pub(crate) fn geometry_from(
+    stems: &[Stem],
+    i: usize,
+    p: &TreeParams,
+    sides: &[u32],
+    from: Option<f32>,
+) -> Option<Junction> {
     let c = &stems[i];
     let pi = c.parent?;
     let o = &stems[pi as usize];
@@ -75,11 +89,12 @@ pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) 
         return None;
     }
     let (lo, lc) = (o.length.max(1e-6), c.length.max(1e-6));
-    let t_split = c.offset / lo;
-    if !(1e-3..0.9).contains(&t_split) {
+    let t_base = c.offset / lo;
+    let t_split = from.unwrap_or(t_base);
+    if !(1e-3..0.9).contains(&t_split) || t_split < t_base {
         return None;
     }
-    let (_, tan) = o.sample(t_split);
+    let (_, tan) = o.sample(t_base);
     let (_, d0) = c.sample(0.0);
     let cos = d0.dot(tan).clamp(-1.0, 1.0);
     if 1.0 - cos * cos >= MAX_SIN * MAX_SIN {
@@ -89,9 +104,11 @@ pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) 
     let r0 = o.radius_at(t_split).max(1e-6);
     let step = 0.25 * r0;
     let min_s = r0 + c.radius_at(0.0);
+    // The clone's distance from its base where the original is `s` above the split.
+    let ahead = (t_split - t_base) * lo;
     for k in 1..=400 {
         let s = k as f32 * step;
-        let (t_o, t_c) = (t_split + s / lo, s / lc);
+        let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
         if t_c > MAX_START || t_o > 0.9 {
             return None;
         }

@@ -229,17 +229,28 @@ pub(crate) fn plan(skeleton: &Skeleton, p: &TreeParams, sides: &[u32]) -> Vec<Op
                 continue;
             }
             let pad = TAU / sides[parent] as f32;
-            let mut k = head[parent];
-            let mut free = true;
-            while k != u32::MAX {
-                let (f, next) = &feet[k as usize];
-                if j.t_lo < f.t_hi && f.t_lo < j.t_hi && j.side_by_side(f, pad) {
-                    free = false;
-                    break;
+            // The first accepted footprint on the parent that `j` overlaps.
+            let blocker = |j: &Junction| {
+                let mut k = head[parent];
+                while k != u32::MAX {
+                    let (f, next) = &feet[k as usize];
+                    if j.t_lo < f.t_hi && f.t_lo < j.t_hi && j.side_by_side(f, pad) {
+                        return Some(*f);
+                    }
+                    k = *next;
                 }
-                k = *next;
+                None
+            };
+            // A fork blocked by another fork (two clones leaving at one point) forks one step
+            // up, at the other fork's upper ring; once more for a third clone.
+            let mut j = Some(j);
+            for _ in 0..3 {
+                let Some(f) = j.and_then(|j| blocker(&j)) else { break };
+                j = j
+                    .filter(|j| j.fork && f.fork)
+                    .and_then(|_| super::fork::geometry_from(stems, i, p, sides, Some(f.t_hi)));
             }
-            if free {
+            if let Some(j) = j.filter(|j| blocker(j).is_none()) {
                 feet.push((j, head[parent]));
                 head[parent] = (feet.len() - 1) as u32;
                 out[i] = Some(j);
