@@ -88,7 +88,8 @@ pub struct TreeMesh {
     /// the whole ring, increasing from ring to ring; the last vertex is the seam twin of the
     /// first (the same position, `u = 1`). Every listed vertex still sits where the sweep put
     /// it (rings a later stage rewrites, as holes do, are dropped). Meshes built otherwise may
-    /// leave it empty: it only lets the GLB writer take a ring vertex's tangent from its ring
+    /// leave it empty, and code that edits the positions or uvs of a generated mesh should
+    /// clear it: it only lets the GLB writer take a ring vertex's tangent from its ring
     /// neighbours instead of accumulating it over triangles.
     pub rings: Vec<[u32; 2]>,
 }

@@ -57,7 +57,7 @@ pub fn assert_mesh_invariants(g: &Generated, name: &str) {
 
 /// `TreeMesh::rings` as documented: sorted, disjoint runs of `sides + 1 >= 4` vertices inside the
 /// mesh, `u = j / sides` along the run (1 on the last, the seam twin, at the first's exact
-/// position), one `v` and one wind record for the whole ring.
+/// position), one `v` for the whole ring.
 pub fn assert_rings(g: &Generated, name: &str) {
     let m = &g.mesh;
     let mut end = 0;
@@ -75,9 +75,6 @@ pub fn assert_rings(g: &Generated, name: &str) {
             let u = if j == sides { 1.0 } else { j as f32 / sides as f32 };
             assert_eq!(m.uvs[2 * (f + j)], u, "{name}: ring {i} u of vertex {j}");
             assert_eq!(m.uvs[2 * (f + j) + 1], m.uvs[2 * f + 1], "{name}: ring {i} v of vertex {j}");
-            if !m.wind.is_empty() {
-                assert_eq!(m.wind[8 * (f + j)..8 * (f + j) + 8], m.wind[8 * f..8 * f + 8], "{name}: ring {i} wind {j}");
-            }
         }
     }
 }
