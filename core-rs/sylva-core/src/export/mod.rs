@@ -322,8 +322,13 @@ pub fn normals_snorm8_append(normals: &[f32], out: &mut Vec<u8>) {
 /// A mesh's normals and its tangents ([`mesh_tangents`]) appended to `out` as glTF normalised
 /// `i8`, 8 bytes per vertex: the normal (`xyz`, one byte of padding), then the tangent (`xyz`,
 /// `w` = ±127); each vector unit within the glTF validator's tolerance (see [`glb`]). One pass
-/// over the vertices in order, a block of [`LANES`] at a time ([`quant::snorm8_unit_words`]).
+/// over the vertices in order, a block of [`LANES`] at a time ([`quant::snorm8_unit_words`]);
+/// in wasm without SIMD, where the blocks only add loads and stores, one vertex at a time
+/// ([`frames_snorm8_scalar`], the same arithmetic and bytes).
 pub fn frames_snorm8_append(mesh: &TreeMesh, out: &mut Vec<u8>) {
+    if cfg!(all(target_arch = "wasm32", not(target_feature = "simd128"))) {
+        return frames_snorm8_scalar(mesh, out);
+    }
     let mut normals = [0u32; LANES];
     let mut tangents = [0u32; LANES];
     let mut block = [0u64; LANES];
@@ -336,6 +341,45 @@ pub fn frames_snorm8_append(mesh: &TreeMesh, out: &mut Vec<u8>) {
         }
         out.extend_from_slice(&bytemuck::cast_slice(&block)[..8 * k]);
     });
+}
+
+/// [`frames_snorm8_append`] one vertex at a time: each tangent direction (ring neighbours'
+/// difference, or Lengyel's sums) through [`tangent_of`] and [`frame_word`], the arithmetic of
+/// [`FrameBlock::finish`] and [`quant::snorm8_unit_words`] lane by lane.
+fn frames_snorm8_scalar(mesh: &TreeMesh, out: &mut Vec<u8>) {
+    let n = mesh.vertex_count().min(mesh.normals.len() / 3);
+    let pos: &[[f32; 3]] = bytemuck::cast_slice(&mesh.positions[..3 * n]);
+    let nrm: &[[f32; 3]] = bytemuck::cast_slice(&mesh.normals[..3 * n]);
+    let rings = if rings_valid(&mesh.rings, n) { &mesh.rings[..] } else { &[] };
+    let others = other_sums(mesh, n, rings);
+    let mut sums = others.iter();
+    let mut block = [0u64; LANES];
+    let mut k = 0;
+    // The next ring not yet passed (`n..n` after the last).
+    let mut ring = rings.iter().map(|r| r[0] as usize..(r[0] + r[1]) as usize);
+    let mut r = ring.next().unwrap_or(n..n);
+    for (v, nn) in nrm.iter().enumerate() {
+        if v == r.end {
+            r = ring.next().unwrap_or(n..n);
+        }
+        let o = if v < r.start {
+            sums.next().copied().unwrap_or_default()
+        } else {
+            // Neighbours around the ring; the first vertex and its seam twin take the two
+            // beside the seam.
+            let a = pos[if v == r.start { r.end - 2 } else { v - 1 }];
+            let b = pos[if v + 1 == r.end { r.start + 1 } else { v + 1 }];
+            [b[0] - a[0], b[1] - a[1], b[2] - a[2], 1.0]
+        };
+        let (u, w) = tangent_of(o, nn);
+        block[k] = frame_word(*nn, u.to_array(), w).to_le();
+        k += 1;
+        if k == LANES {
+            out.extend_from_slice(bytemuck::cast_slice(&block));
+            k = 0;
+        }
+    }
+    out.extend_from_slice(&bytemuck::cast_slice(&block)[..8 * k]);
 }
 
 /// The frames of [`LANES`] consecutive vertices, one array per component (so the loops over
@@ -856,6 +900,29 @@ mod tests {
         let t = tangents(&pos, &nrm, &uv, &[0, 1, 2, 0, 2, 3]);
         for v in t.chunks_exact(4) {
             assert_eq!(v, [1.0, 0.0, 0.0, -1.0]);
+        }
+    }
+
+    #[test]
+    fn frames_one_vertex_at_a_time_are_the_blocks_bytes() {
+        // The scalar path (wasm without SIMD) and the block path write the same bytes.
+        for name in ["default", "weeping_willow"] {
+            let g = crate::generate(&crate::presets::find(name).unwrap().params().unwrap()).unwrap();
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            frames_snorm8_scalar(&g.mesh, &mut a);
+            let (mut normals, mut tangents) = ([0u32; LANES], [0u32; LANES]);
+            frame_blocks(&g.mesh, |f, k| {
+                quant::snorm8_unit_words(&f.n, &mut normals);
+                quant::snorm8_unit_words(&f.t, &mut tangents);
+                for i in 0..k {
+                    let w: u32 = if f.w[i] < 0.0 { 0x81 } else { 0x7f };
+                    b.extend_from_slice(
+                        &(u64::from(normals[i]) | u64::from(tangents[i] | w << 24) << 32).to_le_bytes(),
+                    );
+                }
+            });
+            assert_eq!(a.len(), 8 * g.mesh.vertex_count());
+            assert!(a == b, "{name}");
         }
     }
 
