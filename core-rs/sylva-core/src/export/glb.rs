@@ -22,7 +22,9 @@
 //!   for quantised data (0.00674), replaced by the floor/ceiling combination closest to unit
 //!   length. This saves 20 of the 28 bytes per vertex the float normal and tangent took, the
 //!   bytes a big export spends most of its time writing. The bark's tangents are computed
-//!   straight into the output ([`super::frames_snorm8_append`]).
+//!   straight into the output ([`super::frames_snorm8_append`]): on the mesh's tube rings
+//!   (`TreeMesh::rings`, nearly every bark vertex) from the ring neighbours, elsewhere by
+//!   Lengyel's method over the triangles touching those vertices ([`super::mesh_tangents`]).
 //! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 values per vertex as
 //!   normalised `u16`, interleaved in one view with `byteStride` 16 right after the colours,
 //!   read by two `VEC4` accessors: `_WIND_PIVOT` = `pivot_x, pivot_y, pivot_z` (m, the base of
@@ -56,8 +58,8 @@
 //! **Writing**: one pass per view, appended in order into a buffer reserved at its final size:
 //! float and index arrays as one `memcpy` each (a `memory.copy` in wasm), the rest through a
 //! small stack block (no zero fill of the big arrays and no temporary arrays, except the tangent
-//! accumulator and the colours, zeroed in the output itself); the colours and the wind share
-//! one pass over the wind records. Ranges (bounds, wind) are found with plain comparisons and
+//! sums of the vertices on no tube ring and the colours, zeroed in the output itself); the
+//! colours and the wind share one pass over the wind records. Ranges (bounds, wind) are found with plain comparisons and
 //! square roots are IEEE ones: no libm calls, which are function calls in wasm.
 //! [`write_into`] reuses the caller's allocation.
 
@@ -217,15 +219,6 @@ impl Data<'_> {
         }
     }
 
-    /// Bytes past the view's end the writer uses as scratch before it truncates them (the
-    /// tangent accumulator, 16 bytes per vertex): the output reserves room for them.
-    fn scratch_len(&self) -> usize {
-        match self {
-            Data::Frames(m) => m.vertex_count() * 16,
-            _ => 0,
-        }
-    }
-
     /// Appends the little-endian bytes to `out`.
     fn append(&self, out: &mut Vec<u8>) {
         match *self {
@@ -234,7 +227,7 @@ impl Data<'_> {
             Data::U16(s) => emit::<_, 1, 2>(out, s, |v| (v[0] as u16).to_le_bytes()),
             Data::Bytes(s) => out.extend_from_slice(s),
             Data::Snorm3(s) => super::normals_snorm8_append(s, out),
-            Data::Frames(m) => super::frames_snorm8_append(&m.positions, &m.normals, &m.uvs, &m.indices, out),
+            Data::Frames(m) => super::frames_snorm8_append(m, out),
             Data::FramesOf(n, t) => super::frames_of_snorm8_append(n, t, out),
             Data::BarkExtras(m, colors, wind) => bark_extras_append(m, colors, wind, out),
             Data::Trs(m, Part::Translation) => emit::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
@@ -686,11 +679,9 @@ fn assemble(
     let bin_len = doc.bin_len.next_multiple_of(4);
     let has_bin = doc.bin_len > 0;
     let total = 12 + 8 + json_len + if has_bin { 8 + bin_len } else { 0 };
-    // Room for the scratch some writers use past their view (see `Data::scratch_len`).
     let bin_start = 12 + 8 + json_len + 8;
-    let high = doc.data.iter().map(|(o, d)| bin_start + o + d.scratch_len()).max().unwrap_or(0);
     out.clear();
-    out.reserve_exact(total.max(high));
+    out.reserve_exact(total);
     let word = |out: &mut Vec<u8>, w: u32| out.extend_from_slice(&w.to_le_bytes());
     word(out, MAGIC);
     word(out, 2);

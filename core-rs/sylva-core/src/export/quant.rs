@@ -58,6 +58,23 @@ pub(super) fn snorm8_unit_word(v: [f32; 3]) -> u32 {
     }
 }
 
+/// [`snorm8_unit_word`] of [`LANES`] unit vectors given as one array per component, into
+/// `out`: the rounding and the length check of every lane in a loop without branches (vector
+/// code where there is vector code), then the closest-length search for the rare lanes whose
+/// rounding misses. The same words as [`snorm8_unit_word`] lane by lane.
+#[inline(always)]
+pub(super) fn snorm8_unit_words(v: &[[f32; LANES]; 3], out: &mut [u32; LANES]) {
+    let mut ok = [true; LANES];
+    for i in 0..LANES {
+        (out[i], ok[i]) = snorm8_word([v[0][i], v[1][i], v[2][i]]);
+    }
+    for i in 0..LANES {
+        if !ok[i] {
+            out[i] = closest_word([v[0][i], v[1][i], v[2][i]]);
+        }
+    }
+}
+
 /// [`snorm8_unit_closest`] as a word.
 #[cold]
 #[inline(never)]

@@ -33,7 +33,8 @@
 //! on no open edge, and sharing their position with no other vertex (UV seam, cap ring, welded
 //! copies). New normals are area-weighted face normals, so they face into the cavity (out of the
 //! wood); `u` follows the rim, `v` continues the bark's at one unit per circumference; wind
-//! entries, when the mesh has them, are copied from the nearest rim vertex.
+//! entries, when the mesh has them, are copied from the nearest rim vertex. The tube rings
+//! holding a reused or parked slot leave `TreeMesh::rings`.
 
 use super::TreeMesh;
 use super::WIND_STRIDE;
@@ -786,6 +787,7 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
     for (r, cav) in &regions {
         commit(mesh, r, cav, &mut new_tris);
         freed_tris.extend_from_slice(&r.faces);
+        drop_rings(mesh, &r.interior);
     }
     write_triangles(mesh, &mut freed_tris, &new_tris);
     regions.into_iter().map(|(_, cav)| cav.hole).collect()
@@ -958,6 +960,29 @@ fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavity> {
     }
     let hole = Hole { stem, source: r.source, centre: c0, normal: n, radius: r.radius, depth: (c0 - bottom).dot(n) };
     Some(Cavity { verts, tris, hole })
+}
+
+/// Drop the tube rings ([`TreeMesh::rings`]) holding any of `slots` (vertices a cavity rewrote
+/// or parked): they no longer sit on their ring.
+fn drop_rings(mesh: &mut TreeMesh, slots: &[u32]) {
+    let rings = &mesh.rings;
+    let mut gone: Vec<usize> = slots
+        .iter()
+        .filter_map(|&v| {
+            let i = rings.partition_point(|r| r[0] <= v).checked_sub(1)?;
+            (v < rings[i][0] + rings[i][1]).then_some(i)
+        })
+        .collect();
+    gone.sort_unstable();
+    gone.dedup();
+    let mut k = 0;
+    let mut i = 0;
+    mesh.rings.retain(|_| {
+        let drop = gone.get(k) == Some(&i);
+        k += usize::from(drop);
+        i += 1;
+        !drop
+    });
 }
 
 /// Write a planned cavity: new vertices reuse the removed interior slots, then append; the

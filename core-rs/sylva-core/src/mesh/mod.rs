@@ -63,6 +63,10 @@ pub struct Bounds {
 ///
 /// `indices` (u32) hold triangles, three per triangle, counter-clockwise seen from outside;
 /// `groups` split them by material. 32-bit indices: trees pass 65,535 vertices easily.
+///
+/// `rings` lists the tube rings among the vertices (see [`TreeMesh::rings`]): structure the
+/// exporters use, derived from the same construction; it is not part of [`TreeMesh::content_hash`]
+/// nor of the buffers handed to JavaScript.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct TreeMesh {
     /// `x, y, z` per vertex.
@@ -77,6 +81,17 @@ pub struct TreeMesh {
     pub groups: Vec<MeshGroup>,
     /// Wind data, 8 floats per vertex (layout above), or empty.
     pub wind: Vec<f32>,
+    /// Tube rings, `[first vertex, vertex count]` each, sorted and disjoint: a ring is a run of
+    /// `sides + 1` consecutive vertices around a swept stem (tube or twig), `u` = `j / sides`
+    /// increasing along the run (counter-clockwise about the stem's direction, so
+    /// `cross(normal, direction of increasing u)` points along the stem) and `v` the same for
+    /// the whole ring, increasing from ring to ring; the last vertex is the seam twin of the
+    /// first (the same position, `u = 1`). Every listed vertex still sits where the sweep put
+    /// it (rings a later stage rewrites, as holes do, are dropped). Meshes built otherwise may
+    /// leave it empty, and code that edits the positions or uvs of a generated mesh should
+    /// clear it: it only lets the GLB writer take a ring vertex's tangent from its ring
+    /// neighbours instead of accumulating it over triangles.
+    pub rings: Vec<[u32; 2]>,
 }
 
 /// Floats per vertex in [`TreeMesh::wind`].
@@ -233,6 +248,7 @@ impl MeshBuilder {
                 indices: Vec::with_capacity(indices),
                 groups: Vec::new(),
                 wind: Vec::new(),
+                rings: Vec::new(),
             },
             wind: false,
         }
@@ -291,9 +307,17 @@ impl MeshBuilder {
         }
     }
 
-    /// Drop every vertex from index `first` on (and its wind record): undoes a block whose
-    /// triangles were never written.
+    /// Record `count` tube rings of `stride` vertices each (`sides + 1`, see [`TreeMesh::rings`]),
+    /// the first starting at vertex `first`, the others following it back to back.
+    pub fn rings(&mut self, first: u32, count: u32, stride: u32) {
+        self.mesh.rings.extend((0..count).map(|r| [first + r * stride, stride]));
+    }
+
+    /// Drop every vertex from index `first` on (and its wind record, and the rings among them):
+    /// undoes a block whose triangles were never written.
     pub fn truncate_vertices(&mut self, first: u32) {
+        let keep = self.mesh.rings.partition_point(|r| r[0] + r[1] <= first);
+        self.mesh.rings.truncate(keep);
         let n = first as usize;
         self.mesh.positions.truncate(n * 3);
         self.mesh.normals.truncate(n * 3);

@@ -735,6 +735,7 @@ fn sweep_with(
             w.copy_from_slice(&record);
         }
     }
+    out.rings(first, rings as u32, stride as u32);
     StemMesh {
         first,
         rings: rings as u32,

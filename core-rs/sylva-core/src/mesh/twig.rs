@@ -268,6 +268,7 @@ pub(crate) fn sweep(
     let r0 = span.r[0];
     let centre = span.p[0] - d0 * (0.25 * r0);
     let cap = out.vertex_with_wind(centre.to_array(), (-d0).to_array(), [0.5, 0.0], &wind.record(stem, 0.0, r0));
+    out.rings(first, rings as u32, stride as u32);
     // Indices come later from the tube's emitter, like every swept stem.
     StemMesh { first, rings: rings as u32, sides: sides as u32, ring0, apex, base: Base::Cap(cap), claim: 0, v0: 0.0 }
 }

@@ -19,6 +19,7 @@ pub fn assert_mesh_invariants(g: &Generated, name: &str) {
         let len = (nm[0] * nm[0] + nm[1] * nm[1] + nm[2] * nm[2]).sqrt();
         assert!((len - 1.0).abs() < 1e-3, "{name}: normal {i} has length {len}");
     }
+    assert_rings(g, name);
     let covered: u32 = m.groups.iter().map(|g| g.count).sum();
     assert_eq!(covered as usize, m.indices.len(), "{name}: groups do not cover the indices");
     let p = |i: u32| {
@@ -61,4 +62,28 @@ pub fn assert_mesh_invariants(g: &Generated, name: &str) {
         .fold(0.0f32, f32::min);
     let b = g.bounds;
     assert!(b.min[1] >= deepest - 1e-3 && b.max[1] > 0.0, "{name}: tree not standing on the ground: {b:?}");
+}
+
+/// `TreeMesh::rings` as documented: sorted, disjoint runs of `sides + 1 >= 4` vertices inside the
+/// mesh, `u = j / sides` along the run (1 on the last, the seam twin, at the first's exact
+/// position), one `v` for the whole ring.
+pub fn assert_rings(g: &Generated, name: &str) {
+    let m = &g.mesh;
+    let mut end = 0;
+    for (i, &[first, count]) in m.rings.iter().enumerate() {
+        assert!(first >= end && count >= 4, "{name}: ring {i} {first}+{count} after {end}");
+        end = first + count;
+        assert!(end as usize <= m.vertex_count(), "{name}: ring {i} past the vertices");
+        let (f, sides) = (first as usize, count as usize - 1);
+        assert_eq!(
+            m.positions[3 * f..3 * f + 3],
+            m.positions[3 * (f + sides)..3 * (f + sides) + 3],
+            "{name}: ring {i} seam"
+        );
+        for j in 0..=sides {
+            let u = if j == sides { 1.0 } else { j as f32 / sides as f32 };
+            assert_eq!(m.uvs[2 * (f + j)], u, "{name}: ring {i} u of vertex {j}");
+            assert_eq!(m.uvs[2 * (f + j) + 1], m.uvs[2 * f + 1], "{name}: ring {i} v of vertex {j}");
+        }
+    }
 }
