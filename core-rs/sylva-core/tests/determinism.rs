@@ -10,7 +10,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("quaking_aspen", "ff80a5db3ea2da5b"),
     ("black_tupelo", "8afa194cab056338"),
     ("weeping_willow", "31a9726d507dbbfc"),
-    ("ca_black_oak", "ee615d7abd54c0f4"),
+    ("ca_black_oak", "a22c26af66b60024"),
     ("fir", "5327545399bb634b"),
     ("oak", "728fbafa9153ebf2"),
     ("cypress", "fb3f643013029ed8"),

@@ -419,9 +419,7 @@ fn ring_tangents_agree_with_lengyel_on_every_preset() {
     // and perpendicular to the normal; on at least 99% of the vertices the triangles use, the
     // same handedness and within about 25° (dot > 0.9). (Vertices no triangle uses, such as a
     // parent's ring vertices inside a junction's hole, have no tangent to agree with: Lengyel's
-    // method gives them any perpendicular vector. Where they differ, it is next to a junction
-    // whose bridge triangles cross the parent's UV seam, where Lengyel's sums mix u ≈ 0 and
-    // u ≈ 1.)
+    // method gives them any perpendicular vector.)
     for name in presets::PRESETS.iter().map(|p| p.name) {
         let g = preset(name);
         let m = &g.mesh;
@@ -445,9 +443,9 @@ fn ring_tangents_agree_with_lengyel_on_every_preset() {
             }
         }
         assert!(agree * 100 >= count * 99, "{name}: {agree} of {count} tangents agree with Lengyel's");
-        // Nearly every bark vertex is on a ring (the presets with bark).
+        // Most bark vertices are on rings (the rest: collars, zips, forks, caps, holes).
         let on_rings: usize = m.rings.iter().map(|r| r[1] as usize).sum();
-        assert!(on_rings * 4 >= m.vertex_count() * 3, "{name}: {on_rings} of {} vertices on rings", m.vertex_count());
+        assert!(on_rings * 10 >= m.vertex_count() * 7, "{name}: {on_rings} of {} vertices on rings", m.vertex_count());
     }
 }
 

@@ -106,8 +106,8 @@ pub(crate) fn geometry_from(
     // The clone's distance from its base where the original is `s` above the split.
     let ahead = (t_split - t_base) * lo;
     // A clone that has drawn away already would separate at once, in a steep short crotch:
-    // one forking one step up gets twice the length.
-    let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 2.0 } else { 1.0 };
+    // one forking one step up gets a quarter more length (more makes its side patch fold).
+    let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
     for k in 1..=400 {
         let s = k as f32 * step;
         let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
