@@ -442,7 +442,18 @@ impl MeshBuilder {
 /// Whole turns to add to each of a triangle's three bark `u` so that they span the least:
 /// all within half a turn of one of them (the one that gives the smallest span; ties keep the
 /// fewest moves). All zero when the triangle does not cross a seam.
+#[inline]
 pub fn seam_shifts(u: [f32; 3]) -> [i32; 3] {
+    // Within half a turn, moving any vertex a whole turn only widens the span.
+    if u[0].max(u[1]).max(u[2]) - u[0].min(u[1]).min(u[2]) <= 0.5 {
+        return [0; 3];
+    }
+    seam_shifts_across(u)
+}
+
+/// [`seam_shifts`] for a triangle that spans more than half a turn.
+#[cold]
+fn seam_shifts_across(u: [f32; 3]) -> [i32; 3] {
     let mut best = ([0; 3], f32::INFINITY, 0);
     for anchor in u {
         let k = u.map(|x| (anchor - x).round() as i32);
