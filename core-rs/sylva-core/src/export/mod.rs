@@ -343,15 +343,35 @@ pub fn frames_snorm8_append(mesh: &TreeMesh, out: &mut Vec<u8>) {
     });
 }
 
+/// What both frame writers read: the vertex count, positions and normals, the mesh's rings (none
+/// if they do not describe these vertices) and Lengyel's sums for the vertices on no ring.
+struct FrameInputs<'a> {
+    n: usize,
+    pos: &'a [[f32; 3]],
+    nrm: &'a [[f32; 3]],
+    rings: &'a [[u32; 2]],
+    others: Vec<[f32; 4]>,
+}
+
+impl<'a> FrameInputs<'a> {
+    fn of(mesh: &'a TreeMesh) -> Self {
+        let n = mesh.vertex_count().min(mesh.normals.len() / 3);
+        let rings = if rings_valid(&mesh.rings, n) { &mesh.rings[..] } else { &[] };
+        FrameInputs {
+            n,
+            pos: bytemuck::cast_slice(&mesh.positions[..3 * n]),
+            nrm: bytemuck::cast_slice(&mesh.normals[..3 * n]),
+            rings,
+            others: other_sums(mesh, n, rings),
+        }
+    }
+}
+
 /// [`frames_snorm8_append`] one vertex at a time: each tangent direction (ring neighbours'
 /// difference, or Lengyel's sums) through [`tangent_of`] and [`frame_word`], the arithmetic of
 /// [`FrameBlock::finish`] and [`quant::snorm8_unit_words`] lane by lane.
 fn frames_snorm8_scalar(mesh: &TreeMesh, out: &mut Vec<u8>) {
-    let n = mesh.vertex_count().min(mesh.normals.len() / 3);
-    let pos: &[[f32; 3]] = bytemuck::cast_slice(&mesh.positions[..3 * n]);
-    let nrm: &[[f32; 3]] = bytemuck::cast_slice(&mesh.normals[..3 * n]);
-    let rings = if rings_valid(&mesh.rings, n) { &mesh.rings[..] } else { &[] };
-    let others = other_sums(mesh, n, rings);
+    let FrameInputs { n, pos, nrm, rings, others } = FrameInputs::of(mesh);
     let mut sums = others.iter();
     let mut block = [0u64; LANES];
     let mut k = 0;
@@ -425,11 +445,7 @@ impl FrameBlock {
 /// triangles touching them ([`other_sums`]).
 #[inline(always)]
 fn frame_blocks(mesh: &TreeMesh, mut emit: impl FnMut(&FrameBlock, usize)) {
-    let n = mesh.vertex_count().min(mesh.normals.len() / 3);
-    let pos: &[[f32; 3]] = bytemuck::cast_slice(&mesh.positions[..3 * n]);
-    let nrm: &[[f32; 3]] = bytemuck::cast_slice(&mesh.normals[..3 * n]);
-    let rings = if rings_valid(&mesh.rings, n) { &mesh.rings[..] } else { &[] };
-    let others = other_sums(mesh, n, rings);
+    let FrameInputs { n, pos, nrm, rings, others } = FrameInputs::of(mesh);
     let mut sums = others.iter();
     let mut f = FrameBlock { n: [[0.0; LANES]; 3], t: [[0.0; LANES]; 3], w: [1.0; LANES] };
     // The next ring not yet passed (`n..n` after the last).
