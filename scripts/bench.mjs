@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { benchBrowser } from './bench-browser.mjs';
+import { nativeCli } from './native-cli.mjs';
 
 const args = process.argv.slice(2);
 const asJson = args.includes('--json');
@@ -21,7 +22,7 @@ const median = (xs) => {
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 };
 
-execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
+const sylva = nativeCli();
 const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
 wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
 
@@ -38,7 +39,7 @@ cases.push({ name: 'leaves_50k', values: { leaves: 34 }, args: ['--set', 'leaves
 const results = [];
 for (const preset of cases) {
   const native = JSON.parse(
-    execFileSync(`${root}/target/release/sylva`, ['bench', ...preset.args, '--runs', String(runs), '--json'], {
+    execFileSync(sylva, ['bench', ...preset.args, '--runs', String(runs), '--json'], {
       encoding: 'utf8',
     }),
   );
@@ -126,7 +127,7 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
   const largest = results.reduce((a, b) => (b.vertices > a.vertices ? b : a));
   const preset = cases.find((c) => c.name === largest.preset);
   const native = JSON.parse(
-    execFileSync(`${root}/target/release/sylva`, ['bench', ...preset.args, '--glb', '--runs', String(runs), '--json'], {
+    execFileSync(sylva, ['bench', ...preset.args, '--glb', '--runs', String(runs), '--json'], {
       encoding: 'utf8',
     }),
   ).glb;
@@ -196,7 +197,7 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
 // --json the leaf report is a second JSON object on its own line.
 if (typeof wasm.leaf_json === 'function') {
   const leafNative = JSON.parse(
-    execFileSync(`${root}/target/release/sylva`, ['bench-leaf', '--runs', String(runs), '--json'], { encoding: 'utf8' }),
+    execFileSync(sylva, ['bench-leaf', '--runs', String(runs), '--json'], { encoding: 'utf8' }),
   );
   const leafResults = [];
   for (const r of leafNative.results) {

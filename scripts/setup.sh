@@ -47,7 +47,7 @@ fi
 # 4. The release wasm build and its JS glue in web/src/wasm (cargo itself is a no-op when nothing changed).
 step "cargo build sylva-wasm (release, wasm32)"
 cargo build --quiet --release --target wasm32-unknown-unknown -p sylva-wasm
-WASM=target/wasm32-unknown-unknown/release/sylva_wasm.wasm
+WASM=${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/sylva_wasm.wasm
 OUT=web/src/wasm
 if [ ! -f "$OUT/sylva_wasm_bg.wasm" ] || [ "$WASM" -nt "$OUT/sylva_wasm_bg.wasm" ]; then
   step "wasm-bindgen -> $OUT"

@@ -12,17 +12,15 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { validateBytes } from 'gltf-validator';
+import { nativeCli } from './native-cli.mjs';
 
-const root = fileURLToPath(new URL('..', import.meta.url));
 const args = process.argv.slice(2);
 const only = args.flatMap((a, i) => (a === '--preset' ? [args[i + 1]] : []));
 const keepAt = args.indexOf('--keep');
 const dir = keepAt >= 0 ? args[keepAt + 1] : mkdtempSync(join(tmpdir(), 'sylva-gltf-'));
 
-execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
-const sylva = join(root, 'target/release/sylva');
+const sylva = nativeCli();
 const presets = JSON.parse(execFileSync(sylva, ['presets'], { encoding: 'utf8', maxBuffer: 1 << 26 }))
   .map((p) => p.name)
   .filter((n) => only.length === 0 || only.includes(n));

@@ -2,15 +2,14 @@
 // build. Compares the content hash of every preset and a spread of seeds with `sylva generate`.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { fileURLToPath } from 'node:url';
+import { nativeCli } from './native-cli.mjs';
 
-const root = fileURLToPath(new URL('..', import.meta.url));
 const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
 wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
 
-execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
+const sylva = nativeCli();
 const native = (args) =>
-  JSON.parse(execFileSync(`${root}/target/release/sylva`, ['generate', ...args], { encoding: 'utf8' }));
+  JSON.parse(execFileSync(sylva, ['generate', ...args], { encoding: 'utf8' }));
 
 const cases = [];
 for (const preset of JSON.parse(wasm.presets_json())) {
