@@ -6,10 +6,16 @@ import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 
+/** Where Cargo puts the release CLI given the environment `env` (a relative `CARGO_TARGET_DIR` is
+ * taken from the repository root, where the scripts run cargo). */
+export function cliPath(env = process.env) {
+  const dir = env.CARGO_TARGET_DIR;
+  const target = dir ? (isAbsolute(dir) ? dir : join(root, dir)) : join(root, 'target');
+  return join(target, 'release', 'sylva');
+}
+
 /** Builds the release CLI (quietly; a no-op when up to date) and returns its path. */
 export function nativeCli() {
   execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
-  const dir = process.env.CARGO_TARGET_DIR;
-  const target = dir ? (isAbsolute(dir) ? dir : join(root, dir)) : join(root, 'target');
-  return join(target, 'release', 'sylva');
+  return cliPath();
 }

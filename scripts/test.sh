@@ -6,6 +6,8 @@ step() { printf '\n\033[1;36m[test]\033[0m %s\n' "$*"; }
 
 step "lint (rustfmt, clippy -D warnings, eslint, prettier)"
 bash scripts/lint.sh
+step "scripts: node --test (the Node scripts' own helpers)"
+node --test scripts/
 step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
 step "glTF: every preset's GLB (instanced and baked leaves) through the Khronos validator"
