@@ -1,0 +1,200 @@
+//! The hole-eligible stems' parts of the bark mesh (the thesis, §4.3): each eligible stem's
+//! block of vertices, the faces inside it, and which of its vertices may be cut — inside the
+//! stem's block, used by no triangle reaching outside the block (junction bridges), on no open
+//! edge, and sharing their position with no other vertex (UV seam, cap ring, welded copies).
+
+use crate::mesh::TreeMesh;
+use crate::skeleton::{Skeleton, Stem};
+use glam::Vec3;
+use std::ops::Range;
+
+/// One eligible stem's part of the mesh: its block of vertices and the faces inside it.
+pub(super) struct Patch {
+    pub(super) stem: usize,
+    pub(super) block: Range<u32>,
+    /// Triangle indices (into `indices / 3`) whose three vertices are in the block.
+    pub(super) faces: Vec<u32>,
+    /// Per block vertex: range into `vf` of its faces (CSR).
+    vf_start: Vec<u32>,
+    /// Positions into `faces`.
+    vf: Vec<u32>,
+    /// Per block vertex: may be cut (see the module docs).
+    pub(super) free: Vec<bool>,
+    /// Centre curve samples `(t, point)` for local radii.
+    samples: Vec<(f32, Vec3)>,
+}
+
+impl Patch {
+    pub(super) fn local(&self, v: u32) -> usize {
+        (v - self.block.start) as usize
+    }
+
+    pub(super) fn faces_of(&self, v: u32) -> &[u32] {
+        let l = self.local(v);
+        &self.vf[self.vf_start[l] as usize..self.vf_start[l + 1] as usize]
+    }
+
+    pub(super) fn is_free(&self, v: u32) -> bool {
+        self.block.contains(&v) && self.free[self.local(v)]
+    }
+
+    /// Neighbour vertices of `v` (sorted, unique).
+    pub(super) fn neighbours(&self, mesh: &TreeMesh, v: u32, out: &mut Vec<u32>) {
+        out.clear();
+        for &f in self.faces_of(v) {
+            let t = self.faces[f as usize] as usize * 3;
+            out.extend(mesh.indices[t..t + 3].iter().copied().filter(|&w| w != v));
+        }
+        out.sort_unstable();
+        out.dedup();
+    }
+
+    /// Fraction along the stem and local radius nearest to `x`.
+    pub(super) fn radius_near(&self, stem: &Stem, x: Vec3) -> (f32, f32) {
+        let mut best = (f32::INFINITY, 0.0f32);
+        for &(t, c) in &self.samples {
+            let d = (x - c).length_squared();
+            if d < best.0 {
+                best = (d, t);
+            }
+        }
+        (best.1, stem.radius_at(best.1))
+    }
+}
+
+pub(super) fn pos(mesh: &TreeMesh, v: u32) -> Vec3 {
+    let k = v as usize * 3;
+    Vec3::new(mesh.positions[k], mesh.positions[k + 1], mesh.positions[k + 2])
+}
+
+pub(super) fn nrm(mesh: &TreeMesh, v: u32) -> Vec3 {
+    let k = v as usize * 3;
+    Vec3::new(mesh.normals[k], mesh.normals[k + 1], mesh.normals[k + 2])
+}
+
+pub(super) fn bits(mesh: &TreeMesh, v: u32) -> [u32; 3] {
+    let k = v as usize * 3;
+    [mesh.positions[k].to_bits(), mesh.positions[k + 1].to_bits(), mesh.positions[k + 2].to_bits()]
+}
+
+/// Build the patches of the eligible stems: one pass over all triangles.
+pub(super) fn patches(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, eligible: &[bool]) -> Vec<Patch> {
+    let nv = mesh.vertex_count();
+    let mut list: Vec<Patch> = eligible
+        .iter()
+        .enumerate()
+        .filter(|&(i, &e)| e && i < blocks.len() && !blocks[i].is_empty() && blocks[i].end as usize <= nv)
+        .map(|(i, _)| {
+            let stem = &skeleton.stems[i];
+            Patch {
+                stem: i,
+                block: blocks[i].clone(),
+                faces: Vec::new(),
+                vf_start: Vec::new(),
+                vf: Vec::new(),
+                free: vec![true; blocks[i].len()],
+                samples: (0..=64).map(|k| (k as f32 / 64.0, stem.sample(k as f32 / 64.0).0)).collect(),
+            }
+        })
+        .collect();
+    if list.is_empty() {
+        return list;
+    }
+    list.sort_by_key(|p| p.block.start);
+    let mut inside = vec![0u64; nv.div_ceil(64)];
+    for p in &list {
+        for v in p.block.clone() {
+            inside[v as usize >> 6] |= 1 << (v & 63);
+        }
+    }
+    let hit = |v: u32| inside[v as usize >> 6] >> (v & 63) & 1 == 1;
+    let owner = |v: u32| list.partition_point(|p| p.block.end <= v);
+    let mut foreign: Vec<(usize, u32)> = Vec::new();
+    let mut local: Vec<(usize, u32)> = Vec::new();
+    for (k, t) in mesh.indices.chunks_exact(3).enumerate() {
+        let (a, b, c) = (t[0], t[1], t[2]);
+        if !(hit(a) || hit(b) || hit(c)) {
+            continue;
+        }
+        let o = [a, b, c].map(|v| if hit(v) { owner(v) } else { usize::MAX });
+        if o[0] != usize::MAX && o[0] == o[1] && o[1] == o[2] {
+            local.push((o[0], k as u32));
+        } else {
+            for (v, ov) in [a, b, c].into_iter().zip(o) {
+                if ov != usize::MAX {
+                    foreign.push((ov, v));
+                }
+            }
+        }
+    }
+    for (o, k) in local {
+        list[o].faces.push(k);
+    }
+    for (o, v) in foreign {
+        let l = list[o].local(v);
+        list[o].free[l] = false;
+    }
+    for p in &mut list {
+        let n = p.block.len();
+        let mut count = vec![0u32; n + 1];
+        for &f in &p.faces {
+            for &v in &mesh.indices[f as usize * 3..f as usize * 3 + 3] {
+                count[p.local(v) + 1] += 1;
+            }
+        }
+        for i in 0..n {
+            count[i + 1] += count[i];
+        }
+        let mut fill = count.clone();
+        let mut vf = vec![0u32; count[n] as usize];
+        for (fi, &f) in p.faces.iter().enumerate() {
+            for &v in &mesh.indices[f as usize * 3..f as usize * 3 + 3] {
+                let l = p.local(v);
+                vf[fill[l] as usize] = fi as u32;
+                fill[l] += 1;
+            }
+        }
+        p.vf_start = count;
+        p.vf = vf;
+        // Not free: unused vertices, vertices on edges not shared by exactly two local faces,
+        // and vertices sharing their position with another vertex of the block.
+        let mut edges: Vec<(u32, u32)> = Vec::with_capacity(p.faces.len() * 3);
+        for &f in &p.faces {
+            let t = &mesh.indices[f as usize * 3..f as usize * 3 + 3];
+            for j in 0..3 {
+                let (a, b) = (t[j], t[(j + 1) % 3]);
+                edges.push((a.min(b), a.max(b)));
+            }
+        }
+        edges.sort_unstable();
+        let mut i = 0;
+        while i < edges.len() {
+            let mut j = i + 1;
+            while j < edges.len() && edges[j] == edges[i] {
+                j += 1;
+            }
+            if j - i != 2 {
+                let (a, b) = edges[i];
+                let (la, lb) = (p.local(a), p.local(b));
+                p.free[la] = false;
+                p.free[lb] = false;
+            }
+            i = j;
+        }
+        for l in 0..n {
+            if p.vf_start[l] == p.vf_start[l + 1] {
+                p.free[l] = false;
+            }
+        }
+        let mut by_pos: Vec<([u32; 3], u32)> = p.block.clone().map(|v| (bits(mesh, v), v)).collect();
+        by_pos.sort_unstable();
+        for w in by_pos.windows(2) {
+            if w[0].0 == w[1].0 {
+                let (la, lb) = (p.local(w[0].1), p.local(w[1].1));
+                p.free[la] = false;
+                p.free[lb] = false;
+            }
+        }
+    }
+    list
+}

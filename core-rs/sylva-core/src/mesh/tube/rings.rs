@@ -1,0 +1,120 @@
+//! Ring placement along each stem (the bark surface stage, [`super`]): rings follow the
+//! Catmull-Rom centre curve and are added where the stem bends (about one per 12° of turn on thick
+//! stems), through the trunk flare and rounded tips, and around the footprints of welded children
+//! ([`weld`]: the parent gets extra rings across each footprint, the child starts at its junction
+//! ring).
+
+use crate::math::rad;
+use crate::mesh::weld;
+use crate::skeleton::Stem;
+use glam::Vec3;
+
+/// Insert `t` into the sorted `out[first..]`.
+fn insert_sorted(out: &mut Vec<f32>, first: usize, t: f32) {
+    let k = out[first..].partition_point(|&x| x < t);
+    out.insert(first + k, t);
+}
+
+/// Ring positions (fractions 0..1 of the stem) for one stem, appended to `out`. `feet` are the
+/// junctions of its welded children, sorted by `t_lo`: each footprint needs a ring at most
+/// [`weld::REACH`] footprint lengths below and above it, and gets one at its end where none is
+/// that close; two footprints side by side around the stem (`pad`: one column) that no ring
+/// separates get one between them, so that their holes never share a quad. A welded stem starts
+/// at `start` (its junction ring) instead of 0. The last ring sits just short of the tip; the
+/// apex closes the stem at t = 1. Returns how many planned rings the junction ring replaced.
+pub(super) fn plan_rings(
+    stem: &Stem,
+    quality: f32,
+    feet: &[weld::Junction],
+    pad: f32,
+    start: f32,
+    out: &mut Vec<f32>,
+) -> usize {
+    let first = out.len();
+    let pts = &stem.points;
+    let segs = pts.len() - 1;
+    let dir = |i: usize| (pts[i + 1] - pts[i]).normalize_or(Vec3::Y);
+    let per_ring = rad(12.0) / (stem.radius / 0.02).sqrt().clamp(0.25, 1.0);
+    let mut turn_in = 0.0f32;
+    let mut d = dir(0);
+    for i in 0..segs {
+        // Subdivide a segment by the bend at its ends: about one ring per 12° of turn on thick
+        // stems; thin stems tolerate more, since the chord error is what shows against the radius.
+        let next = if i + 1 < segs { Some(dir(i + 1)) } else { None };
+        // Turn angle from the chord between unit directions, c = 2 sin(θ/2): θ ≈ c (1 + c²/24),
+        // within 0.5% up to 90°, which is all a ring count needs (and no acos per joint).
+        let turn_out = next.map_or(0.0, |n| {
+            let c = (n - d).length();
+            c * (1.0 + c * c / 24.0)
+        });
+        let k = ((quality * turn_in.max(turn_out) / per_ring).ceil() as usize).clamp(1, 8);
+        for j in 0..k {
+            out.push((i as f32 + j as f32 / k as f32) / segs as f32);
+        }
+        turn_in = turn_out;
+        if let Some(n) = next {
+            d = n;
+        }
+    }
+    let extra = stem.flare > 0.0 || stem.taper > 1.0;
+    if stem.flare > 0.0 {
+        // The flare lives in the lowest eighth and rises steeply: rings packed toward the ground.
+        let m = ((6.0 * quality).ceil() as usize).max(2);
+        for j in 1..m {
+            let f = j as f32 / m as f32;
+            out.push(0.125 * f * f);
+        }
+    }
+    if stem.taper > 1.0 {
+        // Rounded tips and periodic bulges change radius within one radius of length.
+        let spacing = (0.5 * stem.radius / stem.length).max(1.0 / 128.0);
+        let from = if stem.taper < 2.0 { (1.0 - 1.5 * stem.radius / stem.length).max(0.0) } else { 0.0 };
+        let mut t = from;
+        while t < 1.0 {
+            out.push(t);
+            t += spacing;
+        }
+    }
+    let rings = &mut out[first..];
+    if extra {
+        rings.sort_by(f32::total_cmp);
+    }
+    let mut n = 0;
+    for i in 0..rings.len() {
+        if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
+            rings[n] = rings[i];
+            n += 1;
+        }
+    }
+    out.truncate(first + n);
+    let has_ring = |out: &[f32], lo: f32, hi: f32| {
+        let k = out.partition_point(|&x| x < lo);
+        k < out.len() && out[k] <= hi
+    };
+    for (i, f) in feet.iter().enumerate() {
+        let reach = weld::REACH * (f.t_hi - f.t_lo);
+        if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
+            insert_sorted(out, first, f.t_lo);
+        }
+        if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
+            insert_sorted(out, first, f.t_hi);
+        }
+        for e in &feet[..i] {
+            if e.t_hi <= f.t_lo && f.side_by_side(e, pad) && !has_ring(&out[first..], e.t_hi, f.t_lo) {
+                insert_sorted(out, first, 0.5 * (e.t_hi + f.t_lo));
+            }
+        }
+    }
+    let mut dropped = 0;
+    if start > 0.0 {
+        // Drop the rings the junction replaces; the junction ring is the first.
+        let keep = out[first..].partition_point(|&t| t <= start + 1e-4) + first;
+        out.drain(first..keep);
+        out.insert(first, start);
+        dropped = keep - first;
+    }
+    // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
+    let last = *out.last().expect("at least one ring");
+    out.push(last + 0.75 * (1.0 - last));
+    dropped
+}

@@ -1,0 +1,370 @@
+//! Sweeping one stem into its tube (the bark surface stage, [`super`]): rings are oriented by
+//! parallel transport so tubes never twist. Normals are the smooth surface normals of a tapered
+//! tube (`radial - dr/ds * tangent`, normalised); `u` runs around the stem with the seam
+//! duplicated, `v` along it at one unit per circumference, so bark textures stay square and
+//! continuous. Each tip closes with a small cone to an apex vertex and the trunk's base with a
+//! fan; a complex trunk's rings take their outline from [`crate::mesh::trunk`]. Also the per-stem
+//! wind constants the sweep records, and the index pass writing each stem's quads (skipping
+//! claimed ones) and fans.
+
+use super::{Base, Frame, StemMesh, PENDING_CAP};
+use crate::math::{cos, sin, unit_or, TAU};
+use crate::mesh::trunk::{ring_circles, union_outline};
+use crate::mesh::{MeshBuilder, WIND_STRIDE};
+use crate::params::TreeParams;
+use crate::rng::Rng;
+use crate::skeleton::{Skeleton, Stem};
+use glam::Vec3;
+
+/// Unit circle table for `sides`: `(cos, sin, u)` per column, with the seam point repeated at
+/// the end (bit-identical position, `u = 1`).
+pub(super) fn circle(sides: u32) -> Vec<(f32, f32, f32)> {
+    let mut t: Vec<(f32, f32, f32)> = (0..sides)
+        .map(|j| {
+            let a = TAU * j as f32 / sides as f32;
+            (cos(a), sin(a), j as f32 / sides as f32)
+        })
+        .collect();
+    t.push((t[0].0, t[0].1, 1.0));
+    t
+}
+
+/// Indices of one swept stem: quads between rings (except those a child's junction claimed),
+/// the tip fan, and the base cap.
+pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
+    let s = m.sides;
+    let st = s + 1;
+    let rows = m.rings as usize - 1;
+    let claims = &claimed[m.claim..m.claim + rows * s as usize];
+    let free = claims.iter().filter(|&&c| !c).count();
+    let fans = s as usize * if matches!(m.base, Base::Welded) { 1 } else { 2 };
+    let idx = out.alloc_indices(free * 6 + fans * 3);
+    let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
+    let mut q = quad_idx.chunks_exact_mut(6);
+    for (i, row_claims) in claims.chunks_exact(s as usize).enumerate() {
+        let row = m.first + i as u32 * st;
+        for (j, &c) in row_claims.iter().enumerate() {
+            if c {
+                continue;
+            }
+            let (a, b) = (row + j as u32, row + j as u32 + 1);
+            let (c, d) = (b + st, a + st);
+            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
+        }
+    }
+    let mut f = fan_idx.chunks_exact_mut(3);
+    let row = m.first + (m.rings - 1) * st;
+    for j in 0..s {
+        f.next().expect("sized above").copy_from_slice(&[row + j, row + j + 1, m.apex]);
+    }
+    match m.base {
+        Base::Trunk(cap) => {
+            let centre = cap + st;
+            for j in 0..s {
+                f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
+            }
+        }
+        Base::Cap(centre) => {
+            for j in 0..s {
+                f.next().expect("sized above").copy_from_slice(&[m.first + j + 1, m.first + j, centre]);
+            }
+        }
+        Base::Welded => {}
+    }
+}
+
+/// Per-stem constants of the wind attributes ([`TreeMesh::wind`](crate::mesh::TreeMesh::wind)).
+#[derive(Clone, Copy, Debug)]
+pub struct StemWind {
+    /// The stem's base point (the pivot it sways about).
+    pub pivot: Vec3,
+    /// Branch level.
+    pub level: f32,
+    /// Random phase 0..1, one per stem.
+    pub phase: f32,
+    /// Path length from the root to the stem's base (m).
+    pub distance: f32,
+    /// Trunk base radius (m), the reference for stiffness.
+    pub trunk_radius: f32,
+}
+
+impl StemWind {
+    /// The wind record of a ring at fraction `t` of `stem` with local radius `radius`.
+    /// Stiffness is `sqrt(min(1, radius / trunk_radius))`: 1 at the trunk base (and in the flare),
+    /// about 0.3 where a stem is a tenth of the trunk, 0.1 at a hundredth: thin twigs sway most.
+    #[inline]
+    pub fn record(&self, stem: &Stem, t: f32, radius: f32) -> [f32; WIND_STRIDE] {
+        let stiffness = (radius / self.trunk_radius).clamp(0.0, 1.0).sqrt();
+        let p = self.pivot;
+        [p.x, p.y, p.z, self.level, self.phase, stiffness, self.distance + t * stem.length, radius]
+    }
+}
+
+/// Wind constants of every stem: phases from the `"wind"` stream (one draw per stem, in stem
+/// order), base distances from the parent's base distance plus the offset along it.
+pub fn stem_winds(skeleton: &Skeleton, seed: u32) -> Vec<StemWind> {
+    let mut rng = Rng::new(u64::from(seed), "wind");
+    let trunk_radius = skeleton.stems.first().map_or(1.0, |s| s.radius).max(1e-6);
+    let mut out: Vec<StemWind> = Vec::with_capacity(skeleton.stems.len());
+    for s in &skeleton.stems {
+        let distance = s.parent.map_or(0.0, |i| out[i as usize].distance + s.offset);
+        out.push(StemWind {
+            pivot: s.base(),
+            level: f32::from(s.level),
+            phase: rng.next_f32(),
+            distance,
+            trunk_radius,
+        });
+    }
+    out
+}
+
+pub(super) fn sweep(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    lobes: Option<(u32, f32)>,
+    wind: &StemWind,
+    frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
+    out: &mut MeshBuilder,
+) -> StemMesh {
+    match lobes {
+        Some((n, depth)) => {
+            let sides = circle.len() - 1;
+            let lobe: Vec<f32> =
+                (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
+            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, frames, start, out)
+        }
+        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, frames, start, out),
+    }
+}
+
+/// Sweep one stem whose ring `r`, column `j` sits at `factor(r, j)` times the ring radius.
+/// Where the factor varies around the ring, the in-plane normal follows the outline's tangent.
+fn sweep_with(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    factor: &dyn Fn(usize, usize) -> f32,
+    wind: &StemWind,
+    frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
+    out: &mut MeshBuilder,
+) -> StemMesh {
+    let sides = circle.len() - 1;
+    let stride = sides + 1;
+    let rings = ts.len();
+    let trunk = stem.parent.is_none();
+    let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
+    let block = out.alloc_vertices(count);
+    let (first, pos, nrm, uv, wnd) = (block.first, block.positions, block.normals, block.uvs, block.wind);
+    let mut ring_factor = vec![1.0f32; stride];
+    let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
+    let mut seg = (0, stem.segment(0));
+    let (_, t0) = seg.1.eval(0.0);
+    // `start`: a fork's clone takes its original's frame normal and `v` at the split.
+    let (reference, v_base) = start.unwrap_or((stem.base_normal, 0.0));
+    let mut normal = unit_or(reference - t0 * reference.dot(t0), || t0.any_orthonormal_vector());
+    // A welded stem starts at its junction ring: v starts where the full stem would have it.
+    let v0 = v_base + ts[0] * stem.length / (TAU * stem.radius.max(1e-6));
+    let mut v = v0;
+    let mut prev: Option<(f32, f32)> = None; // (t, radius) of the previous ring
+    let mut last_center = Vec3::ZERO;
+    let mut last_radius = stem.radius;
+    for (r, &t) in ts.iter().enumerate() {
+        let (i, u) = stem.locate(t);
+        if seg.0 != i {
+            seg = (i, stem.segment(i));
+        }
+        let (c, tan) = seg.1.eval(u);
+        normal = unit_or(normal - tan * normal.dot(tan), || tan.any_orthonormal_vector());
+        let binormal = tan.cross(normal);
+        frames[r] = Frame { centre: c, tangent: tan, normal };
+        // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
+        let radius = stem.radius_at(t).max(0.05 * stem.radius);
+        let slope = stem.radius_slope(t);
+        let inv = 1.0 / (1.0 + slope * slope).sqrt();
+        if let Some((pt, pr)) = prev {
+            v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
+        }
+        let block = r * stride;
+        let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
+        let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
+        let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
+        let record = wind.record(stem, t, radius);
+        for w in wnd[block * WIND_STRIDE..(block + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+            w.copy_from_slice(&record);
+        }
+        let tilt = tan * slope;
+        for (j, f) in ring_factor.iter_mut().enumerate() {
+            *f = factor(r, j);
+        }
+        if ring_factor.iter().all(|&f| f == 1.0) {
+            for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
+                let radial = normal * cs + binormal * sn;
+                let p = c + radial * radius;
+                let n = (radial - tilt) * inv;
+                p3.copy_from_slice(&[p.x, p.y, p.z]);
+                n3.copy_from_slice(&[n.x, n.y, n.z]);
+                t2.copy_from_slice(&[u, v]);
+            }
+        } else {
+            // In-plane outline normals: perpendicular to the chord between neighbouring columns.
+            let at = |j: usize| {
+                let (cs, sn, _) = circle[j];
+                (cs * ring_factor[j], sn * ring_factor[j])
+            };
+            for (j, n2) in plane_normal.iter_mut().enumerate() {
+                let (a, b) = (at(if j == 0 { sides - 1 } else { j - 1 }), at(if j == sides { 1 } else { j + 1 }));
+                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+                let len = (dx * dx + dy * dy).sqrt().max(1e-12);
+                *n2 = (dy / len, -dx / len);
+            }
+            for ((((p3, n3), t2), &(cs, sn, u)), (&f, &(nx, ny))) in
+                ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(ring_factor.iter().zip(&plane_normal))
+            {
+                let radial = normal * cs + binormal * sn;
+                let p = c + radial * (radius * f);
+                let outward = normal * nx + binormal * ny;
+                let n = unit_or(outward - tilt, || radial);
+                p3.copy_from_slice(&[p.x, p.y, p.z]);
+                n3.copy_from_slice(&[n.x, n.y, n.z]);
+                t2.copy_from_slice(&[u, v]);
+            }
+        }
+        prev = Some((t, radius));
+        last_center = c;
+        last_radius = radius;
+    }
+    // Tip: a short cone to an apex at the stem end (a little beyond it if the tip is blunt).
+    let last_seg = stem.points.len() - 2;
+    if seg.0 != last_seg {
+        seg = (last_seg, stem.segment(last_seg));
+    }
+    let (tip, tip_tan) = seg.1.eval(1.0);
+    let end_r = stem.radius_at(1.0);
+    let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
+    let v_apex = v + (apex_pos - last_center).length() / (TAU * last_radius.max(1e-6));
+    let apex_slot = rings * stride;
+    pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
+    nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&tip_tan.to_array());
+    uv[apex_slot * 2..apex_slot * 2 + 2].copy_from_slice(&[0.5, v_apex]);
+    wnd[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));
+    let apex = first + apex_slot as u32;
+    if trunk {
+        // Trunk base: a flat cap with its own downward-facing copy of the bottom ring (a hard edge).
+        let down = (-t0).to_array();
+        let cap = apex_slot + 1;
+        for (j, &(cs, sn, _)) in circle.iter().enumerate() {
+            let (src, dst) = (j * 3, (cap + j) * 3);
+            let ring0 = [pos[src], pos[src + 1], pos[src + 2]];
+            pos[dst..dst + 3].copy_from_slice(&ring0);
+            nrm[dst..dst + 3].copy_from_slice(&down);
+            uv[(cap + j) * 2..(cap + j) * 2 + 2].copy_from_slice(&[0.5 + 0.5 * cs, 0.5 + 0.5 * sn]);
+        }
+        let centre = cap + stride;
+        pos[centre * 3..centre * 3 + 3].copy_from_slice(&stem.base().to_array());
+        nrm[centre * 3..centre * 3 + 3].copy_from_slice(&down);
+        uv[centre * 2..centre * 2 + 2].copy_from_slice(&[0.5, 0.5]);
+        // The cap's ring copy and centre sway like the bottom ring.
+        let record: [f32; WIND_STRIDE] = wnd[..WIND_STRIDE].try_into().expect("ring 0 exists");
+        for w in wnd[cap * WIND_STRIDE..(centre + 1) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+            w.copy_from_slice(&record);
+        }
+    }
+    out.rings(first, rings as u32, stride as u32);
+    StemMesh {
+        first,
+        rings: rings as u32,
+        sides: sides as u32,
+        ring0: 0,
+        apex,
+        base: if trunk { Base::Trunk(apex + 1) } else { PENDING_CAP },
+        claim: 0,
+        v0,
+    }
+}
+
+/// Cross-section settings of a complex trunk (see [`crate::mesh::trunk`]): refinement circles whose
+/// offset and radius vary smoothly with height, W&P lobes on top, and the maple page's base
+/// ripple `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
+pub(super) struct TrunkProfile {
+    offset: f32,
+    radius: f32,
+    /// Relative variation of each refinement circle's (offset, radius) at `KEYS` heights.
+    keys: Vec<Vec<[f32; 2]>>,
+    phase: f32,
+    ripple: f32,
+    lobes: Option<(u32, f32)>,
+}
+
+/// Heights (evenly spaced along the trunk) at which refinement circles get new random variation.
+const KEYS: usize = 9;
+
+impl TrunkProfile {
+    pub(super) fn new(p: &TreeParams, lobes: Option<(u32, f32)>) -> Self {
+        let mut rng = Rng::new(u64::from(p.seed), "trunk-profile");
+        let n = p.refine_curves as usize;
+        let v = p.refine_variation;
+        let keys = (0..KEYS).map(|_| (0..n).map(|_| [rng.var(v), rng.var(v)]).collect()).collect();
+        TrunkProfile {
+            offset: p.refine_offset,
+            radius: p.refine_radius,
+            keys,
+            phase: rng.uniform(0.0, TAU),
+            ripple: p.base_ripple,
+            lobes,
+        }
+    }
+
+    /// Per-circle variation at fraction `t` of the trunk (linear between keys).
+    fn jitter_at(&self, t: f32, out: &mut Vec<[f32; 2]>) {
+        let f = t.clamp(0.0, 1.0) * (KEYS - 1) as f32;
+        let i = (f as usize).min(KEYS - 2);
+        let u = f - i as f32;
+        out.clear();
+        out.extend(
+            self.keys[i]
+                .iter()
+                .zip(&self.keys[i + 1])
+                .map(|(a, b)| [a[0] + (b[0] - a[0]) * u, a[1] + (b[1] - a[1]) * u]),
+        );
+    }
+}
+
+/// Sweep of the trunk record with a complex cross-section: each ring's outline is the union of
+/// its circles resampled per column (then lobes and the base ripple), as factors on the radius.
+pub(super) fn sweep_trunk(
+    stem: &Stem,
+    ts: &[f32],
+    circle: &[(f32, f32, f32)],
+    tp: &TrunkProfile,
+    wind: &StemWind,
+    frames: &mut [Frame],
+    start: Option<(Vec3, f32)>,
+    out: &mut MeshBuilder,
+) -> StemMesh {
+    let sides = circle.len() - 1;
+    let dirs: Vec<(f32, f32)> = circle.iter().map(|&(c, s, _)| (c, s)).collect();
+    let mut jitter = Vec::new();
+    let mut rho = Vec::with_capacity(circle.len());
+    let mut rings: Vec<Vec<f32>> = Vec::with_capacity(ts.len());
+    for &t in ts {
+        let radius = stem.radius_at(t).max(0.05 * stem.radius);
+        tp.jitter_at(t, &mut jitter);
+        let circles = ring_circles(radius, tp.offset, tp.radius, tp.phase, &jitter);
+        union_outline(&circles, &dirs, &mut rho);
+        let fade = (1.0 - t / 0.125).max(0.0);
+        for (j, r) in rho.iter_mut().enumerate() {
+            let theta = TAU * (j % sides) as f32 / sides as f32;
+            if let Some((n, depth)) = tp.lobes {
+                *r *= 1.0 + depth * sin(n as f32 * theta);
+            }
+            *r *= 1.0 + tp.ripple * fade * sin(7.0 * theta);
+            *r /= radius;
+        }
+        rings.push(rho.clone());
+    }
+    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, frames, start, out)
+}
