@@ -1,5 +1,5 @@
 //! The leaf's enum parameters (outline mode, margin type, venation) and their registry wiring.
-//! Every numeric leaf parameter lives in the registry (`params.rs`, groups "Leaf", "Leaf Veins"
+//! Every numeric leaf parameter lives in the registry (`params/mod.rs`, groups "Leaf", "Leaf Veins"
 //! and "Leaf Surface"), so the typed fields of [`crate::TreeParams`] are the leaf's options.
 
 use crate::param_enum::param_enum;
