@@ -108,13 +108,14 @@ pub(crate) fn geometry_from(
     // A clone that has drawn away already would separate at once, in a steep short crotch:
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
+    let (mut on_o, mut on_c) = (o.points(), c.points());
     for k in 1..=400 {
         let s = k as f32 * step;
         let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
         if t_c > MAX_START || t_o > 0.9 {
             return None;
         }
-        let gap = (o.sample(t_o).0 - c.sample(t_c).0).length();
+        let gap = (on_o.at(t_o) - on_c.at(t_c)).length();
         if s >= min_s && gap >= CLEARANCE * (o.radius_at(t_o) * bound + c.radius_at(t_c)) {
             return Some(Junction {
                 parent: pi,

@@ -149,7 +149,7 @@ fn faithful(stem: &Stem) -> bool {
     theta <= rad(90.0)
         && l0 >= 0.1 * chord
         && l1 >= 0.1 * chord
-        && [0.25f32, 0.75].iter().all(|&t| (stem.sample(t).0 - span.point(t)).length() <= tol)
+        && [0.25f32, 0.75].iter().all(|&t| (stem.point(t) - span.point(t)).length() <= tol)
 }
 
 /// Ring parameters (Bezier `u`, 0..1) of a twig appended to `out`; returns its number of sides.

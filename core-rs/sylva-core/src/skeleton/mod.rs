@@ -12,7 +12,7 @@ mod stem;
 mod trace;
 mod trunk;
 
-pub use stem::{flare_factor, taper_radius, Points, Segment, Stem};
+pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
 
@@ -316,6 +316,24 @@ mod tests {
         // 1 < taper <= 2: full radius until one radius from the tip, then a hemisphere closing to 0.
         assert!((taper_radius(1.0, 2.0, 10.0, 0.5) - 1.0).abs() < 1e-6);
         assert!(taper_radius(1.0, 2.0, 10.0, 1.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn points_are_the_samples_positions_exactly() {
+        // `Stem::point` and `StemPoints::at` (the fork search's cheap readers) must give the very
+        // bits of `Stem::sample`'s position, forward, backward and jumping between segments:
+        // the forks, and so the golden hashes, depend on them.
+        let p = crate::presets::find("weeping_willow").unwrap().params().unwrap();
+        let sk = build(&p).unwrap();
+        for stem in sk.stems.iter().step_by(97) {
+            let mut cursor = stem.points();
+            for k in (0..=300).chain((0..=300).rev()).chain([0, 300, 7, 290, 150]) {
+                let t = k as f32 / 300.0;
+                let want = stem.sample(t).0;
+                assert_eq!(stem.point(t), want);
+                assert_eq!(cursor.at(t), want);
+            }
+        }
     }
 
     #[test]

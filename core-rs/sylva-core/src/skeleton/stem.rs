@@ -80,6 +80,17 @@ impl Stem {
         self.segment(i).eval(u)
     }
 
+    /// The point of [`Stem::sample`] alone (no tangent: cheaper where only places matter).
+    pub fn point(&self, t: f32) -> Vec3 {
+        let (i, u) = self.locate(t);
+        self.segment(i).position(u)
+    }
+
+    /// A reader of [`Stem::point`] for many nearby `t`: it keeps the last segment's cubic.
+    pub fn points(&self) -> StemPoints<'_> {
+        StemPoints { stem: self, index: usize::MAX, segment: None }
+    }
+
     /// Segment index and local parameter of fraction `t`.
     pub fn locate(&self, t: f32) -> (usize, f32) {
         let segs = self.points.len() - 1;
@@ -111,6 +122,25 @@ impl Stem {
     }
 }
 
+/// [`Stem::point`] with the last segment's cubic kept ([`Stem::points`]): the same points, without
+/// rebuilding the cubic while `t` stays on one segment.
+pub struct StemPoints<'a> {
+    stem: &'a Stem,
+    index: usize,
+    segment: Option<Segment>,
+}
+
+impl StemPoints<'_> {
+    /// The centre curve's point at fraction `t`.
+    pub fn at(&mut self, t: f32) -> Vec3 {
+        let (i, u) = self.stem.locate(t);
+        if self.index != i || self.segment.is_none() {
+            (self.index, self.segment) = (i, Some(self.stem.segment(i)));
+        }
+        self.segment.as_ref().map_or(Vec3::ZERO, |s| s.position(u))
+    }
+}
+
 /// One segment of a stem's Catmull-Rom centre curve, in polynomial form.
 #[derive(Clone, Copy, Debug)]
 pub struct Segment {
@@ -125,9 +155,16 @@ impl Segment {
     /// Point and unit tangent at local parameter `u` in [0, 1].
     #[inline]
     pub fn eval(&self, u: f32) -> (Vec3, Vec3) {
-        let pos = 0.5 * (2.0 * self.p1 + self.d * u + self.a * (u * u) + self.b * (u * u * u));
+        let pos = self.position(u);
         let tan = 0.5 * (self.d + self.a * (2.0 * u) + self.b * (3.0 * u * u));
         (pos, unit_or(tan, || (self.p2 - self.p1).normalize_or(Vec3::Y)))
+    }
+
+    /// The point at local parameter `u` (the position [`Segment::eval`] returns, without the
+    /// tangent and its square root).
+    #[inline]
+    pub fn position(&self, u: f32) -> Vec3 {
+        0.5 * (2.0 * self.p1 + self.d * u + self.a * (u * u) + self.b * (u * u * u))
     }
 }
 

@@ -93,7 +93,7 @@ pub(super) fn patches(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleto
                 vf_start: Vec::new(),
                 vf: Vec::new(),
                 free: vec![true; blocks[i].len()],
-                samples: (0..=64).map(|k| (k as f32 / 64.0, stem.sample(k as f32 / 64.0).0)).collect(),
+                samples: (0..=64).map(|k| (k as f32 / 64.0, stem.point(k as f32 / 64.0))).collect(),
             }
         })
         .collect();

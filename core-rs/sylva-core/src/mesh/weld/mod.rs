@@ -195,7 +195,7 @@ fn geometry(stems: &[Stem], i: usize, p: &TreeParams) -> Option<Junction> {
     // close along the same parent, where the transported frame barely turns.
     let (c, t) = par.sample(t_mid);
     let n = unit_or(par.base_normal - t * par.base_normal.dot(t), || t.any_orthonormal_vector());
-    let w = s.sample(t_start).0 - c;
+    let w = s.point(t_start) - c;
     let phi = atan2(w.dot(t.cross(n)), w.dot(n));
     Some(Junction { parent: pi, t_start, t_lo, t_hi, foot, phi, beta, fork: false })
 }
