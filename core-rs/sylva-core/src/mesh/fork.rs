@@ -57,6 +57,10 @@ use glam::Vec3;
 const MAX_SIN: f32 = 0.5;
 /// The junction rings must be apart by this factor times the sum of the two radii.
 const CLEARANCE: f32 = 1.1;
+/// Steps of the search for the rings where the tubes have separated, and how many of them the
+/// search skips at a time before looking at each.
+const STEPS: usize = 400;
+const COARSE: usize = 4;
 /// How far up from the split toward the facing columns' midpoint the crotch seam rises in the
 /// middle, tried in order until every triangle is well wound.
 const RISES: [f32; 3] = [0.9, 0.7, 0.97];
@@ -109,26 +113,49 @@ pub(crate) fn geometry_from(
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
     let (mut on_o, mut on_c) = (o.points(), c.points());
-    for k in 1..=400 {
+    // Step k: Some(true) where the tubes have separated, None past the search's end.
+    let mut separated = |k: usize| {
         let s = k as f32 * step;
         let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
         if t_c > MAX_START || t_o > 0.9 {
             return None;
         }
         let gap = (on_o.at(t_o) - on_c.at(t_c)).length();
-        if s >= min_s && gap >= CLEARANCE * (o.radius_at(t_o) * bound + c.radius_at(t_c)) {
-            return Some(Junction {
-                parent: pi,
-                t_start: t_c,
-                t_lo: t_split,
-                t_hi: t_o,
-                foot: c.radius_at(0.0),
-                phi: 0.0,
-                // The whole way round: no other footprint may share the fork's rows.
-                beta: PI,
-                fork: true,
-            });
+        Some(s >= min_s && gap >= CLEARANCE * (o.radius_at(t_o) * bound + c.radius_at(t_c)))
+    };
+    // Every COARSE-th step first (a radius apart); the steps before one that separates (or ends
+    // the search) are then tried in order for the first that does. A separation that does not
+    // last to the next coarse step (the tubes touch again within a radius) is not taken; on
+    // every preset the forks are the ones a step-by-step search finds (same golden hashes).
+    let mut k = 0;
+    while k < STEPS {
+        let hi = (k + COARSE).min(STEPS);
+        if separated(hi) == Some(false) {
+            k = hi;
+            continue;
         }
+        for j in k + 1..=hi {
+            match separated(j) {
+                None => return None,
+                Some(false) => {}
+                Some(true) => {
+                    let s = j as f32 * step;
+                    let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
+                    return Some(Junction {
+                        parent: pi,
+                        t_start: t_c,
+                        t_lo: t_split,
+                        t_hi: t_o,
+                        foot: c.radius_at(0.0),
+                        phi: 0.0,
+                        // The whole way round: no other footprint may share the fork's rows.
+                        beta: PI,
+                        fork: true,
+                    });
+                }
+            }
+        }
+        k = hi;
     }
     None
 }
