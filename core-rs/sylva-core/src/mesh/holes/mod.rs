@@ -165,16 +165,8 @@ pub(crate) fn densify(stem: &Stem, sides: u32, p: &TreeParams, ts: &mut Vec<f32>
     if ts.len() == before {
         return sides;
     }
-    let rings = &mut ts[start..];
-    rings.sort_by(f32::total_cmp);
-    let mut n = 0;
-    for i in 0..rings.len() {
-        if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
-            rings[n] = rings[i];
-            n += 1;
-        }
-    }
-    ts.truncate(start + n);
+    ts[start..].sort_by(f32::total_cmp);
+    super::tube::drop_close(ts, start);
     sides
 }
 

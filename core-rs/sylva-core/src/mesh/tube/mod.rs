@@ -17,6 +17,7 @@
 mod rings;
 mod sweep;
 
+pub(crate) use rings::drop_close;
 pub use sweep::{stem_winds, StemWind};
 
 use super::{fork, holes, twig, weld, Material, MeshBuilder, TreeMesh};

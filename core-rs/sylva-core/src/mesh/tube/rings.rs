@@ -75,18 +75,10 @@ pub(super) fn plan_rings(
             t += spacing;
         }
     }
-    let rings = &mut out[first..];
     if extra {
-        rings.sort_by(f32::total_cmp);
+        out[first..].sort_by(f32::total_cmp);
     }
-    let mut n = 0;
-    for i in 0..rings.len() {
-        if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
-            rings[n] = rings[i];
-            n += 1;
-        }
-    }
-    out.truncate(first + n);
+    drop_close(out, first);
     let has_ring = |out: &[f32], lo: f32, hi: f32| {
         let k = out.partition_point(|&x| x < lo);
         k < out.len() && out[k] <= hi
@@ -117,4 +109,18 @@ pub(super) fn plan_rings(
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
     dropped
+}
+
+/// Drops from the sorted ring positions `ts[first..]` every one within 1e-4 of the one kept before
+/// it (rings closer than that would give degenerate quads).
+pub(crate) fn drop_close(ts: &mut Vec<f32>, first: usize) {
+    let rings = &mut ts[first..];
+    let mut n = 0;
+    for i in 0..rings.len() {
+        if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
+            rings[n] = rings[i];
+            n += 1;
+        }
+    }
+    ts.truncate(first + n);
 }
