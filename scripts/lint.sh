@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# All lints in one place: rustfmt, clippy with warnings as errors, eslint and prettier.
+# All lints in one place: rustfmt, clippy and rustdoc with warnings as errors, eslint and prettier.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo fmt --all --check
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo clippy -p sylva-wasm --target wasm32-unknown-unknown --quiet -- -D warnings
+RUSTDOCFLAGS='-D warnings' cargo doc --quiet --no-deps --workspace
 npm run lint -w web

@@ -1,4 +1,4 @@
-//! Parameters: the one source of truth. [`define_params!`] declares every parameter once (id,
+//! Parameters: the one source of truth. `define_params!` declares every parameter once (id,
 //! type, default, range, step, unit, label, description, group) and produces the typed
 //! [`TreeParams`] struct the generator reads, its `Default`, and the [`registry`] that the web
 //! panel, the share-URL codec, validation, the CLI and the README reference are generated from.
@@ -424,7 +424,7 @@ define_params! {
 
 static REGISTRY: OnceLock<Vec<ParamSpec>> = OnceLock::new();
 
-/// All parameters in panel order. Built once from [`define_params!`].
+/// All parameters in panel order. Built once from `define_params!`.
 pub fn registry() -> &'static [ParamSpec] {
     REGISTRY.get_or_init(build_registry)
 }

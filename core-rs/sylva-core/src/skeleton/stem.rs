@@ -12,7 +12,7 @@ pub type Points = smallvec::SmallVec<[Vec3; 4]>;
 pub struct Stem {
     /// 0 = trunk, 1 = branches on the trunk, ...
     pub level: u8,
-    /// Index of the parent stem in [`Skeleton::stems`].
+    /// Index of the parent stem in [`Skeleton::stems`](super::Skeleton::stems).
     pub parent: Option<u32>,
     /// Distance along the parent where this stem starts (m).
     pub offset: f32,

@@ -10,7 +10,7 @@
 //!
 //! **Scene**: node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
 //!
-//! * **Bark** mesh: one primitive per material group of [`TreeMesh`], sharing the attributes
+//! * **Bark** mesh: one primitive per material group of [`TreeMesh`](crate::mesh::TreeMesh), sharing the attributes
 //!   `POSITION` (float, with min/max), `NORMAL`, `TEXCOORD_0` (float: bark UVs run past 1),
 //!   `TANGENT` (with normal maps, unless [`ExportOptions::tangents`] is off), `COLOR_0` (RGBA8
 //!   normalised, see [`super::bark_colors`]) and the wind attributes; indices are `u16` when

@@ -21,15 +21,8 @@ fn insert_sorted(out: &mut Vec<f32>, first: usize, t: f32) {
 /// that close; two footprints side by side around the stem (`pad`: one column) that no ring
 /// separates get one between them, so that their holes never share a quad. A welded stem starts
 /// at `start` (its junction ring) instead of 0. The last ring sits just short of the tip; the
-/// apex closes the stem at t = 1. Returns how many planned rings the junction ring replaced.
-pub(super) fn plan_rings(
-    stem: &Stem,
-    quality: f32,
-    feet: &[weld::Junction],
-    pad: f32,
-    start: f32,
-    out: &mut Vec<f32>,
-) -> usize {
+/// apex closes the stem at t = 1.
+pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad: f32, start: f32, out: &mut Vec<f32>) {
     let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
@@ -97,18 +90,15 @@ pub(super) fn plan_rings(
             }
         }
     }
-    let mut dropped = 0;
     if start > 0.0 {
         // Drop the rings the junction replaces; the junction ring is the first.
         let keep = out[first..].partition_point(|&t| t <= start + 1e-4) + first;
         out.drain(first..keep);
         out.insert(first, start);
-        dropped = keep - first;
     }
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
-    dropped
 }
 
 /// Drops from the sorted ring positions `ts[first..]` every one within 1e-4 of the one kept before
