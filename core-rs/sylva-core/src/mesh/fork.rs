@@ -112,11 +112,15 @@ pub(crate) fn geometry_from(
     // A clone that has drawn away already would separate at once, in a steep short crotch:
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
-    let (mut on_o, mut on_c) = (o.points(), c.points());
-    // Step k: Some(true) where the tubes have separated, None past the search's end.
-    let mut separated = |k: usize| {
+    // Step k: how far up the original from the split, and where both stems are then.
+    let at_step = |k: usize| {
         let s = k as f32 * step;
-        let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
+        (s, t_split + s / lo, (ahead + s) / lc)
+    };
+    let (mut on_o, mut on_c) = (o.points(), c.points());
+    // Some(true) where the tubes have separated, None past the search's end.
+    let mut separated = |k: usize| {
+        let (s, t_o, t_c) = at_step(k);
         if t_c > MAX_START || t_o > 0.9 {
             return None;
         }
@@ -139,8 +143,7 @@ pub(crate) fn geometry_from(
                 None => return None,
                 Some(false) => {}
                 Some(true) => {
-                    let s = j as f32 * step;
-                    let (t_o, t_c) = (t_split + s / lo, (ahead + s) / lc);
+                    let (_, t_o, t_c) = at_step(j);
                     return Some(Junction {
                         parent: pi,
                         t_start: t_c,

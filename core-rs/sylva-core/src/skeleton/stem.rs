@@ -88,7 +88,7 @@ impl Stem {
 
     /// A reader of [`Stem::point`] for many nearby `t`: it keeps the last segment's cubic.
     pub fn points(&self) -> StemPoints<'_> {
-        StemPoints { stem: self, index: usize::MAX, segment: None }
+        StemPoints { stem: self, index: 0, segment: self.segment(0) }
     }
 
     /// Segment index and local parameter of fraction `t`.
@@ -126,18 +126,19 @@ impl Stem {
 /// rebuilding the cubic while `t` stays on one segment.
 pub struct StemPoints<'a> {
     stem: &'a Stem,
+    /// The segment `segment` is the cubic of.
     index: usize,
-    segment: Option<Segment>,
+    segment: Segment,
 }
 
 impl StemPoints<'_> {
     /// The centre curve's point at fraction `t`.
     pub fn at(&mut self, t: f32) -> Vec3 {
         let (i, u) = self.stem.locate(t);
-        if self.index != i || self.segment.is_none() {
-            (self.index, self.segment) = (i, Some(self.stem.segment(i)));
+        if self.index != i {
+            (self.index, self.segment) = (i, self.stem.segment(i));
         }
-        self.segment.as_ref().map_or(Vec3::ZERO, |s| s.position(u))
+        self.segment.position(u)
     }
 }
 
