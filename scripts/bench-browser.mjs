@@ -17,10 +17,14 @@ const median = (xs) => {
 };
 
 async function serve(port) {
-  const server = spawn('npm', ['run', 'preview', '-w', 'web', '--', '--port', String(port), '--strictPort'], {
-    cwd: root,
-    stdio: ['ignore', 'pipe', 'pipe'],
-  });
+  const server = spawn(
+    'npm',
+    ['run', 'preview', '-w', 'web', '--', '--port', String(port), '--strictPort'],
+    {
+      cwd: root,
+      stdio: ['ignore', 'pipe', 'pipe'],
+    },
+  );
   const url = `http://127.0.0.1:${port}/`;
   for (let i = 0; i < 100; i++) {
     try {
@@ -37,42 +41,62 @@ async function serve(port) {
 /** Median round trip of `runs` regenerations of the default tree; null when no browser. */
 export async function benchBrowser(runs = 25) {
   if (!existsSync(CHROMIUM)) return null;
-  if (!existsSync(`${root}/web/dist/index.html`)) throw new Error('web/dist is missing: npm run build first');
+  if (!existsSync(`${root}/web/dist/index.html`))
+    throw new Error('web/dist is missing: npm run build first');
   const { server, url } = await serve(4391);
   const browser = await chromium.launch({
     executablePath: CHROMIUM,
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+    args: [
+      '--no-sandbox',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--use-gl=angle',
+      '--use-angle=swiftshader',
+      '--enable-unsafe-swiftshader',
+    ],
   });
   try {
     // Wind paused (reduced motion): software WebGL would otherwise spend the CPU on animation
     // frames that a real GPU draws for free, and the round trip would measure SwiftShader.
-    const page = await browser.newPage({ viewport: { width: 1000, height: 700 }, reducedMotion: 'reduce' });
+    const page = await browser.newPage({
+      viewport: { width: 1000, height: 700 },
+      reducedMotion: 'reduce',
+    });
     await page.goto(`${url}?v=1`);
     const stat = page.getByTestId('stat-roundtrip');
     const hash = page.getByTestId('stat-hash');
-    await page.waitForFunction(() => /^[0-9a-f]{16}$/.test(document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? ''));
+    await page.waitForFunction(() =>
+      /^[0-9a-f]{16}$/.test(
+        document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
+      ),
+    );
     const slider = page.locator('input[type="range"][data-param-id="l1_length"]');
     const trips = [];
     const draws = [];
     let vertices = 0;
     for (let i = 0; i < runs + 3; i++) {
       const before = (await hash.textContent())?.trim();
-      await slider.evaluate((el, v) => {
-        const input = el;
-        Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')?.set?.call(input, String(v));
-        input.dispatchEvent(new Event('input', { bubbles: true }));
-      }, 0.3 + 0.01 * ((i % 7) + 1));
-      await page.waitForFunction(
-        (b) => {
-          const h = document.querySelector('[data-testid=stat-hash]')?.textContent?.trim();
-          return h !== b && !document.querySelector('[data-testid=busy]');
+      await slider.evaluate(
+        (el, v) => {
+          const input = el;
+          Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')?.set?.call(
+            input,
+            String(v),
+          );
+          input.dispatchEvent(new Event('input', { bubbles: true }));
         },
-        before,
+        0.3 + 0.01 * ((i % 7) + 1),
       );
+      await page.waitForFunction((b) => {
+        const h = document.querySelector('[data-testid=stat-hash]')?.textContent?.trim();
+        return h !== b && !document.querySelector('[data-testid=busy]');
+      }, before);
       const trip = Number(await stat.getAttribute('data-roundtrip-ms'));
       const draw = Number((await stat.getAttribute('data-draw-ms')) || 0);
-      vertices = Number(((await page.getByTestId('stat-vertices').textContent()) ?? '').replace(/[^0-9]/g, ''));
+      vertices = Number(
+        ((await page.getByTestId('stat-vertices').textContent()) ?? '').replace(/[^0-9]/g, ''),
+      );
       if (i >= 3) {
         trips.push(trip);
         draws.push(draw);

@@ -24,10 +24,16 @@ const median = (xs) => {
 
 const sylva = nativeCli();
 const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
-wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+wasm.initSync({
+  module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+});
 
 // Every preset, plus the named cases the issues set targets for.
-const cases = JSON.parse(wasm.presets_json()).map((p) => ({ name: p.name, values: p.values, args: ['--preset', p.name] }));
+const cases = JSON.parse(wasm.presets_json()).map((p) => ({
+  name: p.name,
+  values: p.values,
+  args: ['--preset', p.name],
+}));
 cases.push({
   name: 'grown_10k_markers',
   values: { growth_mode: 1, markers: 10000 },
@@ -99,12 +105,18 @@ if (asJson) {
         `(worker generate + transfer + BufferGeometry; drawn on the next frame); median of ${browser.runs}.`,
     );
   } else {
-    console.log('Browser round trip: skipped (no Chromium at /usr/bin/chromium or $SYLVA_CHROMIUM).');
+    console.log(
+      'Browser round trip: skipped (no Chromium at /usr/bin/chromium or $SYLVA_CHROMIUM).',
+    );
   }
   const f = (x) => x.toFixed(2).padStart(8);
   const mv = (x) => (x / 1e6).toFixed(1).padStart(7);
-  console.log(`Medians over ${runs} runs (ms; M vertices/s). wasm e2e = generate + copy buffers out.`);
-  console.log('preset            vertices  native ms  Mv/s  | wasm ms  skel   mesh   hash   e2e    Mv/s  geom Mv/s');
+  console.log(
+    `Medians over ${runs} runs (ms; M vertices/s). wasm e2e = generate + copy buffers out.`,
+  );
+  console.log(
+    'preset            vertices  native ms  Mv/s  | wasm ms  skel   mesh   hash   e2e    Mv/s  geom Mv/s',
+  );
   for (const r of results) {
     const s = r.wasm.stage_median_ms;
     console.log(
@@ -132,7 +144,9 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
     }),
   ).glb;
   const fresh = await import(new URL('../web/src/wasm/sylva_wasm.js?glb-bench', import.meta.url));
-  fresh.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+  fresh.initSync({
+    module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+  });
   const tree = fresh.generate(JSON.stringify(preset.values));
   const timed = (f) => {
     const t0 = performance.now();
@@ -179,7 +193,10 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
     console.log(JSON.stringify({ glb }, null, 2));
   } else {
     const ms = (s) =>
-      s ? `${s.median_ms.toFixed(1)} ms` + (s.first_ms === undefined ? '' : ` (${s.first_ms.toFixed(1)})`) : 'n/a';
+      s
+        ? `${s.median_ms.toFixed(1)} ms` +
+          (s.first_ms === undefined ? '' : ` (${s.first_ms.toFixed(1)})`)
+        : 'n/a';
     console.log(
       `\nGLB export, ${glb.preset} (${glb.vertices} vertices, ${(bytes / 1e6).toFixed(1)} MB), median of ${runs} ` +
         `(first export in brackets; budget 100 ms):\n` +
@@ -213,7 +230,9 @@ if (typeof wasm.leaf_json === 'function') {
       if (i === runs + 2) leaf = JSON.parse(out);
       if (i < 3) continue; // warm-up
       // Only the timings are read back each run (parsing the whole leaf would feed the GC).
-      const ms = JSON.parse(out.slice(out.lastIndexOf('"ms":{') + 5, out.lastIndexOf(',"total_ms"')));
+      const ms = JSON.parse(
+        out.slice(out.lastIndexOf('"ms":{') + 5, out.lastIndexOf(',"total_ms"')),
+      );
       core.push(Number(out.slice(out.lastIndexOf('"total_ms":') + 11, -1)));
       e2e.push(t1 - t0);
       for (const [k, v] of Object.entries(ms)) (stages[k] ??= []).push(v);
@@ -238,8 +257,12 @@ if (typeof wasm.leaf_json === 'function') {
     console.log(JSON.stringify({ leaf: { runs, results: leafResults } }, null, 2));
   } else {
     const f = (x) => x.toFixed(2).padStart(8);
-    console.log(`\nLeaves, 5,000 auxin sources, medians over ${runs} runs (ms). wasm e2e = leaf_json including JSON.`);
-    console.log('leaf     venation  nodes loops | native ms  veins |  wasm ms  veins  budget    e2e');
+    console.log(
+      `\nLeaves, 5,000 auxin sources, medians over ${runs} runs (ms). wasm e2e = leaf_json including JSON.`,
+    );
+    console.log(
+      'leaf     venation  nodes loops | native ms  veins |  wasm ms  veins  budget    e2e',
+    );
     for (const r of leafResults) {
       const within = r.wasm.median_ms <= r.budget_wasm_ms ? 'ok' : 'OVER';
       console.log(
@@ -257,10 +280,14 @@ if (typeof wasm.leaf_json === 'function') {
 // Vitest's bench (tinybench) in Node. Budget: 200 ms.
 {
   const out = `${tmpdir()}/sylva-forest-bench-${process.pid}.json`;
-  execFileSync('npx', ['vitest', 'bench', '--run', 'src/forest/layout.bench.ts', '--outputJson', out], {
-    cwd: `${root}/web`,
-    stdio: 'ignore',
-  });
+  execFileSync(
+    'npx',
+    ['vitest', 'bench', '--run', 'src/forest/layout.bench.ts', '--outputJson', out],
+    {
+      cwd: `${root}/web`,
+      stdio: 'ignore',
+    },
+  );
   const report = JSON.parse(readFileSync(out, 'utf8'));
   rmSync(out, { force: true });
   const forest = report.files
@@ -268,9 +295,14 @@ if (typeof wasm.leaf_json === 'function') {
     .flatMap((g) => g.benchmarks)
     .map((b) => ({ name: b.name, median_ms: b.median, samples: b.sampleCount }));
   if (asJson) {
-    console.log(JSON.stringify({ forest: { trees: 10_000, budget_ms: 200, results: forest } }, null, 2));
+    console.log(
+      JSON.stringify({ forest: { trees: 10_000, budget_ms: 200, results: forest } }, null, 2),
+    );
   } else {
     console.log('\nForest instancing data, 10,000 trees (Node, medians; budget 200 ms):');
-    for (const r of forest) console.log(`  ${r.name.padEnd(46)} ${r.median_ms.toFixed(2).padStart(8)} ms  (${r.samples} samples)`);
+    for (const r of forest)
+      console.log(
+        `  ${r.name.padEnd(46)} ${r.median_ms.toFixed(2).padStart(8)} ms  (${r.samples} samples)`,
+      );
   }
 }

@@ -5,10 +5,14 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
-const table = execFileSync('cargo', ['run', '--quiet', '--release', '-p', 'sylva-cli', '--', 'params', '--markdown'], {
-  cwd: root,
-  encoding: 'utf8',
-}).trim();
+const table = execFileSync(
+  'cargo',
+  ['run', '--quiet', '--release', '-p', 'sylva-cli', '--', 'params', '--markdown'],
+  {
+    cwd: root,
+    encoding: 'utf8',
+  },
+).trim();
 const path = `${root}/README.md`;
 const readme = readFileSync(path, 'utf8');
 const start = '<!-- params:start -->';

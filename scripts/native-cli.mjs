@@ -16,6 +16,9 @@ export function cliPath(env = process.env) {
 
 /** Builds the release CLI (quietly; a no-op when up to date) and returns its path. */
 export function nativeCli() {
-  execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], { cwd: root, stdio: 'inherit' });
+  execFileSync('cargo', ['build', '--quiet', '--release', '-p', 'sylva-cli'], {
+    cwd: root,
+    stdio: 'inherit',
+  });
   return cliPath();
 }

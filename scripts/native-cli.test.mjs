@@ -17,5 +17,8 @@ test('an absolute CARGO_TARGET_DIR is used as it is', () => {
 });
 
 test('a relative CARGO_TARGET_DIR is taken from the repository root', () => {
-  assert.equal(cliPath({ CARGO_TARGET_DIR: 'build/t' }), join(root, 'build', 't', 'release', 'sylva'));
+  assert.equal(
+    cliPath({ CARGO_TARGET_DIR: 'build/t' }),
+    join(root, 'build', 't', 'release', 'sylva'),
+  );
 });

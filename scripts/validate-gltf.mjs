@@ -21,7 +21,9 @@ const keepAt = args.indexOf('--keep');
 const dir = keepAt >= 0 ? args[keepAt + 1] : mkdtempSync(join(tmpdir(), 'sylva-gltf-'));
 
 const sylva = nativeCli();
-const presets = JSON.parse(execFileSync(sylva, ['presets'], { encoding: 'utf8', maxBuffer: 1 << 26 }))
+const presets = JSON.parse(
+  execFileSync(sylva, ['presets'], { encoding: 'utf8', maxBuffer: 1 << 26 }),
+)
   .map((p) => p.name)
   .filter((n) => only.length === 0 || only.includes(n));
 
@@ -32,7 +34,9 @@ console.log('preset              leaves      size MB  errors warnings infos');
 for (const name of presets) {
   for (const leaves of ['instanced', 'baked']) {
     const file = join(dir, `${name}-${leaves}.glb`);
-    execFileSync(sylva, ['generate', '--preset', name, '--leaves', leaves, '--out', file], { stdio: 'ignore' });
+    execFileSync(sylva, ['generate', '--preset', name, '--leaves', leaves, '--out', file], {
+      stdio: 'ignore',
+    });
     const bytes = new Uint8Array(readFileSync(file));
     if (keepAt < 0) rmSync(file);
     const report = await validateBytes(bytes, { maxIssues: 100 });
@@ -44,7 +48,10 @@ for (const name of presets) {
         (numErrors ? '  FAIL' : ''),
     );
     for (const m of report.issues.messages) {
-      if (m.severity <= 1) console.log(`    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message} (${m.pointer ?? ''})`);
+      if (m.severity <= 1)
+        console.log(
+          `    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message} (${m.pointer ?? ''})`,
+        );
     }
   }
 }
@@ -54,7 +61,9 @@ if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 const glue = new URL('../web/src/wasm/sylva_wasm.js', import.meta.url);
 if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
   const wasm = await import(glue);
-  wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+  wasm.initSync({
+    module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+  });
   const tree = wasm.generate('{}');
   if (typeof tree.to_glb !== 'function') {
     console.log('wasm parity: skipped (the wasm build predates to_glb; run scripts/setup.sh)');
@@ -69,11 +78,17 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
       // `to_glb_file` (the bytes read in place from the module's memory) writes the same file.
       if (typeof tree.to_glb_file === 'function') {
         const file = tree.to_glb_file(JSON.stringify({ leaves }));
-        same &&= Buffer.compare(native, Buffer.from(file.memory().buffer, file.ptr(), file.byte_length())) === 0;
+        same &&=
+          Buffer.compare(
+            native,
+            Buffer.from(file.memory().buffer, file.ptr(), file.byte_length()),
+          ) === 0;
         file.free();
       }
       if (!same) failed++;
-      console.log(`wasm parity (default, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`);
+      console.log(
+        `wasm parity (default, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`,
+      );
     }
   }
   tree.free();

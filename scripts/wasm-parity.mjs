@@ -5,7 +5,9 @@ import { readFileSync } from 'node:fs';
 import { nativeCli } from './native-cli.mjs';
 
 const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
-wasm.initSync({ module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)) });
+wasm.initSync({
+  module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+});
 
 const sylva = nativeCli();
 const native = (args) =>
@@ -13,7 +15,11 @@ const native = (args) =>
 
 const cases = [];
 for (const preset of JSON.parse(wasm.presets_json())) {
-  cases.push({ name: `preset ${preset.name}`, values: preset.values, args: ['--preset', preset.name] });
+  cases.push({
+    name: `preset ${preset.name}`,
+    values: preset.values,
+    args: ['--preset', preset.name],
+  });
 }
 for (const seed of [0, 7, 123456, 4294967295]) {
   cases.push({ name: `seed ${seed}`, values: { seed }, args: ['--seed', String(seed)] });

@@ -1,94 +1,77 @@
 /** Issue 4 end to end: the leaf inspector (presets, growth replay, export) and leaves on the tree. */
-import { expect, test, type Page } from "@playwright/test";
-import { readFileSync } from "node:fs";
-import { waitForTree, watchErrors } from "./helpers";
+import { expect, test, type Page } from '@playwright/test';
+import { readFileSync } from 'node:fs';
+import { waitForTree, watchErrors } from './helpers';
 
 /** Opens the app with the leaf inspector showing a drawn leaf. */
 async function openInspector(page: Page): Promise<void> {
-  await page.goto("/");
+  await page.goto('/');
   await waitForTree(page);
-  await page.getByTestId("tab-leaf").click();
-  await expect(page.getByTestId("leaf-svg")).toBeVisible();
-  await expect(page.getByTestId("leaf-counts")).toHaveText(/vein segments/);
+  await page.getByTestId('tab-leaf').click();
+  await expect(page.getByTestId('leaf-svg')).toBeVisible();
+  await expect(page.getByTestId('leaf-counts')).toHaveText(/vein segments/);
 }
 
 /** The drawn SVG's markup and its number of vein segments (`<line>` elements). */
 async function drawn(page: Page): Promise<{ markup: string; lines: number }> {
-  const svg = page.getByTestId("leaf-svg");
+  const svg = page.getByTestId('leaf-svg');
   return svg.evaluate((el) => ({
     markup: el.outerHTML,
-    lines: el.querySelectorAll("line").length,
+    lines: el.querySelectorAll('line').length,
   }));
 }
 
-test("switching the leaf preset changes the SVG", async ({ page }) => {
+test('switching the leaf preset changes the SVG', async ({ page }) => {
   const errors = watchErrors(page);
   await openInspector(page);
   const before = await drawn(page);
   const options = await page
-    .getByTestId("leaf-preset")
-    .locator("option:not([disabled])")
+    .getByTestId('leaf-preset')
+    .locator('option:not([disabled])')
     .evaluateAll((els) => els.map((e) => (e as HTMLOptionElement).value));
   expect(options.length).toBeGreaterThan(1);
-  const preset = options.find((o) => o === "oak") ?? options[0] ?? "";
-  await page.getByTestId("leaf-preset").selectOption(preset);
-  await expect
-    .poll(async () => (await drawn(page)).markup)
-    .not.toBe(before.markup);
+  const preset = options.find((o) => o === 'oak') ?? options[0] ?? '';
+  await page.getByTestId('leaf-preset').selectOption(preset);
+  await expect.poll(async () => (await drawn(page)).markup).not.toBe(before.markup);
   expect(errors).toEqual([]);
 });
 
-test("the step slider changes the number of vein segments drawn", async ({
-  page,
-}) => {
+test('the step slider changes the number of vein segments drawn', async ({ page }) => {
   await openInspector(page);
   const finished = (await drawn(page)).lines;
   expect(finished).toBeGreaterThan(10);
-  const step = page.getByTestId("leaf-step");
-  await step.fill("2");
-  await expect
-    .poll(async () => (await drawn(page)).lines)
-    .toBeLessThan(finished);
+  const step = page.getByTestId('leaf-step');
+  await step.fill('2');
+  await expect.poll(async () => (await drawn(page)).lines).toBeLessThan(finished);
   const early = (await drawn(page)).lines;
-  await step.fill("20");
-  await expect
-    .poll(async () => (await drawn(page)).lines)
-    .toBeGreaterThan(early);
+  await step.fill('20');
+  await expect.poll(async () => (await drawn(page)).lines).toBeGreaterThan(early);
   // Open / Closed switch: closed venation draws loops.
-  await page.getByTestId("leaf-closed").click();
-  await expect(page.getByTestId("leaf-closed")).toHaveAttribute(
-    "aria-pressed",
-    "true",
-  );
+  await page.getByTestId('leaf-closed').click();
+  await expect(page.getByTestId('leaf-closed')).toHaveAttribute('aria-pressed', 'true');
 });
 
-test("Export SVG downloads the drawing", async ({ page }) => {
+test('Export SVG downloads the drawing', async ({ page }) => {
   await openInspector(page);
-  const downloadPromise = page.waitForEvent("download");
-  await page.getByTestId("leaf-export").click();
+  const downloadPromise = page.waitForEvent('download');
+  await page.getByTestId('leaf-export').click();
   const download = await downloadPromise;
-  expect(download.suggestedFilename()).toMatch(
-    /^sylva-leaf-[0-9a-f]{16}\.svg$/,
-  );
+  expect(download.suggestedFilename()).toMatch(/^sylva-leaf-[0-9a-f]{16}\.svg$/);
   const path = await download.path();
-  const text = readFileSync(path, "utf8");
-  expect(text).toContain("<svg");
-  expect(text).toContain("</svg>");
+  const text = readFileSync(path, 'utf8');
+  expect(text).toContain('<svg');
+  expect(text).toContain('</svg>');
 });
 
-test("leaves render on the tree (green pixels on the canvas)", async ({
-  page,
-}) => {
+test('leaves render on the tree (green pixels on the canvas)', async ({ page }) => {
   const greenShare = async (): Promise<number> => {
-    const png = await page.getByTestId("viewer-canvas").screenshot();
+    const png = await page.getByTestId('viewer-canvas').screenshot();
     return page.evaluate(async (base64) => {
       const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
-      const bitmap = await createImageBitmap(
-        new Blob([bytes], { type: "image/png" }),
-      );
+      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
       const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-      const context = canvas.getContext("2d");
-      if (!context) throw new Error("no 2d context");
+      const context = canvas.getContext('2d');
+      if (!context) throw new Error('no 2d context');
       context.drawImage(bitmap, 0, 0);
       const data = context.getImageData(0, 0, bitmap.width, bitmap.height).data;
       let green = 0;
@@ -99,15 +82,15 @@ test("leaves render on the tree (green pixels on the canvas)", async ({
         if (g > r + 12 && g > b + 12) green++;
       }
       return green / (bitmap.width * bitmap.height);
-    }, png.toString("base64"));
+    }, png.toString('base64'));
   };
-  await page.goto("/");
+  await page.goto('/');
   await waitForTree(page);
   await page.waitForTimeout(300);
   const leafy = await greenShare();
-  expect(leafy, "share of green (leaf) pixels").toBeGreaterThan(0.01);
+  expect(leafy, 'share of green (leaf) pixels').toBeGreaterThan(0.01);
   // The same tree without leaves has (almost) no green.
-  await page.goto("/?v=1&leaves=0");
+  await page.goto('/?v=1&leaves=0');
   await waitForTree(page);
   await page.waitForTimeout(300);
   expect(await greenShare()).toBeLessThan(leafy / 4);
