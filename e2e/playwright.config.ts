@@ -1,6 +1,7 @@
 /** Playwright config: Debian's Chromium (software WebGL2 via SwiftShader) against `vite preview` of web/dist. */
 import { defineConfig, devices } from '@playwright/test';
 import { fileURLToPath } from 'node:url';
+import { CHROMIUM_ARGS, chromiumPath } from '../scripts/chromium.mjs';
 
 // SYLVA_E2E_PORT / SYLVA_DIST let several builds be tested side by side (default: web/dist on 4317).
 const PORT = Number(process.env.SYLVA_E2E_PORT ?? 4317);
@@ -33,18 +34,8 @@ export default defineConfig({
         ...devices['Desktop Chrome'],
         viewport: { width: 1280, height: 800 },
         launchOptions: {
-          executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
-          args: [
-            '--no-sandbox',
-            // (no --disable-gpu: with it the compositor is software and reads every WebGL frame
-            // back with a blocking glReadPixels on the main thread, one long task per frame)
-            '--disable-background-networking',
-            '--disable-component-update',
-            '--disable-sync',
-            '--use-gl=angle',
-            '--use-angle=swiftshader',
-            '--enable-unsafe-swiftshader',
-          ],
+          executablePath: chromiumPath(),
+          args: CHROMIUM_ARGS,
         },
       },
     },

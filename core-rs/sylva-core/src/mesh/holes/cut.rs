@@ -225,7 +225,7 @@ pub(super) fn commit(mesh: &mut TreeMesh, r: &Region, cav: &Cavity, tris: &mut V
     }
     // Interior slots the cavity does not need stay unreferenced; park them on the bottom point.
     let bottom = *cav.verts.last().expect("a cavity has a bottom");
-    for &v in r.interior.iter().skip(needed) {
+    for &v in r.interior.get(needed..).unwrap_or_default() {
         set(mesh, v, bottom);
     }
     tris.extend(cav.tris.iter().map(|t| {
