@@ -129,7 +129,8 @@ if (asJson) {
 
 // GLB export (issue 7): the largest preset by vertices, native (`sylva bench --glb`: the first
 // export encodes the PNG textures, later ones reuse them from the cache; the median is over the
-// later ones, each into a fresh buffer, plus the median into one reused buffer) and wasm, in a
+// later ones, each into a fresh buffer, plus the medians into one reused buffer on every thread
+// and on one; wasm has one) and wasm, in a
 // fresh instance of the module so that its first export is a true first (PNG encoding, and the
 // module's memory growing by the file's size): `to_glb_file` (the file written into the
 // module's memory, read through a view: what the export worker does), the same plus a `Blob`
@@ -201,7 +202,8 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
       `\nGLB export, ${glb.preset} (${glb.vertices} vertices, ${(bytes / 1e6).toFixed(1)} MB), median of ${runs} ` +
         `(first export in brackets; budget 100 ms):\n` +
         `  native: ${native.median_ms.toFixed(1)} ms (${native.first_ms.toFixed(1)}) into a fresh buffer, ` +
-        `${native.reused_buffer_median_ms.toFixed(1)} ms into a reused one\n` +
+        `${native.reused_buffer_median_ms.toFixed(1)} ms into a reused one (${native.threads} threads; ` +
+        `${native.reused_buffer_one_thread_median_ms.toFixed(1)} ms on one)\n` +
         `  wasm: ${ms(glb.wasm.to_glb_file)} into the module's memory, ${ms(glb.wasm.to_glb_file_blob)} to a Blob, ` +
         `${ms(glb.wasm.to_glb_copy)} copied out by to_glb`,
     );

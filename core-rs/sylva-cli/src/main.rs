@@ -373,7 +373,7 @@ fn bench(args: &[String]) -> Result<String, String> {
 
 /// Times `runs` GLB exports of `g`: the first (encodes the PNG textures, which later exports
 /// reuse from the cache), the median of the rest (each into a fresh buffer, as `--out` does),
-/// and the median into one reused buffer (`write_into`).
+/// and the medians into one reused buffer (`write_into`) on every thread and on one.
 fn bench_glb(g: &sylva_core::Generated, export: &ExportOptions, runs: usize) -> serde_json::Value {
     let now = std::time::Instant::now;
     let t0 = now();
@@ -388,18 +388,27 @@ fn bench_glb(g: &sylva_core::Generated, export: &ExportOptions, runs: usize) -> 
         times.push(t.elapsed().as_secs_f64() * 1000.0);
         bytes = b.len();
     }
-    // The same exports into one reused buffer: no fresh pages for the kernel to zero.
+    // The same exports into one reused buffer (no fresh pages for the kernel to zero), on
+    // every thread the machine offers, and on one (what wasm has).
     let mut buf = Vec::new();
     sylva_core::export::glb::write_into(g, export, &mut buf);
-    let mut reuse = Vec::with_capacity(runs);
-    for _ in 0..runs {
-        let t = now();
-        sylva_core::export::glb::write_into(g, export, &mut buf);
-        reuse.push(t.elapsed().as_secs_f64() * 1000.0);
-    }
+    let threads = sylva_core::par::threads();
+    let mut reused = |threads: usize| {
+        let mut ms: Vec<f64> = (0..runs)
+            .map(|_| {
+                let t = now();
+                sylva_core::export::glb::write_into_threads(g, export, &mut buf, threads);
+                t.elapsed().as_secs_f64() * 1000.0
+            })
+            .collect();
+        median(&mut ms)
+    };
+    let (reuse, reuse_one) = (reused(threads), reused(1));
     serde_json::json!({
         "median_ms": median(&mut times),
-        "reused_buffer_median_ms": median(&mut reuse),
+        "reused_buffer_median_ms": reuse,
+        "reused_buffer_one_thread_median_ms": reuse_one,
+        "threads": threads,
         "first_ms": first_ms,
         "bytes": bytes,
         "runs": runs,

@@ -30,6 +30,24 @@ fn generate_prints_one_json_object() {
 }
 
 #[test]
+fn bench_glb_reports_the_export_times_and_the_file_size() {
+    // `npm run bench` reads these keys; the size is that of the file `--out` writes.
+    let (code, out, err) = sylva(&["bench", "--preset", "grown_bushy", "--runs", "2", "--json", "--glb"]);
+    assert_eq!(code, 0, "{err}");
+    let glb = &json(&out)["glb"];
+    for key in ["first_ms", "median_ms", "reused_buffer_median_ms", "reused_buffer_one_thread_median_ms"] {
+        assert!(glb[key].as_f64().is_some_and(|ms| ms > 0.0), "{key}: {glb}");
+    }
+    assert!(glb["threads"].as_u64().is_some_and(|t| t >= 1), "{glb}");
+    let path = std::env::temp_dir().join(format!("sylva-bench-{}.glb", std::process::id()));
+    let (code, _, err) = sylva(&["generate", "--preset", "grown_bushy", "--out", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let size = std::fs::metadata(&path).map(|m| m.len()).unwrap_or(0);
+    let _ = std::fs::remove_file(&path);
+    assert_eq!(glb["bytes"].as_u64(), Some(size));
+}
+
+#[test]
 fn invalid_parameters_exit_2_with_the_validation_message() {
     let (code, out, err) = sylva(&["generate", "--set", "l1_length=3"]);
     assert_eq!(code, 2);

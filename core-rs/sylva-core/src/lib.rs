@@ -26,6 +26,7 @@ pub mod leaf;
 pub mod lod;
 pub mod math;
 pub mod mesh;
+pub mod par;
 pub mod param_enum;
 pub mod params;
 pub mod presets;

@@ -251,6 +251,25 @@ fn glb_container_layout_and_counts() {
 }
 
 #[test]
+fn glb_bytes_do_not_depend_on_threads_or_the_reused_buffer() {
+    // The writer splits big views between threads: any number of threads writes the same bytes,
+    // and a reused buffer's old bytes (longer, or full of garbage) never show through, in
+    // padding or anywhere else.
+    for (name, leaves) in [("default", LeafMode::Instanced), ("weeping_willow", LeafMode::Baked)] {
+        let g = preset(name);
+        let opts = ExportOptions { leaves, ..Default::default() };
+        let mut one = Vec::new();
+        export::glb::write_into_threads(&g, &opts, &mut one, 1);
+        assert!(one.len() > 4 << 20, "{name}: big enough to split");
+        for threads in [2, 3, 8] {
+            let mut garbage = vec![0xab; one.len() + 1000];
+            export::glb::write_into_threads(&g, &opts, &mut garbage, threads);
+            assert!(garbage == one, "{name}, {threads} threads");
+        }
+    }
+}
+
+#[test]
 fn glb_leaf_modes_and_options() {
     let g = preset("grown_bushy");
     // Small tree: u16 indices.

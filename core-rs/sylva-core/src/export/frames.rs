@@ -6,6 +6,7 @@
 use super::quant::{self, LANES};
 use crate::mesh::TreeMesh;
 use glam::Vec3;
+use std::ops::Range;
 
 /// Per-vertex tangents, 4 floats each (glTF `TANGENT`): `xyz` = the unit direction of
 /// increasing `u` in the surface, `w` = ±1 such that `cross(normal, xyz) · w` points along
@@ -29,7 +30,7 @@ pub fn tangents(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32]
     out
 }
 
-/// The tangents the GLB writer gives a mesh's vertices ([`frames_snorm8_append`]), 4 floats
+/// The tangents the GLB writer gives a mesh's vertices ([`frames_snorm8_write`]), 4 floats
 /// each as in [`tangents`]. A vertex on one of the mesh's tube rings ([`TreeMesh::rings`])
 /// takes the direction of increasing `u` from its ring: the difference of its two neighbours
 /// around the ring (across the seam for the first vertex and its twin, which get the same
@@ -40,7 +41,7 @@ pub fn tangents(positions: &[f32], normals: &[f32], uvs: &[f32], indices: &[u32]
 /// ([`tangents`]) from the triangles that touch such vertices.
 pub fn mesh_tangents(mesh: &TreeMesh) -> Vec<f32> {
     let mut out = Vec::with_capacity(4 * mesh.vertex_count());
-    frame_blocks(mesh, |f, k| {
+    frame_blocks(mesh, 0..mesh.vertex_count(), |f, k| {
         for i in 0..k {
             out.extend_from_slice(&[f.t[0][i], f.t[1][i], f.t[2][i], f.w[i]]);
         }
@@ -48,46 +49,53 @@ pub fn mesh_tangents(mesh: &TreeMesh) -> Vec<f32> {
     out
 }
 
-/// Unit normals (3 floats each) appended to `out` as glTF normalised `i8`, 4 bytes per vertex
-/// (`xyz`, one byte of padding), each unit within the glTF validator's tolerance (see [`super::glb`]).
-pub fn normals_snorm8_append(normals: &[f32], out: &mut Vec<u8>) {
-    let mut block = [0u8; 4 * LANES];
-    for c in normals.chunks(3 * LANES) {
-        for (d, v) in block.chunks_exact_mut(4).zip(c.chunks_exact(3)) {
-            d.copy_from_slice(&quant::snorm8_unit_word([v[0], v[1], v[2]]).to_le_bytes());
-        }
-        out.extend_from_slice(&block[..c.len() / 3 * 4]);
+/// Unit normals (3 floats each) as glTF normalised `i8` into `out`, 4 bytes per vertex (`xyz`,
+/// one byte of padding), each unit within the glTF validator's tolerance (see [`super::glb`]).
+pub fn normals_snorm8_write(normals: &[f32], out: &mut [u8]) {
+    for (d, v) in out.chunks_exact_mut(4).zip(normals.chunks_exact(3)) {
+        d.copy_from_slice(&quant::snorm8_unit_word([v[0], v[1], v[2]]).to_le_bytes());
     }
 }
 
-/// A mesh's normals and its tangents ([`mesh_tangents`]) appended to `out` as glTF normalised
-/// `i8`, 8 bytes per vertex: the normal (`xyz`, one byte of padding), then the tangent (`xyz`,
-/// `w` = ±127); each vector unit within the glTF validator's tolerance (see [`super::glb`]). One pass
-/// over the vertices in order, a block of [`LANES`] at a time ([`quant::snorm8_unit_words`]);
-/// in wasm without SIMD, where the blocks only add loads and stores, one vertex at a time
-/// ([`frames_snorm8_scalar`], the same arithmetic and bytes).
-pub fn frames_snorm8_append(mesh: &TreeMesh, out: &mut Vec<u8>) {
+/// The normals and tangents ([`mesh_tangents`]) of a mesh's vertices `vertices` as glTF
+/// normalised `i8` into `out` (8 bytes per vertex of the range): the normal (`xyz`, one byte of
+/// padding), then the tangent (`xyz`, `w` = ±127); each vector unit within the glTF
+/// validator's tolerance (see [`super::glb`]). Any split of the vertices into ranges writes the
+/// same bytes (the GLB writer splits them between threads). One pass over the vertices in
+/// order, a block of [`LANES`] at a time ([`quant::snorm8_unit_words`]); in wasm without SIMD,
+/// where the blocks only add loads and stores, one vertex at a time ([`frames_snorm8_scalar`],
+/// the same arithmetic and bytes).
+pub fn frames_snorm8_write(mesh: &TreeMesh, vertices: Range<usize>, out: &mut [u8]) {
     if cfg!(all(target_arch = "wasm32", not(target_feature = "simd128"))) {
-        return frames_snorm8_scalar(mesh, out);
+        return frames_snorm8_scalar(mesh, vertices, out);
     }
     let mut normals = [0u32; LANES];
     let mut tangents = [0u32; LANES];
-    let mut block = [0u64; LANES];
-    frame_blocks(mesh, |f, k| {
+    let mut blocks = out.chunks_mut(8 * LANES);
+    frame_blocks(mesh, vertices, |f, _| {
         quant::snorm8_unit_words(&f.n, &mut normals);
         quant::snorm8_unit_words(&f.t, &mut tangents);
-        for i in 0..LANES {
-            let w: u32 = if f.w[i] < 0.0 { 0x81 } else { 0x7f };
-            block[i] = (u64::from(normals[i]) | u64::from(tangents[i] | w << 24) << 32).to_le();
+        let Some(block) = blocks.next() else { return };
+        for (i, d) in block.chunks_exact_mut(8).enumerate() {
+            d.copy_from_slice(&frame_bytes(normals[i], tangents[i], f.w[i]));
         }
-        out.extend_from_slice(&bytemuck::cast_slice(&block)[..8 * k]);
     });
 }
 
-/// What both frame writers read: the vertex count, positions and normals, the mesh's rings (none
-/// if they do not describe these vertices) and Lengyel's sums for the vertices on no ring.
+/// A normal and a tangent word ([`quant::snorm8_unit_word`]) and the handedness as the 8 bytes
+/// of a vertex in [`frames_snorm8_write`].
+#[inline(always)]
+fn frame_bytes(normal: u32, tangent: u32, w: f32) -> [u8; 8] {
+    let w: u32 = if w < 0.0 { 0x81 } else { 0x7f };
+    (u64::from(normal) | u64::from(tangent | w << 24) << 32).to_le_bytes()
+}
+
+/// What both frame writers read for a range of vertices: the vertex count, positions and
+/// normals, the mesh's rings (none if they do not describe these vertices) from the first one
+/// reaching into the range, and Lengyel's sums for the range's vertices on no ring.
 struct FrameInputs<'a> {
     n: usize,
+    range: Range<usize>,
     pos: &'a [[f32; 3]],
     nrm: &'a [[f32; 3]],
     rings: &'a [[u32; 2]],
@@ -95,31 +103,32 @@ struct FrameInputs<'a> {
 }
 
 impl<'a> FrameInputs<'a> {
-    fn of(mesh: &'a TreeMesh) -> Self {
+    fn of(mesh: &'a TreeMesh, vertices: Range<usize>) -> Self {
         let n = mesh.vertex_count().min(mesh.normals.len() / 3);
+        let range = vertices.start.min(n)..vertices.end.min(n);
         let rings = if rings_valid(&mesh.rings, n) { &mesh.rings[..] } else { &[] };
+        let rings = &rings[rings.partition_point(|r| (r[0] + r[1]) as usize <= range.start)..];
         FrameInputs {
             n,
             pos: bytemuck::cast_slice(&mesh.positions[..3 * n]),
             nrm: bytemuck::cast_slice(&mesh.normals[..3 * n]),
             rings,
-            others: other_sums(mesh, n, rings),
+            others: other_sums(mesh, n, rings, range.clone()),
+            range,
         }
     }
 }
 
-/// [`frames_snorm8_append`] one vertex at a time: each tangent direction (ring neighbours'
+/// [`frames_snorm8_write`] one vertex at a time: each tangent direction (ring neighbours'
 /// difference, or Lengyel's sums) through [`tangent_of`] and [`frame_word`], the arithmetic of
 /// [`FrameBlock::finish`] and [`quant::snorm8_unit_words`] lane by lane.
-fn frames_snorm8_scalar(mesh: &TreeMesh, out: &mut Vec<u8>) {
-    let FrameInputs { n, pos, nrm, rings, others } = FrameInputs::of(mesh);
+fn frames_snorm8_scalar(mesh: &TreeMesh, vertices: Range<usize>, out: &mut [u8]) {
+    let FrameInputs { n, range, pos, nrm, rings, others } = FrameInputs::of(mesh, vertices);
     let mut sums = others.iter();
-    let mut block = [0u64; LANES];
-    let mut k = 0;
     // The next ring not yet passed (`n..n` after the last).
     let mut ring = rings.iter().map(|r| r[0] as usize..(r[0] + r[1]) as usize);
     let mut r = ring.next().unwrap_or(n..n);
-    for (v, nn) in nrm.iter().enumerate() {
+    for ((v, nn), d) in range.clone().zip(&nrm[range]).zip(out.chunks_exact_mut(8)) {
         if v == r.end {
             r = ring.next().unwrap_or(n..n);
         }
@@ -133,14 +142,8 @@ fn frames_snorm8_scalar(mesh: &TreeMesh, out: &mut Vec<u8>) {
             [b[0] - a[0], b[1] - a[1], b[2] - a[2], 1.0]
         };
         let (u, w) = tangent_of(o, nn);
-        block[k] = frame_word(*nn, u.to_array(), w).to_le();
-        k += 1;
-        if k == LANES {
-            out.extend_from_slice(bytemuck::cast_slice(&block));
-            k = 0;
-        }
+        d.copy_from_slice(&frame_word(*nn, u.to_array(), w));
     }
-    out.extend_from_slice(&bytemuck::cast_slice(&block)[..8 * k]);
 }
 
 /// The frames of [`LANES`] consecutive vertices, one array per component (so the loops over
@@ -180,20 +183,20 @@ impl FrameBlock {
     }
 }
 
-/// Calls `emit(block, k)` for the vertices of `mesh` in order, [`LANES`] at a time (`k` of them
-/// in the block, fewer in the last), with the normals and the tangents of [`mesh_tangents`]: the
+/// Calls `emit(block, k)` for the vertices `vertices` of `mesh` in order, [`LANES`] at a time
+/// (`k` of them in the block, fewer in the last), with the normals and the tangents of [`mesh_tangents`]: the
 /// ring vertices' from their ring neighbours, the others' from Lengyel's sums over the
 /// triangles touching them ([`other_sums`]).
 #[inline(always)]
-fn frame_blocks(mesh: &TreeMesh, mut emit: impl FnMut(&FrameBlock, usize)) {
-    let FrameInputs { n, pos, nrm, rings, others } = FrameInputs::of(mesh);
+fn frame_blocks(mesh: &TreeMesh, vertices: Range<usize>, mut emit: impl FnMut(&FrameBlock, usize)) {
+    let FrameInputs { n, range, pos, nrm, rings, others } = FrameInputs::of(mesh, vertices);
     let mut sums = others.iter();
     let mut f = FrameBlock { n: [[0.0; LANES]; 3], t: [[0.0; LANES]; 3], w: [1.0; LANES] };
     // The next ring not yet passed (`n..n` after the last).
     let mut ring = rings.iter().map(|r| r[0] as usize..(r[0] + r[1]) as usize);
     let mut r = ring.next().unwrap_or(n..n);
-    for first in (0..n).step_by(LANES) {
-        let end = first + LANES.min(n - first);
+    for first in range.clone().step_by(LANES) {
+        let end = first + LANES.min(range.end - first);
         for (i, nn) in nrm[first..end].iter().enumerate() {
             (f.n[0][i], f.n[1][i], f.n[2][i]) = (nn[0], nn[1], nn[2]);
         }
@@ -250,35 +253,30 @@ fn rings_valid(rings: &[[u32; 2]], n: usize) -> bool {
     }) && end <= n as u64
 }
 
-/// Lengyel's sums ([`tangent_sums`]) of the vertices of `mesh` (the first `n`) that lie on none
-/// of `rings` (valid, see [`rings_valid`]), in vertex order: one pass over the triangles, each
-/// tested against a bit set of those vertices, adding only to them (a vertex's slot is its rank
-/// in the bit set: the count before its byte, plus the bits below it in its byte).
-fn other_sums(mesh: &TreeMesh, n: usize, rings: &[[u32; 2]]) -> Vec<[f32; 4]> {
-    let on_rings: usize = rings.iter().map(|r| r[1] as usize).sum();
-    let mut acc = vec![[0.0f32; 4]; n - on_rings];
-    if rings.is_empty() {
-        tangent_sums(&mesh.positions, &mesh.uvs, &mesh.indices, &mut acc);
-        return acc;
+/// Lengyel's sums ([`tangent_sums`]) of the vertices `range` of `mesh` (of its first `n`) that
+/// lie on none of `rings` (valid, see [`rings_valid`]; those before the range may be left out),
+/// in vertex order: one pass over all the triangles, each tested against a bit set of those
+/// vertices, adding only to them (a vertex's slot is its rank in the bit set: the count before
+/// its byte, plus the bits below it in its byte). A vertex's sum does not depend on the range:
+/// its triangles add to it in the same order.
+fn other_sums(mesh: &TreeMesh, n: usize, rings: &[[u32; 2]], range: Range<usize>) -> Vec<[f32; 4]> {
+    let (lo, len) = (range.start, range.len());
+    // Bit i: vertex lo + i is on no ring (bits past len are never read).
+    let mut bits = vec![0xffu8; len.div_ceil(8)];
+    let mut on_rings = 0;
+    for r in rings {
+        let (a, b) = ((r[0] as usize).max(lo), ((r[0] + r[1]) as usize).min(range.end));
+        if a >= range.end {
+            break;
+        }
+        if a < b {
+            clear_bits(&mut bits, a - lo, b - lo);
+            on_rings += b - a;
+        }
     }
+    let mut acc = vec![[0.0f32; 4]; len - on_rings];
     if acc.is_empty() {
         return acc;
-    }
-    // Bit v: vertex v is on no ring (bits past n stay set: no index reaches them).
-    let mut bits = vec![0xffu8; n.div_ceil(8) + 1];
-    for r in rings {
-        let (lo, hi) = (r[0] as usize, (r[0] + r[1]) as usize);
-        let (a, b) = (lo.div_ceil(8), hi / 8);
-        if a < b {
-            bits[a..b].fill(0);
-            for v in (lo..a * 8).chain(b * 8..hi) {
-                bits[v >> 3] &= !(1 << (v & 7));
-            }
-        } else {
-            for v in lo..hi {
-                bits[v >> 3] &= !(1 << (v & 7));
-            }
-        }
     }
     let mut rank = Vec::with_capacity(bits.len());
     let mut before = 0u32;
@@ -288,7 +286,14 @@ fn other_sums(mesh: &TreeMesh, n: usize, rings: &[[u32; 2]]) -> Vec<[f32; 4]> {
     }
     let pos: &[[f32; 3]] = bytemuck::cast_slice(&mesh.positions[..3 * n]);
     let uv: &[[f32; 2]] = bytemuck::cast_slice(&mesh.uvs[..2 * n]);
-    let other = |v: usize| bits[v >> 3] >> (v & 7) & 1;
+    let other = |v: usize| {
+        let i = v.wrapping_sub(lo);
+        if i < len {
+            bits[i >> 3] >> (i & 7) & 1
+        } else {
+            0
+        }
+    };
     for tri in mesh.indices.chunks_exact(3) {
         let (a, b, c) = (tri[0] as usize, tri[1] as usize, tri[2] as usize);
         if other(a) | other(b) | other(c) == 0 {
@@ -297,8 +302,9 @@ fn other_sums(mesh: &TreeMesh, n: usize, rings: &[[u32; 2]]) -> Vec<[f32; 4]> {
         let Some(d) = lengyel(pos, uv, a, b, c) else { continue };
         for v in [a, b, c] {
             if other(v) != 0 {
-                let below = bits[v >> 3] & ((1u8 << (v & 7)) - 1);
-                let slot = &mut acc[(rank[v >> 3] + below.count_ones()) as usize];
+                let i = v - lo;
+                let below = bits[i >> 3] & ((1u8 << (i & 7)) - 1);
+                let slot = &mut acc[(rank[i >> 3] + below.count_ones()) as usize];
                 *slot = [slot[0] + d[0], slot[1] + d[1], slot[2] + d[2], slot[3] + d[3]];
             }
         }
@@ -306,23 +312,33 @@ fn other_sums(mesh: &TreeMesh, n: usize, rings: &[[u32; 2]]) -> Vec<[f32; 4]> {
     acc
 }
 
-/// A vertex's normal and tangent (unit vectors, `w` = ±1) as the 8 little-endian bytes of
-/// [`frames_snorm8_append`].
-#[inline(always)]
-fn frame_word(n: [f32; 3], t: [f32; 3], w: f32) -> u64 {
-    let w: u32 = if w < 0.0 { 0x81 } else { 0x7f };
-    u64::from(quant::snorm8_unit_word(n)) | u64::from(quant::snorm8_unit_word(t) | w << 24) << 32
+/// Clears bits `lo..hi` of a bit set (bit `i` is bit `i % 8` of byte `i / 8`).
+fn clear_bits(bits: &mut [u8], lo: usize, hi: usize) {
+    let (a, b) = (lo.div_ceil(8), hi / 8);
+    if a < b {
+        bits[a..b].fill(0);
+        for v in (lo..a * 8).chain(b * 8..hi) {
+            bits[v >> 3] &= !(1 << (v & 7));
+        }
+    } else {
+        for v in lo..hi {
+            bits[v >> 3] &= !(1 << (v & 7));
+        }
+    }
 }
 
-/// Normals (3 floats each) and given tangents (4 floats each, `w` = ±1) appended to `out` as
-/// [`frames_snorm8_append`] writes them.
-pub fn frames_of_snorm8_append(normals: &[f32], tangents: &[f32], out: &mut Vec<u8>) {
-    let mut block = [0u8; 8 * LANES];
-    for (c, t) in normals.chunks(3 * LANES).zip(tangents.chunks(4 * LANES)) {
-        for ((d, n), t) in block.chunks_exact_mut(8).zip(c.chunks_exact(3)).zip(t.chunks_exact(4)) {
-            d.copy_from_slice(&frame_word([n[0], n[1], n[2]], [t[0], t[1], t[2]], t[3]).to_le_bytes());
-        }
-        out.extend_from_slice(&block[..c.len() / 3 * 8]);
+/// A vertex's normal and tangent (unit vectors, `w` = ±1) as the 8 bytes of
+/// [`frames_snorm8_write`].
+#[inline(always)]
+fn frame_word(n: [f32; 3], t: [f32; 3], w: f32) -> [u8; 8] {
+    frame_bytes(quant::snorm8_unit_word(n), quant::snorm8_unit_word(t), w)
+}
+
+/// Normals (3 floats each) and given tangents (4 floats each, `w` = ±1) into `out` as
+/// [`frames_snorm8_write`] writes them.
+pub fn frames_of_snorm8_write(normals: &[f32], tangents: &[f32], out: &mut [u8]) {
+    for ((d, n), t) in out.chunks_exact_mut(8).zip(normals.chunks_exact(3)).zip(tangents.chunks_exact(4)) {
+        d.copy_from_slice(&frame_word([n[0], n[1], n[2]], [t[0], t[1], t[2]], t[3]));
     }
 }
 
@@ -402,25 +418,31 @@ mod tests {
     }
 
     #[test]
-    fn frames_one_vertex_at_a_time_are_the_blocks_bytes() {
-        // The scalar path (wasm without SIMD) and the block path write the same bytes.
+    fn frames_are_the_same_bytes_one_vertex_at_a_time_and_in_any_split() {
+        // The scalar path (wasm without SIMD) and the block path write the same bytes, and so
+        // does every split of the vertices into ranges (the GLB writer's threads): ranges that
+        // start inside a ring, inside a block and among the vertices on no ring.
         for name in ["default", "weeping_willow"] {
             let g = crate::generate(&crate::presets::find(name).unwrap().params().unwrap()).unwrap();
-            let (mut a, mut b) = (Vec::new(), Vec::new());
-            frames_snorm8_scalar(&g.mesh, &mut a);
-            let (mut normals, mut tangents) = ([0u32; LANES], [0u32; LANES]);
-            frame_blocks(&g.mesh, |f, k| {
-                quant::snorm8_unit_words(&f.n, &mut normals);
-                quant::snorm8_unit_words(&f.t, &mut tangents);
-                for i in 0..k {
-                    let w: u32 = if f.w[i] < 0.0 { 0x81 } else { 0x7f };
-                    b.extend_from_slice(
-                        &(u64::from(normals[i]) | u64::from(tangents[i] | w << 24) << 32).to_le_bytes(),
-                    );
-                }
-            });
-            assert_eq!(a.len(), 8 * g.mesh.vertex_count());
-            assert!(a == b, "{name}");
+            let n = g.mesh.vertex_count();
+            let mut scalar = vec![0u8; 8 * n];
+            frames_snorm8_scalar(&g.mesh, 0..n, &mut scalar);
+            let mut whole = vec![0u8; 8 * n];
+            frames_snorm8_write(&g.mesh, 0..n, &mut whole);
+            assert!(scalar == whole, "{name}: scalar");
+            let off_ring =
+                (0..n).find(|&v| !g.mesh.rings.iter().any(|r| (r[0] as usize..(r[0] + r[1]) as usize).contains(&v)));
+            let cuts = [0, 1, 37, n / 3, off_ring.map_or(n / 2, |v| v + 1), n / 2 + 5, n - 3, n];
+            let mut cuts = cuts.to_vec();
+            cuts.sort_unstable();
+            let mut split = vec![0u8; 8 * n];
+            let mut split_scalar = vec![0u8; 8 * n];
+            for w in cuts.windows(2) {
+                frames_snorm8_write(&g.mesh, w[0]..w[1], &mut split[8 * w[0]..8 * w[1]]);
+                frames_snorm8_scalar(&g.mesh, w[0]..w[1], &mut split_scalar[8 * w[0]..8 * w[1]]);
+            }
+            assert!(split == whole, "{name}: split");
+            assert!(split_scalar == whole, "{name}: split, scalar");
         }
     }
 }

@@ -27,7 +27,7 @@ pub mod obj;
 pub mod png;
 mod quant;
 
-pub use frames::{frames_of_snorm8_append, frames_snorm8_append, mesh_tangents, normals_snorm8_append, tangents};
+pub use frames::{frames_of_snorm8_write, frames_snorm8_write, mesh_tangents, normals_snorm8_write, tangents};
 use quant::LANES;
 
 use crate::error::SylvaError;

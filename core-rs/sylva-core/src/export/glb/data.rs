@@ -1,10 +1,12 @@
-//! The arrays of the GLB's BIN chunk ([`Data`]) and how each is written: one pass per view,
-//! appended to the output as little-endian bytes (float and index arrays as one `memcpy`, the
-//! rest through a small stack block), and the wind attributes' `u16` encoding ([`WindCodec`]).
+//! The arrays of the GLB's BIN chunk ([`Data`]) and how each is written: as little-endian bytes
+//! into its place in the output, any range of its items on its own (so threads can share a
+//! view; float and index arrays as one `memcpy`), and the wind attributes' `u16` encoding
+//! ([`WindCodec`]).
 
 use crate::export::quant::{Unorm16, LANES};
 use crate::mesh::{Bounds, TreeMesh, WIND_STRIDE};
 use serde_json::{json, Value};
+use std::ops::Range;
 
 /// A borrowed array for the BIN chunk.
 #[derive(Clone, Copy)]
@@ -15,11 +17,11 @@ pub(super) enum Data<'a> {
     U16(&'a [u32]),
     Bytes(&'a [u8]),
     /// Unit vectors (3 floats each) as normalised `i8` `VEC3` padded to 4 bytes
-    /// ([`crate::export::normals_snorm8_append`]).
+    /// ([`crate::export::normals_snorm8_write`]).
     Snorm3(&'a [f32]),
     /// Normals and tangents of a mesh interleaved, 8 bytes per vertex: the normal as in
     /// [`Data::Snorm3`], then the tangent (computed into the output,
-    /// [`crate::export::frames_snorm8_append`]) as a normalised `i8` `VEC4`.
+    /// [`crate::export::frames_snorm8_write`]) as a normalised `i8` `VEC4`.
     Frames(&'a TreeMesh),
     /// [`Data::Frames`] from given normals (3 floats each) and tangents (4 floats, `w` = ±1).
     FramesOf(&'a [f32], &'a [f32]),
@@ -40,35 +42,22 @@ pub(super) enum Part {
     Scale,
 }
 
-/// Bytes of the stack block the writers fill before appending it to the output.
-const BLOCK: usize = 4096;
-
-/// Appends `f(item)`, `W` bytes per item of `E` values of `src`, to `out` through a stack block:
-/// `out` only ever grows by copies of written bytes (no zero fill, one pass over the data).
+/// Writes `f(item)`, `W` bytes per item of `E` values of `src`, into `out`.
 #[inline(always)]
-fn emit<T: Copy, const E: usize, const W: usize>(out: &mut Vec<u8>, src: &[T], f: impl Fn(&[T; E]) -> [u8; W]) {
-    let per = BLOCK / W;
-    let mut block = [0u8; BLOCK];
-    for c in src.chunks(per * E) {
-        let k = c.len() / E;
-        for (d, x) in block[..k * W].chunks_exact_mut(W).zip(c.chunks_exact(E)) {
-            let x: &[T; E] = x.try_into().expect("E values");
-            d.copy_from_slice(&f(x));
-        }
-        out.extend_from_slice(&block[..k * W]);
+fn fill<T: Copy, const E: usize, const W: usize>(out: &mut [u8], src: &[T], f: impl Fn(&[T; E]) -> [u8; W]) {
+    for (d, x) in out.chunks_exact_mut(W).zip(src.chunks_exact(E)) {
+        d.copy_from_slice(&f(x.try_into().expect("E values")));
     }
 }
 
-/// Appends 4-byte words as little-endian bytes: one `memcpy` (a `memory.copy` in wasm) of the
+/// Writes 4-byte words as little-endian bytes: one `memcpy` (a `memory.copy` in wasm) of the
 /// array's bytes on little-endian targets, a loop over the values elsewhere.
 #[inline(always)]
-fn copy_words<T: bytemuck::Pod>(out: &mut Vec<u8>, src: &[T], le: impl Fn(T) -> [u8; 4]) {
+fn copy_words<T: bytemuck::Pod>(out: &mut [u8], src: &[T], le: impl Fn(T) -> [u8; 4]) {
     if cfg!(target_endian = "little") {
-        out.extend_from_slice(bytemuck::cast_slice(src));
+        out.copy_from_slice(bytemuck::cast_slice(src));
     } else {
-        for x in src {
-            out.extend_from_slice(&le(*x));
-        }
+        fill::<_, 1, 4>(out, src, |x| le(x[0]));
     }
 }
 
@@ -89,11 +78,11 @@ fn le<const N: usize, const B: usize>(v: [f32; N]) -> [u8; B] {
 pub(super) struct WindCodec(pub [Unorm16; WIND_STRIDE]);
 
 impl WindCodec {
-    /// The codec of `wind` (8 floats per vertex): one pass for the ranges. Every value lies in
-    /// its component's range, so the encoding never clamps: the fixed ranges are used only when
-    /// the data fits them (they always do for the generator's meshes), else the data's range.
-    pub(super) fn of(wind: &[f32]) -> WindCodec {
-        let (lo, hi) = crate::export::ranges::<WIND_STRIDE>(wind);
+    /// The codec of wind data (8 floats per vertex) whose components span `lo..=hi`
+    /// ([`crate::export::ranges`]). Every value lies in its component's range, so the encoding
+    /// never clamps: the fixed ranges are used only when the data fits them (they always do for
+    /// the generator's meshes), else the data's range.
+    pub(super) fn over(lo: [f32; WIND_STRIDE], hi: [f32; WIND_STRIDE]) -> WindCodec {
         let fixed = |k: usize, max: f32| {
             if lo[k] >= 0.0 && hi[k] <= max {
                 Unorm16 { offset: 0.0, scale: max }
@@ -116,68 +105,96 @@ impl WindCodec {
 }
 
 impl Data<'_> {
-    pub(super) fn byte_len(&self) -> usize {
+    /// How many items the data has: the unit a split between threads keeps whole (a value of
+    /// the plain arrays, a vertex, a matrix).
+    pub(super) fn items(&self) -> usize {
         match self {
-            Data::F32(s) => s.len() * 4,
-            Data::U32(s) => s.len() * 4,
-            Data::U16(s) => s.len() * 2,
+            Data::F32(s) => s.len(),
+            Data::U32(s) | Data::U16(s) => s.len(),
             Data::Bytes(s) => s.len(),
-            Data::Snorm3(s) => s.len() / 3 * 4,
-            Data::Frames(m) => m.vertex_count() * 8,
-            Data::FramesOf(n, _) => n.len() / 3 * 8,
-            Data::BarkExtras(m, colors, wind) => {
-                m.vertex_count() * (if colors.is_some() { 4 } else { 0 } + if wind.is_some() { 16 } else { 0 })
-            }
-            Data::Trs(m, part) => m.len() / 16 * if *part == Part::Rotation { 16 } else { 12 },
+            Data::Snorm3(s) | Data::FramesOf(s, _) => s.len() / 3,
+            Data::Frames(m) | Data::BarkExtras(m, ..) => m.vertex_count(),
+            Data::Trs(m, _) => m.len() / 16,
         }
     }
 
-    /// Appends the little-endian bytes to `out`.
-    pub(super) fn append(&self, out: &mut Vec<u8>) {
+    /// Bytes per item of each of the data's planes: the arrays it writes one after the other,
+    /// each `items × width` bytes (only [`Data::BarkExtras`] has a second).
+    pub(super) fn widths(&self) -> [usize; 2] {
+        match self {
+            Data::F32(_) | Data::U32(_) | Data::Snorm3(_) => [4, 0],
+            Data::U16(_) => [2, 0],
+            Data::Bytes(_) => [1, 0],
+            Data::Frames(_) | Data::FramesOf(..) => [8, 0],
+            Data::BarkExtras(_, colors, wind) => {
+                [if colors.is_some() { 4 } else { 0 }, if wind.is_some() { 16 } else { 0 }]
+            }
+            Data::Trs(_, part) => [if *part == Part::Rotation { 16 } else { 12 }, 0],
+        }
+    }
+
+    pub(super) fn byte_len(&self) -> usize {
+        let [a, b] = self.widths();
+        self.items() * (a + b)
+    }
+
+    /// Writes the little-endian bytes of items `items` into `out`, one slice per plane
+    /// ([`Data::widths`]: `items.len() × width` bytes each). Any split of the items into
+    /// ranges writes the same bytes.
+    pub(super) fn write(&self, items: Range<usize>, out: [&mut [u8]; 2]) {
+        let [out, second] = out;
+        let r = items.clone();
         match *self {
-            Data::F32(s) => copy_words(out, s, f32::to_le_bytes),
-            Data::U32(s) => copy_words(out, s, u32::to_le_bytes),
-            Data::U16(s) => emit::<_, 1, 2>(out, s, |v| (v[0] as u16).to_le_bytes()),
-            Data::Bytes(s) => out.extend_from_slice(s),
-            Data::Snorm3(s) => crate::export::normals_snorm8_append(s, out),
-            Data::Frames(m) => crate::export::frames_snorm8_append(m, out),
-            Data::FramesOf(n, t) => crate::export::frames_of_snorm8_append(n, t, out),
-            Data::BarkExtras(m, colors, wind) => bark_extras_append(m, colors, wind, out),
-            Data::Trs(m, Part::Translation) => emit::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
-            Data::Trs(m, Part::Rotation) => emit::<_, 16, 16>(out, m, |m| le(crate::export::decompose_rotation(m))),
-            Data::Trs(m, Part::Scale) => emit::<_, 16, 12>(out, m, |m| le(crate::export::decompose_scale(m))),
+            Data::F32(s) => copy_words(out, &s[r], f32::to_le_bytes),
+            Data::U32(s) => copy_words(out, &s[r], u32::to_le_bytes),
+            Data::U16(s) => fill::<_, 1, 2>(out, &s[r], |v| (v[0] as u16).to_le_bytes()),
+            Data::Bytes(s) => out.copy_from_slice(&s[r]),
+            Data::Snorm3(s) => crate::export::normals_snorm8_write(&s[3 * r.start..3 * r.end], out),
+            Data::Frames(m) => crate::export::frames_snorm8_write(m, r, out),
+            Data::FramesOf(n, t) => {
+                crate::export::frames_of_snorm8_write(&n[3 * r.start..3 * r.end], &t[4 * r.start..4 * r.end], out)
+            }
+            Data::BarkExtras(m, colors, wind) => bark_extras_write(m, colors, wind, r, out, second),
+            Data::Trs(m, part) => {
+                let m = &m[16 * r.start..16 * r.end];
+                match part {
+                    Part::Translation => fill::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
+                    Part::Rotation => fill::<_, 16, 16>(out, m, |m| le(crate::export::decompose_rotation(m))),
+                    Part::Scale => fill::<_, 16, 12>(out, m, |m| le(crate::export::decompose_scale(m))),
+                }
+            }
         }
     }
 }
 
-/// [`Data::BarkExtras`]: the colours are written into their (zeroed) view block by block while
-/// the wind records of the same block are appended after it, so the wind array is read once.
-fn bark_extras_append(m: &TreeMesh, colors: Option<Bounds>, wind: Option<WindCodec>, out: &mut Vec<u8>) {
+/// [`Data::BarkExtras`] of vertices `vertices`: the colours into `colors_out` and the wind
+/// records into `wind_out`, block by block, so the wind array (which the colours read too) is
+/// read once.
+fn bark_extras_write(
+    m: &TreeMesh,
+    colors: Option<Bounds>,
+    wind: Option<WindCodec>,
+    vertices: Range<usize>,
+    colors_out: &mut [u8],
+    wind_out: &mut [u8],
+) {
     let n = m.vertex_count();
     let tint = colors.map(|b| crate::export::BarkTint::new(m, &b));
-    let at = out.len();
-    if tint.is_some() {
-        out.resize(at + 4 * n, 0);
-    }
     let w = if m.wind.len() == n * WIND_STRIDE { &m.wind[..] } else { &[][..] };
     let codec = wind.map(|c| (c.0.map(|e| e.offset), c.0.map(|e| e.factor())));
-    let mut block = [0u8; 16 * LANES];
-    let mut base = 0;
-    while base < n {
-        let k = LANES.min(n - base);
+    for base in vertices.clone().step_by(LANES) {
+        let (k, i) = (LANES.min(vertices.end - base), base - vertices.start);
         if let Some(t) = &tint {
-            t.write(m, base, &mut out[at + 4 * base..at + 4 * (base + k)]);
+            t.write(m, base, &mut colors_out[4 * i..4 * (i + k)]);
         }
         if let Some((offset, factor)) = &codec {
             let rec = w[WIND_STRIDE * base..WIND_STRIDE * (base + k)].chunks_exact(WIND_STRIDE);
-            for (d, r) in block.chunks_exact_mut(16).zip(rec) {
+            for (d, r) in wind_out[16 * i..16 * (i + k)].chunks_exact_mut(16).zip(rec) {
                 for c in 0..WIND_STRIDE {
                     d[2 * c..2 * c + 2].copy_from_slice(&Unorm16::encode(offset[c], factor[c], r[c]).to_le_bytes());
                 }
             }
-            out.extend_from_slice(&block[..16 * k]);
         }
-        base += k;
     }
 }
 

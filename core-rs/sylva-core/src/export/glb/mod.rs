@@ -10,7 +10,7 @@
 //!
 //! **Scene**: node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
 //!
-//! * **Bark** mesh: one primitive per material group of [`TreeMesh`](crate::mesh::TreeMesh), sharing the attributes
+//! * **Bark** mesh: one primitive per material group of [`TreeMesh`], sharing the attributes
 //!   `POSITION` (float, with min/max), `NORMAL`, `TEXCOORD_0` (float: bark UVs run past 1),
 //!   `TANGENT` (with normal maps, unless [`ExportOptions::tangents`] is off), `COLOR_0` (RGBA8
 //!   normalised, see [`super::bark_colors`]) and the wind attributes; indices are `u16` when
@@ -22,7 +22,7 @@
 //!   for quantised data (0.00674), replaced by the floor/ceiling combination closest to unit
 //!   length. This saves 20 of the 28 bytes per vertex the float normal and tangent took, the
 //!   bytes a big export spends most of its time writing. The bark's tangents are computed
-//!   straight into the output ([`super::frames_snorm8_append`]): on the mesh's tube rings
+//!   straight into the output ([`super::frames_snorm8_write`]): on the mesh's tube rings
 //!   (`TreeMesh::rings`, nearly every bark vertex) from the ring neighbours, elsewhere by
 //!   Lengyel's method over the triangles touching those vertices ([`super::mesh_tangents`]).
 //! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 values per vertex as
@@ -55,13 +55,17 @@
 //! hash. The JSON is built with `serde_json` maps (sorted keys), floats are written from `f64`
 //! so an `f32` min/max reads back exactly: equal trees give equal bytes.
 //!
-//! **Writing**: one pass per view, appended in order into a buffer reserved at its final size:
-//! float and index arrays as one `memcpy` each (a `memory.copy` in wasm), the rest through a
-//! small stack block (no zero fill of the big arrays and no temporary arrays, except the tangent
-//! sums of the vertices on no tube ring and the colours, zeroed in the output itself); the
-//! colours and the wind share one pass over the wind records. Ranges (bounds, wind) are found with plain comparisons and
-//! square roots are IEEE ones: no libm calls, which are function calls in wasm.
-//! [`write_into`] reuses the caller's allocation.
+//! **Writing**: the JSON is laid out first, then the output is sized at once (a reused buffer
+//! keeps its bytes, a new one comes zeroed from the allocator, no fill) and every byte of it is
+//! written once: the header and JSON, the padding, and each view into its own region. Views of
+//! 256 KiB or more are split into as many parts as there are threads ([`crate::par`], one in
+//! wasm), each part a range of the view's items (vertices, values, matrices) written on its
+//! own; no byte depends on the split, so any number of threads writes the same file. Float and
+//! index arrays are one `memcpy` per part (a `memory.copy` in wasm); nothing else is buffered
+//! except the tangent sums of the vertices on no tube ring. The colours and the wind share one
+//! pass over the wind records. The bounds and the wind ranges are found in one pass split the
+//! same way, with plain comparisons; square roots are IEEE ones: no libm calls, which are
+//! function calls in wasm. [`write_into`] reuses the caller's allocation.
 //!
 //! Code: this file lays the file out (`write_into`, `assemble`); `doc.rs` builds the JSON
 //! (views, accessors, meshes), `data.rs` holds the BIN chunk's arrays and their encoders.
@@ -70,11 +74,12 @@ mod data;
 mod doc;
 
 use super::{ExportOptions, LeafMode, TexturePngs};
-use crate::mesh::{Material, WIND_STRIDE};
+use crate::mesh::{Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
 use data::{Data, Part, WindCodec};
 use doc::{Acc, Colors, Doc, VertexExtras};
 use serde_json::{json, Map, Value};
+use std::ops::Range;
 use std::sync::Arc;
 
 const ARRAY_BUFFER: u32 = 34962;
@@ -114,9 +119,14 @@ pub fn write(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
     out
 }
 
-/// [`write()`] into `out` (cleared first), reusing its allocation: repeated exports of big trees
-/// then skip the operating system's zeroing of fresh pages.
+/// [`write()`] into `out` (its contents replaced), reusing its allocation: repeated exports of
+/// big trees into the same `Vec` skip the operating system's zeroing of fresh pages.
 pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
+    write_into_threads(g, opts, out, crate::par::threads());
+}
+
+/// [`write_into`] on at most `threads` threads ([`crate::par`]): the same bytes on any number.
+pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: usize) {
     let bark = &g.mesh;
     let f = &g.foliage;
     let has_bark = bark.vertex_count() > 0 && !bark.indices.is_empty();
@@ -195,9 +205,8 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
     };
     if has_bark {
-        let wind =
-            (opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE).then(|| WindCodec::of(&bark.wind));
-        let bounds = super::bounds_of(&bark.positions);
+        let wind = opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE;
+        let (bounds, wind) = bark_ranges(bark, wind, threads);
         let extra = VertexExtras {
             tangents: (tangents && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
             colors: opts.vertex_colors.then_some(Colors::Bark(bounds)),
@@ -244,7 +253,36 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
         }));
         children.push(doc.nodes.len());
     }
-    assemble(doc, g, samplers, used_samplers, instanced, children, out);
+    assemble(doc, g, samplers, used_samplers, instanced, children, out, threads);
+}
+
+/// The bark's bounds and, when `wind`, the codec of its wind data: one pass over the positions
+/// and the wind records, split between the threads (smallest and largest values are the same
+/// whichever way the vertices are split).
+fn bark_ranges(bark: &TreeMesh, wind: bool, threads: usize) -> (Bounds, Option<WindCodec>) {
+    let parts = crate::par::ranges(bark.vertex_count(), threads);
+    let scans = crate::par::map(parts, threads, |r| {
+        let b = super::bounds_of(&bark.positions[3 * r.start..3 * r.end]);
+        let w = wind.then(|| super::ranges::<WIND_STRIDE>(&bark.wind[WIND_STRIDE * r.start..WIND_STRIDE * r.end]));
+        ((b.min, b.max), w)
+    });
+    let mut bounds = None;
+    let mut w = None;
+    for (b, r) in scans {
+        bounds = Some(bounds.map_or(b, |a| merge(a, b)));
+        w = r.map(|r| w.map_or(r, |a| merge(a, r)));
+    }
+    let (min, max) = bounds.unwrap_or_default();
+    (Bounds { min, max }, w.map(|(lo, hi)| WindCodec::over(lo, hi)))
+}
+
+/// The smallest and largest of two ranges, component by component (NaN never wins, as in
+/// [`super::ranges`]).
+fn merge<const N: usize>(a: ([f32; N], [f32; N]), b: ([f32; N], [f32; N])) -> ([f32; N], [f32; N]) {
+    (
+        std::array::from_fn(|k| if b.0[k] < a.0[k] { b.0[k] } else { a.0[k] }),
+        std::array::from_fn(|k| if b.1[k] > a.1[k] { b.1[k] } else { a.1[k] }),
+    )
 }
 
 /// Lays out the JSON and the BIN chunk and writes the GLB bytes.
@@ -256,6 +294,7 @@ fn assemble(
     instanced: bool,
     children: Vec<usize>,
     out: &mut Vec<u8>,
+    threads: usize,
 ) {
     let mut root = Map::new();
     root.insert("asset".into(), json!({"version": "2.0", "generator": format!("Sylva {}", crate::VERSION)}));
@@ -300,25 +339,67 @@ fn assemble(
     let has_bin = doc.bin_len > 0;
     let total = 12 + 8 + json_len + if has_bin { 8 + bin_len } else { 0 };
     let bin_start = 12 + 8 + json_len + 8;
-    out.clear();
-    out.reserve_exact(total);
-    let word = |out: &mut Vec<u8>, w: u32| out.extend_from_slice(&w.to_le_bytes());
-    word(out, MAGIC);
-    word(out, 2);
-    word(out, total as u32);
-    word(out, json_len as u32);
-    word(out, CHUNK_JSON);
-    out.extend_from_slice(json.as_bytes());
-    out.resize(20 + json_len, b' ');
+    let mut header = Vec::with_capacity(bin_start);
+    let mut word = |w: u32| header.extend_from_slice(&w.to_le_bytes());
+    word(MAGIC);
+    word(2);
+    word(total as u32);
+    word(json_len as u32);
+    word(CHUNK_JSON);
+    header.extend_from_slice(json.as_bytes());
+    header.resize(20 + json_len, b' ');
     if has_bin {
-        word(out, bin_len as u32);
-        word(out, CHUNK_BIN);
-        debug_assert_eq!(out.len(), bin_start);
-        for (offset, d) in &doc.data {
-            out.resize(bin_start + offset, 0); // alignment padding
-            d.append(out);
-        }
-        out.resize(bin_start + bin_len, 0);
+        header.extend_from_slice(&(bin_len as u32).to_le_bytes());
+        header.extend_from_slice(&CHUNK_BIN.to_le_bytes());
     }
-    debug_assert_eq!(out.len(), total);
+    resize_for_overwrite(out, total);
+    let (head, bin) = out.split_at_mut(header.len());
+    head.copy_from_slice(&header);
+    // The BIN chunk: each view's region split into parts for the threads, the padding zeroed.
+    let mut jobs = Vec::new();
+    let (mut rest, mut at) = (bin, 0);
+    for &(offset, d) in &doc.data {
+        let (pad, r) = rest.split_at_mut(offset - at);
+        pad.fill(0);
+        let (region, r) = r.split_at_mut(d.byte_len());
+        (rest, at) = (r, offset + d.byte_len());
+        let parts = if d.byte_len() < MIN_SPLIT_BYTES { 1 } else { threads.max(1) };
+        split(d, region, parts, &mut jobs);
+    }
+    rest.fill(0);
+    crate::par::run(jobs, threads, |(d, items, out)| d.write(items, out));
+}
+
+/// Views smaller than this are written by one thread.
+const MIN_SPLIT_BYTES: usize = 1 << 18;
+
+/// A part of a view for one thread: the data, a range of its items, and where they go (one
+/// slice per plane, [`Data::widths`]).
+type Job<'a, 'o> = (Data<'a>, Range<usize>, [&'o mut [u8]; 2]);
+
+/// Adds the jobs writing `d` into `region` (its bytes, [`Data::byte_len`]) in `parts` parts of
+/// about equal item counts.
+fn split<'a, 'o>(d: Data<'a>, region: &'o mut [u8], parts: usize, jobs: &mut Vec<Job<'a, 'o>>) {
+    let ([wa, wb], n) = (d.widths(), d.items());
+    let (mut a, mut b) = region.split_at_mut(n * wa);
+    for p in 0..parts {
+        let items = n * p / parts..n * (p + 1) / parts;
+        let (pa, ra) = std::mem::take(&mut a).split_at_mut(items.len() * wa);
+        let (pb, rb) = std::mem::take(&mut b).split_at_mut(items.len() * wb);
+        (a, b) = (ra, rb);
+        jobs.push((d, items, [pa, pb]));
+    }
+}
+
+/// Makes `out` `total` bytes long for the writers to overwrite every byte of: a fresh zeroed
+/// allocation (pages the operating system zeroes as they are first touched, no fill) when its
+/// capacity is short, else its allocation and old bytes kept (only what lies past its old
+/// length zeroed).
+fn resize_for_overwrite(out: &mut Vec<u8>, total: usize) {
+    if out.capacity() < total {
+        *out = vec![0; total];
+    } else {
+        out.truncate(total);
+        out.resize(total, 0);
+    }
 }
