@@ -37,7 +37,8 @@ export (generate --out):
   --no-textures no images (plain material colours)
   --no-tangents GLB: no TANGENT (viewers compute them; faster export of big trees)
   --no-wind     no wind attributes
-bench --glb: also time the GLB export (median, and the first export with PNG encoding).";
+bench --glb: also time the GLB export (median into a fresh buffer, into a reused one on every
+core and on one, and the first export with PNG encoding).";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
