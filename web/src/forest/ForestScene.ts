@@ -7,7 +7,7 @@
  * uploaded and `.count` set, so the number of draw calls is bounded by
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
-import type { Sphere } from 'three';
+import type { Sphere, InstancedMesh } from 'three';
 import {
   Color,
   DirectionalLight,
@@ -17,7 +17,6 @@ import {
   Frustum,
   HemisphereLight,
   InstancedBufferAttribute,
-  InstancedMesh,
   Matrix4,
   Mesh,
   MeshStandardMaterial,
@@ -56,6 +55,7 @@ import {
   type ForestLayout,
   type LodBuckets,
 } from './layout';
+import { wrapInstances } from '../viewer/instances';
 
 /** Meshes (so draw calls) per variety: 3 levels × 2 materials + the impostor. */
 export const MESHES_PER_VARIETY = 7;
@@ -326,11 +326,8 @@ export class ForestScene {
         attribute.setUsage(DynamicDrawUsage);
         this.attributes[b] = attribute;
         const list: InstancedMesh[] = [];
-        const room = this.layout.perVariety[v] ?? 0;
         for (const part of variety.parts[l]!) {
-          const mesh = new InstancedMesh(part.geometry, part.material, Math.max(room, 1));
-          mesh.instanceMatrix = attribute;
-          mesh.count = 0;
+          const mesh = wrapInstances(part.geometry, part.material, attribute, null, 0);
           mesh.visible = false;
           mesh.frustumCulled = false;
           list.push(mesh);

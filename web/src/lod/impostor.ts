@@ -17,7 +17,6 @@ import {
   DoubleSide,
   FrontSide,
   GLSL3,
-  InstancedBufferAttribute,
   InstancedMesh,
   LinearFilter,
   Mesh,
@@ -38,6 +37,7 @@ import {
   type WebGLRenderer,
 } from 'three';
 import { frameDirection, viewBasis } from './hemiOct';
+import { wrapInstances } from '../viewer/instances';
 
 /** One part of the tree to bake: its geometry (instanced or not), base colour and texture. */
 export interface BakePart {
@@ -155,13 +155,7 @@ export function bakeImpostor(
     materials.push(material);
     let mesh: Mesh;
     if (part.instances) {
-      const count = part.instances.matrices.length / 16;
-      const im = new InstancedMesh(part.geometry, material, count);
-      im.instanceMatrix = new InstancedBufferAttribute(part.instances.matrices, 16);
-      if (part.instances.colors) {
-        im.instanceColor = new InstancedBufferAttribute(part.instances.colors, 3);
-      }
-      mesh = im;
+      mesh = wrapInstances(part.geometry, material, part.instances.matrices, part.instances.colors);
     } else {
       mesh = new Mesh(part.geometry, material);
     }

@@ -4,6 +4,7 @@
  * the tree's own leaf texture (a few dozen leaves scattered in a disc), tinted per quad with the
  * cluster's mean leaf colour.
  */
+import type { InstancedMesh } from 'three';
 import {
   BufferAttribute,
   BufferGeometry,
@@ -11,8 +12,6 @@ import {
   Color,
   DataTexture,
   DoubleSide,
-  InstancedBufferAttribute,
-  InstancedMesh,
   LinearFilter,
   LinearMipmapLinearFilter,
   Mesh,
@@ -28,6 +27,7 @@ import {
 import type { LeafTextureBuffers } from '../core/types';
 import { mulberry32 } from '../forest/layout';
 import { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from './types';
+import { wrapInstances } from '../viewer/instances';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';
@@ -59,9 +59,7 @@ export function leafMesh(level: LodLevelBuffers, material: Material): InstancedM
   const geometry = leafGeometry(level);
   if (!geometry) return null;
   const count = level.leafColors.length / 3;
-  const mesh = new InstancedMesh(geometry, material, count);
-  mesh.instanceMatrix = new InstancedBufferAttribute(level.leafMatrices, 16);
-  mesh.instanceColor = new InstancedBufferAttribute(level.leafColors, 3);
+  const mesh = wrapInstances(geometry, material, level.leafMatrices, level.leafColors, count);
   mesh.frustumCulled = false;
   return mesh;
 }

@@ -5,13 +5,12 @@
  * texture with an alpha test, plus a dim emissive copy of it standing in for light shining
  * through the blade from behind.
  */
+import type { InstancedMesh } from 'three';
 import {
   BufferAttribute,
   BufferGeometry,
   DataTexture,
   DoubleSide,
-  InstancedBufferAttribute,
-  InstancedMesh,
   LinearFilter,
   LinearMipmapLinearFilter,
   MeshStandardMaterial,
@@ -22,6 +21,7 @@ import {
   type Object3D,
 } from 'three';
 import type { FoliageBuffers } from '../core/types';
+import { wrapInstances } from './instances';
 
 /** Owns the leaf mesh, texture and material. */
 export class Foliage {
@@ -72,9 +72,7 @@ export class Foliage {
     geometry.setAttribute('normal', new BufferAttribute(buffers.normals, 3));
     geometry.setAttribute('uv', new BufferAttribute(buffers.uvs, 2));
     geometry.setIndex(new BufferAttribute(buffers.indices, 1));
-    const mesh = new InstancedMesh(geometry, this.material, count);
-    mesh.instanceMatrix = new InstancedBufferAttribute(buffers.matrices, 16);
-    mesh.instanceColor = new InstancedBufferAttribute(buffers.colors, 3);
+    const mesh = wrapInstances(geometry, this.material, buffers.matrices, buffers.colors, count);
     // Bounds over every instance would loop over the leaves: the tree is framed by its bark.
     mesh.frustumCulled = false;
     if (this.depthMaterial) mesh.customDepthMaterial = this.depthMaterial;

@@ -1,5 +1,5 @@
 /** Leaf inspector requests and tree foliage through the worker handler and the real wasm. */
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
 import { createHandler, readyMessage } from './handler';
 import type { LeafResponse, ResultResponse, WorkerResponse } from './protocol';
@@ -76,10 +76,16 @@ describe('leaf requests', () => {
     expect(f.positions.length / 3).toBe(f.uvs.length / 2);
     expect(f.texture?.rgba.length).toBe((f.texture?.width ?? 0) * (f.texture?.height ?? 0) * 4);
     expect(sent.at(-1)?.transfer).toContain(f.matrices.buffer);
+    // Not even read out of the module when it is not sent (a 128 KiB copy per tree).
+    const tree = (loadWasm() as unknown as { GeneratedTree: { prototype: object } }).GeneratedTree;
+    const read = vi.spyOn(tree.prototype as { leaf_texture(): Uint8Array }, 'leaf_texture');
     handle({ type: 'generate', id: 2, params: { ...params, seed: 2 } });
     expect(resultOf(sent).foliage?.texture).toBeNull();
+    expect(read).not.toHaveBeenCalled();
     handle({ type: 'generate', id: 3, params: { ...params, leaf_m: 5 } });
     expect(resultOf(sent).foliage?.texture).not.toBeNull();
+    expect(read).toHaveBeenCalledTimes(1);
+    read.mockRestore();
     handle({ type: 'generate', id: 4, params: { ...params, max_leaves: 0 } });
     const e = sent.at(-1)?.message;
     expect(e?.type === 'error' && e.error.kind).toBe('budget');

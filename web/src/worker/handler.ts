@@ -73,11 +73,9 @@ export function foliageOf(tree: WasmTree, meta: TreeMeta, sentHash: string): Fol
   const leafHash = meta.leaf_hash ?? '';
   const size = meta.leaf_texture;
   const none = new Float32Array(0);
-  const rgba = tree.leaf_texture?.() ?? new Uint8Array(0);
-  const texture =
-    size && leafHash !== sentHash && rgba.length > 0
-      ? { width: size[0], height: size[1], rgba }
-      : null;
+  // Read (copied out of the module) only when it is sent.
+  const rgba = size && leafHash !== sentHash ? tree.leaf_texture?.() : undefined;
+  const texture = size && rgba?.length ? { width: size[0], height: size[1], rgba } : null;
   return {
     positions: tree.leaf_positions?.() ?? none.slice(),
     normals: tree.leaf_normals?.() ?? none.slice(),
