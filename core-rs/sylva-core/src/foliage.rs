@@ -179,15 +179,15 @@ fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
         .collect()
 }
 
-/// Per-leaf frame: position, direction (midrib) and front.
-fn leaf_frame(stem: &Stem, t: f32, k: usize, foliage_angle: f32) -> (Vec3, Vec3, Vec3) {
+/// Per-leaf frame: position, direction (midrib) and front; `angle` is the cosine and sine of
+/// the Foliage Angle (the same for every leaf, so computed once).
+fn leaf_frame(stem: &Stem, t: f32, k: usize, angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
     let (pos, tangent) = stem.sample(t);
     let side0 = math::unit_or(stem.base_normal - tangent * tangent.dot(stem.base_normal), || {
         math::unit_or(tangent.cross(Vec3::Y), || tangent.cross(Vec3::X).normalize())
     });
     let side = rotate(side0, tangent, math::rad(GOLDEN_ANGLE * k as f32));
-    let a = math::rad(foliage_angle);
-    let dir = math::unit_or(tangent * math::cos(a) + side * math::sin(a), || tangent);
+    let dir = math::unit_or(tangent * angle.0 + side * angle.1, || tangent);
     (pos, dir, side)
 }
 
@@ -225,6 +225,8 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
     let mut matrices = Vec::with_capacity(need_n * 16);
     let mut colors = Vec::with_capacity(need_n * 3);
     let bias = math::pow(2.0, -2.0 * p.foliage_distribution);
+    let a = math::rad(p.foliage_angle);
+    let angle = (math::cos(a), math::sin(a));
     let mut k = 0usize;
     for &(si, t0, t1, count) in &spans {
         let stem = &skeleton.stems[si];
@@ -241,7 +243,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
             }
             let u = math::pow(u.clamp(0.0, 1.0), bias);
             let t = t0 + (t1 - t0) * u;
-            let (pos, dir, side) = leaf_frame(stem, t, k, p.foliage_angle);
+            let (pos, dir, side) = leaf_frame(stem, t, k, angle);
             k += 1;
             let dirs: &[Vec3] = if p.foliage_twigs3 {
                 &[
