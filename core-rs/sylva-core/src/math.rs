@@ -29,6 +29,41 @@ pub fn acos(x: f32) -> f32 {
 pub fn atan2(y: f32, x: f32) -> f32 {
     libm::atan2f(y, x)
 }
+/// The larger of two numbers, by a plain comparison (`a` on a tie). `f32::max` is a call to
+/// `fmaxf` in wasm (its rule for NaN has no instruction there), too slow for the hottest loops.
+/// The same value as `f32::max` whenever neither is NaN (either zero for `-0.0` and `0.0`).
+#[inline(always)]
+pub fn max(a: f32, b: f32) -> f32 {
+    if b > a {
+        b
+    } else {
+        a
+    }
+}
+
+/// The smaller of two numbers, by a plain comparison: [`max`]'s twin for `f32::min`.
+#[inline(always)]
+pub fn min(a: f32, b: f32) -> f32 {
+    if b < a {
+        b
+    } else {
+        a
+    }
+}
+
+/// `x.round()` (halfway cases away from zero) from `trunc`, an instruction in wasm where
+/// `f32::round` is a call to `roundf`: the fraction `x - trunc(x)` is exact, so the result is
+/// `f32::round`'s for every `x`.
+#[inline]
+pub fn round(x: f32) -> f32 {
+    let t = x.trunc();
+    if (x - t).abs() >= 0.5 {
+        t + 1f32.copysign(x)
+    } else {
+        t
+    }
+}
+
 /// Degrees to radians.
 #[inline]
 pub fn rad(deg: f32) -> f32 {

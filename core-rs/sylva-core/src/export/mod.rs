@@ -226,39 +226,6 @@ impl BarkTint {
     }
 }
 
-/// Bounds of points (3 floats each) with plain comparisons (`f32::min` is a libm call in wasm);
-/// a zero box when there are none. The same box as `TreeMesh::bounds` (NaN never wins).
-pub(crate) fn bounds_of(positions: &[f32]) -> crate::mesh::Bounds {
-    if positions.len() < 3 {
-        return crate::mesh::Bounds { min: [0.0; 3], max: [0.0; 3] };
-    }
-    // Four points per record: 12 lanes run as vector code where there is vector code.
-    let whole = positions.len() / 12 * 12;
-    let (lo4, hi4) = ranges::<12>(&positions[..whole]);
-    let (mut lo, mut hi) = ranges::<3>(&positions[whole..]);
-    for j in 0..4 {
-        for k in 0..3 {
-            lo[k] = if lo4[3 * j + k] < lo[k] { lo4[3 * j + k] } else { lo[k] };
-            hi[k] = if hi4[3 * j + k] > hi[k] { hi4[3 * j + k] } else { hi[k] };
-        }
-    }
-    crate::mesh::Bounds { min: lo, max: hi }
-}
-
-/// Per-lane smallest and largest values of records of `N` floats (infinities for none), with
-/// plain comparisons (NaN never wins).
-pub(crate) fn ranges<const N: usize>(v: &[f32]) -> ([f32; N], [f32; N]) {
-    let mut lo = [f32::INFINITY; N];
-    let mut hi = [f32::NEG_INFINITY; N];
-    for r in v.chunks_exact(N) {
-        for k in 0..N {
-            lo[k] = if r[k] < lo[k] { r[k] } else { lo[k] };
-            hi[k] = if r[k] > hi[k] { r[k] } else { hi[k] };
-        }
-    }
-    (lo, hi)
-}
-
 /// Steps per axis of the bark tint table ([`bark_colors`]).
 pub const TINT_STEPS: usize = 64;
 

@@ -11,6 +11,7 @@ pub mod tube;
 pub mod twig;
 pub mod weld;
 
+use crate::math;
 use serde::Serialize;
 
 /// Which material a range of indices uses.
@@ -41,6 +42,49 @@ pub struct Bounds {
     pub min: [f32; 3],
     /// Largest x, y, z.
     pub max: [f32; 3],
+}
+
+impl Bounds {
+    /// The box of points (3 floats each), a zero box when there are none. Plain comparisons
+    /// (NaN never wins): `f32::min` and `f32::max` are calls to `fminf` and `fmaxf` in wasm,
+    /// which cost the bounds of a big tree milliseconds there.
+    pub fn of(positions: &[f32]) -> Bounds {
+        if positions.len() < 3 {
+            return Bounds { min: [0.0; 3], max: [0.0; 3] };
+        }
+        // Four points per record: 12 lanes run as vector code where there is vector code.
+        let whole = positions.len() / 12 * 12;
+        let (lo4, hi4) = ranges::<12>(&positions[..whole]);
+        let mut r = ranges::<3>(&positions[whole..]);
+        for j in 0..4 {
+            let part = |x: &[f32; 12]| std::array::from_fn(|k| x[3 * j + k]);
+            r = merge_ranges(r, (part(&lo4), part(&hi4)));
+        }
+        Bounds { min: r.0, max: r.1 }
+    }
+}
+
+/// Per-lane smallest and largest values of records of `N` floats (infinities for none), with
+/// plain comparisons (NaN never wins).
+pub(crate) fn ranges<const N: usize>(v: &[f32]) -> ([f32; N], [f32; N]) {
+    let mut lo = [f32::INFINITY; N];
+    let mut hi = [f32::NEG_INFINITY; N];
+    for r in v.chunks_exact(N) {
+        for k in 0..N {
+            lo[k] = if r[k] < lo[k] { r[k] } else { lo[k] };
+            hi[k] = if r[k] > hi[k] { r[k] } else { hi[k] };
+        }
+    }
+    (lo, hi)
+}
+
+/// The smallest and largest of two [`ranges`], lane by lane (NaN never wins; on a tie the
+/// first's value).
+pub(crate) fn merge_ranges<const N: usize>(a: ([f32; N], [f32; N]), b: ([f32; N], [f32; N])) -> ([f32; N], [f32; N]) {
+    (
+        std::array::from_fn(|k| if b.0[k] < a.0[k] { b.0[k] } else { a.0[k] }),
+        std::array::from_fn(|k| if b.1[k] > a.1[k] { b.1[k] } else { a.1[k] }),
+    )
 }
 
 /// A generated tree as flat, typed buffers. Coordinates: metres, **Y up**, the tree's base at
@@ -110,18 +154,7 @@ impl TreeMesh {
 
     /// Bounds of all positions (zero box for an empty mesh).
     pub fn bounds(&self) -> Bounds {
-        if self.positions.is_empty() {
-            return Bounds { min: [0.0; 3], max: [0.0; 3] };
-        }
-        let mut min = [f32::INFINITY; 3];
-        let mut max = [f32::NEG_INFINITY; 3];
-        for p in self.positions.chunks_exact(3) {
-            for k in 0..3 {
-                min[k] = min[k].min(p[k]);
-                max[k] = max[k].max(p[k]);
-            }
-        }
-        Bounds { min, max }
+        Bounds::of(&self.positions)
     }
 
     /// Content hash of every buffer (positions, normals, uvs, indices, wind, groups): equal hashes
@@ -445,10 +478,16 @@ impl MeshBuilder {
 #[inline]
 pub fn seam_shifts(u: [f32; 3]) -> [i32; 3] {
     // Within half a turn, moving any vertex a whole turn only widens the span.
-    if u[0].max(u[1]).max(u[2]) - u[0].min(u[1]).min(u[2]) <= 0.5 {
+    if span(u) <= 0.5 {
         return [0; 3];
     }
     seam_shifts_across(u)
+}
+
+/// Largest minus smallest of three `u` (plain comparisons: `f32::max` is a call in wasm).
+#[inline(always)]
+fn span(u: [f32; 3]) -> f32 {
+    math::max(math::max(u[0], u[1]), u[2]) - math::min(math::min(u[0], u[1]), u[2])
 }
 
 /// [`seam_shifts`] for a triangle that spans more than half a turn.
@@ -456,9 +495,8 @@ pub fn seam_shifts(u: [f32; 3]) -> [i32; 3] {
 fn seam_shifts_across(u: [f32; 3]) -> [i32; 3] {
     let mut best = ([0; 3], f32::INFINITY, 0);
     for anchor in u {
-        let k = u.map(|x| (anchor - x).round() as i32);
-        let m = [0, 1, 2].map(|i| u[i] + k[i] as f32);
-        let span = m[0].max(m[1]).max(m[2]) - m[0].min(m[1]).min(m[2]);
+        let k = u.map(|x| math::round(anchor - x) as i32);
+        let span = span([0, 1, 2].map(|i| u[i] + k[i] as f32));
         let moves = k.iter().filter(|&&x| x != 0).count();
         if span < best.1 - 1e-6 || (span < best.1 + 1e-6 && moves < best.2) {
             best = (k, span, moves);

@@ -79,7 +79,7 @@ pub(super) struct WindCodec(pub [Unorm16; WIND_STRIDE]);
 
 impl WindCodec {
     /// The codec of wind data (8 floats per vertex) whose components span `lo..=hi`
-    /// ([`crate::export::ranges`]). Every value lies in its component's range, so the encoding
+    /// ([`crate::mesh::ranges`]). Every value lies in its component's range, so the encoding
     /// never clamps: the fixed ranges are used only when the data fits them (they always do for
     /// the generator's meshes), else the data's range.
     pub(super) fn over(lo: [f32; WIND_STRIDE], hi: [f32; WIND_STRIDE]) -> WindCodec {

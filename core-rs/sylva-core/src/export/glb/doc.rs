@@ -109,7 +109,7 @@ impl<'a> Doc<'a> {
     /// The vertex attributes of a mesh (shared by its primitives).
     pub(super) fn attributes(&mut self, m: &'a TreeMesh, extra: &VertexExtras<'a>) -> Map<String, Value> {
         let n = m.vertex_count();
-        let b = extra.bounds.unwrap_or_else(|| crate::export::bounds_of(&m.positions));
+        let b = extra.bounds.unwrap_or_else(|| crate::mesh::Bounds::of(&m.positions));
         let mut at = Map::new();
         let pos = Acc { minmax: Some((b.min.to_vec(), b.max.to_vec())), ..Acc::new(FLOAT, "VEC3", n) };
         at.insert("POSITION".into(), json!(self.array(Data::F32(&m.positions), Some(ARRAY_BUFFER), pos)));

@@ -74,7 +74,7 @@ mod data;
 mod doc;
 
 use super::{ExportOptions, LeafMode, TexturePngs};
-use crate::mesh::{Bounds, Material, TreeMesh, WIND_STRIDE};
+use crate::mesh::{merge_ranges, ranges, Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
 use data::{Data, Part, WindCodec};
 use doc::{Acc, Colors, Doc, VertexExtras};
@@ -262,27 +262,18 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
 fn bark_ranges(bark: &TreeMesh, wind: bool, threads: usize) -> (Bounds, Option<WindCodec>) {
     let parts = crate::par::ranges(bark.vertex_count(), threads);
     let scans = crate::par::map(parts, threads, |r| {
-        let b = super::bounds_of(&bark.positions[3 * r.start..3 * r.end]);
-        let w = wind.then(|| super::ranges::<WIND_STRIDE>(&bark.wind[WIND_STRIDE * r.start..WIND_STRIDE * r.end]));
+        let b = Bounds::of(&bark.positions[3 * r.start..3 * r.end]);
+        let w = wind.then(|| ranges::<WIND_STRIDE>(&bark.wind[WIND_STRIDE * r.start..WIND_STRIDE * r.end]));
         ((b.min, b.max), w)
     });
     let mut bounds = None;
     let mut w = None;
     for (b, r) in scans {
-        bounds = Some(bounds.map_or(b, |a| merge(a, b)));
-        w = r.map(|r| w.map_or(r, |a| merge(a, r)));
+        bounds = Some(bounds.map_or(b, |a| merge_ranges(a, b)));
+        w = r.map(|r| w.map_or(r, |a| merge_ranges(a, r)));
     }
     let (min, max) = bounds.unwrap_or_default();
     (Bounds { min, max }, w.map(|(lo, hi)| WindCodec::over(lo, hi)))
-}
-
-/// The smallest and largest of two ranges, component by component (NaN never wins, as in
-/// [`super::ranges`]).
-fn merge<const N: usize>(a: ([f32; N], [f32; N]), b: ([f32; N], [f32; N])) -> ([f32; N], [f32; N]) {
-    (
-        std::array::from_fn(|k| if b.0[k] < a.0[k] { b.0[k] } else { a.0[k] }),
-        std::array::from_fn(|k| if b.1[k] > a.1[k] { b.1[k] } else { a.1[k] }),
-    )
 }
 
 /// Lays out the JSON and the BIN chunk and writes the GLB bytes.

@@ -58,6 +58,9 @@ pub(crate) struct Scratch {
     pub(super) flat: Vec<Vec2>,
     /// The footprint loop in the parent's surface coordinates.
     pub(super) foot_flat: Vec<Vec2>,
+    /// The search window's triangles the child's axis leaves through ([`Facing`]), with their
+    /// vertices, row, column and half, in the order the search visits them.
+    window: Vec<(Facing, [u32; 3], usize, i32, usize)>,
 }
 
 /// Steps 2 to 4: open the parent, add the collar loops and zip them in. On success the hole's
@@ -112,27 +115,6 @@ pub(crate) fn join(
     let widen = jn.foot / rc;
     let (mut ra, mut rb, mut ja, mut jb) = (usize::MAX, 0, i32::MAX, i32::MIN);
     let r_len = j.parent_stem.length.max(1e-6);
-    // The first hit (largest s) of the line q + s d with the quads in rows × cols.
-    let search = |q: Vec3, rows: std::ops::Range<usize>, cols: std::ops::Range<i32>| {
-        let mut best: Option<(f32, [u32; 3], Vec3, usize, i32, Vec2)> = None;
-        for r in rows {
-            for c in cols.clone() {
-                // The quad as `emit` writes it (the seam's duplicate column after the last).
-                let a = pm.first + r as u32 * stride + c.rem_euclid(sides) as u32;
-                let (b, c2, d) = (a + 1, a + 1 + stride, a + stride);
-                for (half, t) in [[a, b, c2], [a, c2, d]].into_iter().enumerate() {
-                    if let Some((s, w)) = line_hit(q, jf.tangent, t.map(|v| out.vertex_at(v).0)) {
-                        if best.is_none_or(|(s0, ..)| s > s0) {
-                            // Where in the quad: across its columns, along its rows (0..1).
-                            let uv = if half == 0 { Vec2::new(w.y + w.z, w.z) } else { Vec2::new(w.y, w.y + w.z) };
-                            best = Some((s, t, w, r, c, uv));
-                        }
-                    }
-                }
-            }
-        }
-        best
-    };
     // Where the line leaves the parent's local cylinder: the quad to look at first.
     let guess = |q: Vec3| {
         let (t_ax, d) = (f.tangent, jf.tangent);
@@ -184,6 +166,8 @@ pub(crate) fn join(
     };
     // Where the flared footprint's quads are already another junction's, the footprint of the
     // branch itself (no flare) may still fit.
+    // Filled at the first search (most junctions need none); the window is the same for all.
+    sc.window.clear();
     for first in [widen, 1.0] {
         (ra, rb, ja, jb) = (usize::MAX, 0, i32::MAX, i32::MIN);
         sc.foot.clear();
@@ -197,7 +181,10 @@ pub(crate) fn join(
                     best = walk(q, r, c);
                 }
                 if best.is_none() {
-                    best = search(q, wa..wb, ca..cb);
+                    if sc.window.is_empty() {
+                        fill_window(&mut sc.window, out, pm.first, stride, sides, wa..wb, ca..cb, jf.tangent);
+                    }
+                    best = search(&sc.window, q, jf.tangent);
                 }
                 if best.is_some() {
                     break;
@@ -381,22 +368,85 @@ pub(crate) fn well_wound(out: &MeshBuilder, tris: &[u32]) -> bool {
 /// Where the line `q + s d` crosses the plane of triangle `t` leaving it on its outer side: `s`
 /// and the (unclamped) coordinates `u`, `v` along `t[1] - t[0]` and `t[2] - t[0]`.
 fn line_plane(q: Vec3, d: Vec3, t: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
-    let h = d.cross(e2);
-    let det = e1.dot(h);
-    // det = -d · (e1 × e2): leaving through the outer side (along the normal) makes it negative.
-    if det >= -1e-12 * e1.length_squared().max(e2.length_squared()) {
-        return None;
-    }
-    let inv = 1.0 / det;
-    let o = q - t[0];
-    let qv = o.cross(e1);
-    Some((e2.dot(qv) * inv, o.dot(h) * inv, d.dot(qv) * inv))
+    Facing::new(d, t).map(|f| f.at(q, d))
 }
 
-/// Where the line `q + s d` crosses triangle `t` leaving it on its outer side (wound
-/// counter-clockwise seen from outside): `s` and the barycentric weights of the crossing.
-fn line_hit(q: Vec3, d: Vec3, t: [Vec3; 3]) -> Option<(f32, Vec3)> {
-    let (s, u, v) = line_plane(q, d, t)?;
-    (u >= 0.0 && v >= 0.0 && u + v <= 1.0).then(|| (s, Vec3::new(1.0 - u - v, u, v)))
+/// The part of [`line_plane`] that depends on the triangle and the line's direction only, for
+/// many lines of one direction (the columns of a junction all follow the child's axis).
+#[derive(Clone, Copy)]
+struct Facing {
+    p0: Vec3,
+    e1: Vec3,
+    e2: Vec3,
+    h: Vec3,
+    inv: f32,
+}
+
+impl Facing {
+    /// `None` when lines along `d` do not leave triangle `t` through its outer side.
+    #[inline]
+    fn new(d: Vec3, t: [Vec3; 3]) -> Option<Facing> {
+        let (e1, e2) = (t[1] - t[0], t[2] - t[0]);
+        let h = d.cross(e2);
+        let det = e1.dot(h);
+        // det = -d · (e1 × e2): leaving through the outer side (along the normal) makes it negative.
+        if det >= -1e-12 * crate::math::max(e1.length_squared(), e2.length_squared()) {
+            return None;
+        }
+        Some(Facing { p0: t[0], e1, e2, h, inv: 1.0 / det })
+    }
+
+    /// [`line_plane`] of the line `q + s d` (`d` the direction given to [`Facing::new`]).
+    #[inline]
+    fn at(&self, q: Vec3, d: Vec3) -> (f32, f32, f32) {
+        let o = q - self.p0;
+        let qv = o.cross(self.e1);
+        (self.e2.dot(qv) * self.inv, o.dot(self.h) * self.inv, d.dot(qv) * self.inv)
+    }
+}
+
+/// The triangles of the parent's quads in `rows` × `cols` (as `emit` writes them: the seam's
+/// duplicate column after the last) that lines along `d` leave through their outer side, into
+/// `window` in search order.
+fn fill_window(
+    window: &mut Vec<(Facing, [u32; 3], usize, i32, usize)>,
+    out: &MeshBuilder,
+    first: u32,
+    stride: u32,
+    sides: i32,
+    rows: std::ops::Range<usize>,
+    cols: std::ops::Range<i32>,
+    d: Vec3,
+) {
+    for r in rows {
+        for c in cols.clone() {
+            let a = first + r as u32 * stride + c.rem_euclid(sides) as u32;
+            let (b, c2, e) = (a + 1, a + 1 + stride, a + stride);
+            for (half, t) in [[a, b, c2], [a, c2, e]].into_iter().enumerate() {
+                if let Some(f) = Facing::new(d, t.map(|v| out.vertex_at(v).0)) {
+                    window.push((f, t, r, c, half));
+                }
+            }
+        }
+    }
+}
+
+/// The first hit (largest `s`) of the line `q + s d` with the triangles of a [`fill_window`]:
+/// `s`, the triangle, its barycentric weights, row and column, and where in the quad (across
+/// its columns, along its rows, 0..1).
+fn search(
+    window: &[(Facing, [u32; 3], usize, i32, usize)],
+    q: Vec3,
+    d: Vec3,
+) -> Option<(f32, [u32; 3], Vec3, usize, i32, Vec2)> {
+    let mut best: Option<(f32, [u32; 3], Vec3, usize, i32, Vec2)> = None;
+    for &(f, t, r, c, half) in window {
+        let (s, u, v) = f.at(q, d);
+        if u >= 0.0 && v >= 0.0 && u + v <= 1.0 && best.is_none_or(|(s0, ..)| s > s0) {
+            let w = Vec3::new(1.0 - u - v, u, v);
+            let uv = if half == 0 { Vec2::new(w.y + w.z, w.z) } else { Vec2::new(w.y, w.y + w.z) };
+            best = Some((s, t, w, r, c, uv));
+        }
+    }
+    best
 }
