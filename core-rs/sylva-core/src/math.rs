@@ -80,3 +80,47 @@ pub fn unit_or(v: glam::Vec3, fallback: impl FnOnce() -> glam::Vec3) -> glam::Ve
         fallback()
     }
 }
+
+/// Lengths and unit vectors through the square-root instruction. glam is built with `libm` (for
+/// portable trigonometry), so its `length` and `normalize` take their square root in
+/// `libm::sqrtf`, a software loop in wasm. These are glam's arithmetic with `f32::sqrt`: the same
+/// values (an IEEE square root is exact everywhere) at instruction speed, for the hot loops.
+pub trait HwSqrt: Copy {
+    /// glam's `length()`.
+    fn length_hw(self) -> f32;
+    /// glam's `normalize()`.
+    fn normalize_hw(self) -> Self;
+}
+
+impl HwSqrt for glam::Vec3 {
+    #[inline]
+    fn length_hw(self) -> f32 {
+        self.length_squared().sqrt()
+    }
+    #[inline]
+    fn normalize_hw(self) -> Self {
+        self * (1.0 / self.length_hw())
+    }
+}
+
+impl HwSqrt for glam::Quat {
+    #[inline]
+    fn length_hw(self) -> f32 {
+        glam::Vec4::from(self).length_squared().sqrt()
+    }
+    #[inline]
+    fn normalize_hw(self) -> Self {
+        glam::Quat::from_vec4(glam::Vec4::from(self) * (1.0 / self.length_hw()))
+    }
+}
+
+/// glam's `v.normalize_or(fallback)` through [`HwSqrt`].
+#[inline]
+pub fn normalize_or_hw(v: glam::Vec3, fallback: glam::Vec3) -> glam::Vec3 {
+    let rcp = 1.0 / v.length_hw();
+    if rcp.is_finite() && rcp > 0.0 {
+        v * rcp
+    } else {
+        fallback
+    }
+}

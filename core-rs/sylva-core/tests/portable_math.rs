@@ -101,3 +101,28 @@ fn plain_max_min_and_round_give_the_std_values() {
         }
     }
 }
+
+#[test]
+fn hardware_square_roots_give_glams_values() {
+    // `HwSqrt` and `normalize_or_hw` redo glam's length and normalisation with the square-root
+    // instruction: bit for bit glam's results (which go through libm's software square root).
+    use glam::{Quat, Vec3};
+    use sylva_core::math::{normalize_or_hw, HwSqrt};
+    let mut x = 0x9e37_79b9u32;
+    let mut next = || {
+        x ^= x << 13;
+        x ^= x >> 17;
+        x ^= x << 5;
+        (x as f32 / u32::MAX as f32 - 0.5) * 10f32.powi((x % 9) as i32 - 4)
+    };
+    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
+    for _ in 0..50_000 {
+        let v = Vec3::new(next(), next(), next());
+        assert_eq!(v.length_hw().to_bits(), v.length().to_bits(), "{v}");
+        assert_eq!(bits(v.normalize_hw()), bits(v.normalize()), "{v}");
+        assert_eq!(bits(normalize_or_hw(v, Vec3::Y)), bits(v.normalize_or(Vec3::Y)), "{v}");
+        let q = Quat::from_xyzw(next(), next(), next(), next());
+        assert_eq!(q.normalize_hw().to_array().map(f32::to_bits), q.normalize().to_array().map(f32::to_bits));
+    }
+    assert_eq!(normalize_or_hw(Vec3::ZERO, Vec3::Y), Vec3::Y);
+}

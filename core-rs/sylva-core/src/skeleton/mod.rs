@@ -12,6 +12,7 @@ mod stem;
 mod trace;
 mod trunk;
 
+use crate::math::HwSqrt;
 pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
@@ -284,7 +285,8 @@ impl Builder<'_> {
             // Parent frame at the attachment point: its +Y along `dir`, +X transported from the base.
             let x = unit_or(stem.base_normal - dir * stem.base_normal.dot(dir), || dir.any_orthonormal_vector());
             let parent_frame = Quat::from_mat3(&glam::Mat3::from_cols(x, dir, x.cross(dir)));
-            let frame = (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize();
+            let frame =
+                (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize_hw();
             self.grow(StemStart {
                 level: child,
                 parent: Some(index),

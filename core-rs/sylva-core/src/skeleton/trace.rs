@@ -2,6 +2,7 @@
 //! AttractionUp, segment and base splits into clones, and the pruning envelope test.
 
 use super::StemStart;
+use crate::math::HwSqrt;
 use crate::math::{acos, rad, PI, TAU};
 use crate::params::TreeParams;
 use crate::rng::Rng;
@@ -46,7 +47,7 @@ pub(super) fn trace(
                 2.0 * lp.curve_back / segs as f32
             };
             let bend = bend + rng.var(lp.curve_v) / segs as f32 + correction;
-            frame = (frame * Quat::from_rotation_x(rad(bend))).normalize();
+            frame = (frame * Quat::from_rotation_x(rad(bend))).normalize_hw();
             if s.level >= 2 && p.attraction_up != 0.0 {
                 frame = attract_up(frame, p.attraction_up, segs);
             }
@@ -77,7 +78,7 @@ pub(super) fn trace(
                         // which would leave a clone on top of its original when the angle is 0).
                         let clone_frame =
                             (Quat::from_rotation_y(rad(spread)) * frame * Quat::from_rotation_x(rad(angle)))
-                                .normalize();
+                                .normalize_hw();
                         clones.push(StemStart {
                             level: s.level,
                             parent: None,
@@ -92,7 +93,7 @@ pub(super) fn trace(
                             rng: rng.split(),
                         });
                     }
-                    frame = (frame * Quat::from_rotation_x(rad(angle))).normalize();
+                    frame = (frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
                     correction -= angle / remaining;
                 }
             }
@@ -126,5 +127,5 @@ fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
         return frame;
     }
     let turn = (attraction * declination / segs as f32).clamp(-0.9 * (PI - declination), 0.9 * declination);
-    (Quat::from_axis_angle(axis.normalize(), turn) * frame).normalize()
+    (Quat::from_axis_angle(axis.normalize_hw(), turn) * frame).normalize_hw()
 }

@@ -8,6 +8,7 @@
 //! claimed ones) and fans.
 
 use super::{Base, Frame, StemMesh, PENDING_CAP};
+use crate::math::HwSqrt;
 use crate::math::{cos, sin, unit_or, TAU};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{MeshBuilder, WIND_STRIDE};
@@ -245,7 +246,7 @@ fn sweep_with(
     let (tip, tip_tan) = seg.1.eval(1.0);
     let end_r = stem.radius_at(1.0);
     let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
-    let v_apex = v + (apex_pos - last_center).length() / (TAU * last_radius.max(1e-6));
+    let v_apex = v + (apex_pos - last_center).length_hw() / (TAU * last_radius.max(1e-6));
     let apex_slot = rings * stride;
     pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
     nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&tip_tan.to_array());

@@ -10,6 +10,7 @@
 
 use super::zip::zip_hole;
 use super::{asin, Junction, REACH};
+use crate::math::HwSqrt;
 use crate::math::{atan2, unit_or, TAU};
 use crate::mesh::tube::{Frame, StemMesh, StemWind};
 use crate::mesh::{MeshBuilder, WIND_STRIDE};
@@ -96,7 +97,7 @@ pub(crate) fn join(
     let phi = atan2(w.dot(f.tangent.cross(f.normal)), w.dot(f.normal));
     let r_mid = j.parent_stem.radius_at(pts[(ra + rb) / 2]).max(1e-6);
     let rc = j.child_stem.radius_at(jn.t_start).max(1e-6);
-    let beta = asin((jn.foot / r_mid).min(0.9)).max(atan2(jn.foot + 0.25 * rc, w.length()));
+    let beta = asin((jn.foot / r_mid).min(0.9)).max(atan2(jn.foot + 0.25 * rc, w.length_hw()));
     let sides = pm.sides as i32;
     let dcol = TAU / sides as f32;
     let (ja, jb) = {
@@ -226,7 +227,7 @@ pub(crate) fn join(
         let (p0, n0, ..) = sc.foot[m];
         let p3 = out.vertex_at(j.child.first + m as u32).0;
         let chord = p3 - p0;
-        let len = chord.length();
+        let len = chord.length_hw();
         let t0 = unit_or(chord - n0 * chord.dot(n0), || jf.tangent);
         let (b1, b2) = (p0 + t0 * (0.4 * len), p3 - jf.tangent * (0.4 * len));
         for li in 0..loops {
