@@ -165,10 +165,10 @@ pub(crate) fn join(
     let free = |claimed: &[bool], rows: std::ops::Range<usize>, cols: std::ops::Range<i32>| {
         rows.clone().all(|r| cols.clone().all(|c| !claimed[claim(r, c)]))
     };
+    // The search window's triangles, filled at the first search (most junctions need none).
+    sc.window.clear();
     // Where the flared footprint's quads are already another junction's, the footprint of the
     // branch itself (no flare) may still fit.
-    // Filled at the first search (most junctions need none); the window is the same for all.
-    sc.window.clear();
     for first in [widen, 1.0] {
         (ra, rb, ja, jb) = (usize::MAX, 0, i32::MAX, i32::MIN);
         sc.foot.clear();
