@@ -135,6 +135,11 @@ fn growth_is_deterministic_and_bounded_by_the_budget() {
     let e = generate(&TreeParams { max_vertices: 2_000, ..grown("grown_broadleaf") }).unwrap_err();
     assert!(matches!(e, SylvaError::Budget { .. }), "{e:?}");
     assert!(e.message().contains("growth stopped at 500 nodes"), "{e}");
+    // Past the node budget, the vertex budget's advice names growth's parameters, not Weber &
+    // Penn's Levels and Branches (which a grown tree does not have).
+    let e = generate(&TreeParams { max_vertices: 12_000, ..grown("grown_broadleaf") }).unwrap_err();
+    assert!(e.message().contains("max_vertices budget of 12000"), "{e}");
+    assert!(e.message().contains("lower Markers") && !e.message().contains("Levels"), "{e}");
 }
 
 #[test]
@@ -148,4 +153,22 @@ fn regression_trunks_leave_the_ground_vertically() {
         assert!(d.y > 0.999, "trunk starts leaning: {d}");
     }
     assert!(g.bounds.min[1] >= -1e-4, "mesh below the ground: {:?}", g.bounds);
+}
+
+#[test]
+fn regression_a_short_internode_still_grows_a_tree() {
+    // Branches may not end closer to the ground than the clearance (0.1 m); the trunk's first
+    // step from the ground ended below it for any Internode under 0.1 (allowed from 0.02), so
+    // growth stopped at once and the tree was empty, with no message.
+    for internode in [0.02, 0.05, 0.09] {
+        let mut p = TreeParams::default();
+        p.set("growth_mode", 1.0).unwrap();
+        p.set("internode", internode).unwrap();
+        let g = generate(&p).unwrap();
+        assert!(g.skeleton.stems.len() > 20, "internode {internode}: {} stems", g.skeleton.stems.len());
+        assert!(g.mesh.vertex_count() > 1000, "internode {internode}");
+        let trunk = &g.skeleton.stems[0];
+        assert!(trunk.points[0].y.abs() < 1e-6 && trunk.points[1].y > trunk.points[0].y, "internode {internode}");
+        assert!(g.bounds.min[1] >= -1e-4, "internode {internode}: mesh below the ground: {:?}", g.bounds);
+    }
 }

@@ -245,9 +245,10 @@ impl Environment {
     }
 
     /// Whether a branch may grow from `a` to `b`: it stops at exclusion boxes and never grows
-    /// closer to the ground than [`GROUND_CLEARANCE`] (the trunk starts on the ground).
+    /// closer to the ground than [`GROUND_CLEARANCE`] unless it rises (the trunk starts on the
+    /// ground, and with an Internode under the clearance its first steps end below it).
     pub fn segment_allowed(&self, a: Vec3, b: Vec3) -> bool {
-        b.y >= GROUND_CLEARANCE
+        (b.y >= GROUND_CLEARANCE || b.y > a.y)
             && !self.exclusion.iter().any(|x| x.hit_by_segment(a, b))
             && !self.exclusion_prims.iter().any(|x| x.hit_by_segment(a, b))
     }

@@ -47,13 +47,21 @@ pub fn min_vertices(curve_res: u32) -> u64 {
     (u64::from(curve_res) + 1) * 4 + 1
 }
 
-/// The budget error, shared by the skeleton and mesh stages.
-pub fn budget_error(what: &str, need: u64, max: u32) -> SylvaError {
+/// The vertex budget error, shared by the skeleton and mesh stages: the advice names the
+/// parameters that make the tree (Weber & Penn's, or growth's).
+pub fn budget_error(p: &TreeParams, what: &str, need: u64) -> SylvaError {
+    let lower = match p.growth_mode {
+        crate::growth::GrowthMode::Parametric => "lower Levels or Branches",
+        crate::growth::GrowthMode::SpaceColonization => {
+            "lower Markers or Extra Markers, raise Internode or Kill Distance"
+        }
+    };
+    let max = p.max_vertices;
     SylvaError::Budget {
         param: "max_vertices".into(),
         message: format!(
             "this tree would need {what}{need} vertices, more than the max_vertices budget of {max}: \
-             lower Levels or Branches, or raise Max Vertices"
+             {lower}, or raise Max Vertices"
         ),
     }
 }
@@ -132,7 +140,7 @@ impl Builder<'_> {
         let lp = &p.level[s.level];
         self.vertex_floor += min_vertices(lp.curve_res);
         if self.vertex_floor > u64::from(p.max_vertices) {
-            return Err(budget_error("at least ", self.vertex_floor, p.max_vertices));
+            return Err(budget_error(p, "at least ", self.vertex_floor));
         }
         let mut rng = s.rng.clone();
         let mut length = s.length;

@@ -257,7 +257,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
         plans.push(plan);
     }
     if vertices > u64::from(p.max_vertices) {
-        return Err(budget_error("", vertices, p.max_vertices));
+        return Err(budget_error(p, "", vertices));
     }
     let mut out = MeshBuilder::with_wind(vertices as usize, (indices + bridges_len) as usize);
     out.begin_group(Material::Bark);
