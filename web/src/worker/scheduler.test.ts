@@ -300,6 +300,7 @@ describe('GenerationScheduler time limit', () => {
     scheduler.request({ seed: 1 });
     vi.advanceTimersByTime(2_500);
     expect(log.errors[0]?.[0].message).toMatch(/longer than 2\.5 s/);
+    expect(log.errors[0]?.[0].message).toMatch(/fewer Levels or Branches/);
     current().ready();
     scheduler.timeLimitMs = 500;
     scheduler.request({ seed: 2 });
@@ -310,6 +311,16 @@ describe('GenerationScheduler time limit', () => {
     expect(() => (scheduler.timeLimitMs = 0)).toThrow(RangeError);
     expect(() => (scheduler.timeLimitMs = Number.NaN)).toThrow(RangeError);
     expect(() => setup({ timeLimitMs: -1 })).toThrow(RangeError);
+  });
+
+  it("a grown tree's timeout advice names growth's parameters", () => {
+    const { scheduler, current, log } = setup();
+    current().ready();
+    scheduler.request({ growth_mode: 1, markers: 50_000 });
+    vi.advanceTimersByTime(DEFAULT_TIME_LIMIT_MS);
+    const message = log.errors[0]?.[0].message ?? '';
+    expect(message).toMatch(/fewer Markers, Extra Markers or Iterations, a longer Internode/);
+    expect(message).not.toMatch(/Levels/);
   });
 
   it('debugHang: a short hang ends with idle, a long one is stopped by the limit', () => {

@@ -46,12 +46,19 @@ export interface SchedulerOptions {
   timeLimitMs?: number;
 }
 
-/** The message shown when a generation ran past the time limit. */
-export function timeoutMessage(limitMs: number): string {
+/**
+ * The message shown when a generation ran past the time limit; the advice names the parameters
+ * that make the tree (growth's for a grown tree, Weber & Penn's otherwise).
+ */
+export function timeoutMessage(limitMs: number, params: Params = {}): string {
   const seconds = Number((limitMs / 1000).toFixed(1));
+  const smaller =
+    params.growth_mode === 1
+      ? 'fewer Markers, Extra Markers or Iterations, a longer Internode'
+      : 'fewer Levels or Branches';
   return (
     `Generation took longer than ${seconds} s and was stopped (the previous tree is kept). ` +
-    'Try a smaller tree (fewer Levels or Branches, lower Mesh Quality).'
+    `Try a smaller tree (${smaller}, lower Mesh Quality).`
   );
 }
 
@@ -247,7 +254,13 @@ export class GenerationScheduler {
     if (slot === null || this.disposed) return;
     this.stopWorker();
     this.callbacks.onError(
-      { kind: 'timeout', message: timeoutMessage(this.inFlightLimitMs) },
+      {
+        kind: 'timeout',
+        message: timeoutMessage(
+          this.inFlightLimitMs,
+          slot.type === 'generate' ? slot.params : undefined,
+        ),
+      },
       slot.type === 'generate' ? slot.id : null,
     );
     this.restart();
