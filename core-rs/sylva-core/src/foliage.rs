@@ -34,7 +34,7 @@ use crate::math;
 use crate::mesh::TreeMesh;
 use crate::params::{registry, TreeParams};
 use crate::rng::Rng;
-use crate::skeleton::{Skeleton, Stem};
+use crate::skeleton::{Skeleton, Stem, StemPoints};
 use glam::Vec3;
 use std::sync::{Arc, Mutex};
 
@@ -179,10 +179,10 @@ fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
         .collect()
 }
 
-/// Per-leaf frame: position, direction (midrib) and front; `angle` is the cosine and sine of
+/// Per-leaf frame: position, direction (midrib) and front (`curve` reads `stem`'s centre curve); `angle` is the cosine and sine of
 /// the Foliage Angle (the same for every leaf, so computed once).
-fn leaf_frame(stem: &Stem, t: f32, k: usize, angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
-    let (pos, tangent) = stem.sample(t);
+fn leaf_frame(stem: &Stem, curve: &mut StemPoints, t: f32, k: usize, angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
+    let (pos, tangent) = curve.sample(t);
     let side0 = math::unit_or(stem.base_normal - tangent * tangent.dot(stem.base_normal), || {
         math::unit_or(tangent.cross(Vec3::Y), || tangent.cross(Vec3::X).normalize())
     });
@@ -230,6 +230,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
     let mut k = 0usize;
     for &(si, t0, t1, count) in &spans {
         let stem = &skeleton.stems[si];
+        let mut curve = stem.points();
         let mut clump_t = 0.0f32;
         for j in 0..count {
             let mut u = (j as f32 + 0.5 + 0.5 * rng.var(0.5)) / count as f32;
@@ -243,7 +244,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
             }
             let u = math::pow(u.clamp(0.0, 1.0), bias);
             let t = t0 + (t1 - t0) * u;
-            let (pos, dir, side) = leaf_frame(stem, t, k, angle);
+            let (pos, dir, side) = leaf_frame(stem, &mut curve, t, k, angle);
             k += 1;
             let dirs: &[Vec3] = if p.foliage_twigs3 {
                 &[

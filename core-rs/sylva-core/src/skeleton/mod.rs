@@ -330,18 +330,19 @@ mod tests {
 
     #[test]
     fn points_are_the_samples_positions_exactly() {
-        // `Stem::point` and `StemPoints::at` (the fork search's cheap readers) must give the very
-        // bits of `Stem::sample`'s position, forward, backward and jumping between segments:
-        // the forks, and so the golden hashes, depend on them.
+        // `Stem::point`, `StemPoints::at` and `StemPoints::sample` (the fork search's and the
+        // foliage's cheap readers) must give the very bits of `Stem::sample`, forward, backward
+        // and jumping between segments: the forks and leaves, so the golden hashes, depend on them.
         let p = crate::presets::find("weeping_willow").unwrap().params().unwrap();
         let sk = build(&p).unwrap();
         for stem in sk.stems.iter().step_by(97) {
             let mut cursor = stem.points();
             for k in (0..=300).chain((0..=300).rev()).chain([0, 300, 7, 290, 150]) {
                 let t = k as f32 / 300.0;
-                let want = stem.sample(t).0;
-                assert_eq!(stem.point(t), want);
-                assert_eq!(cursor.at(t), want);
+                let want = stem.sample(t);
+                assert_eq!(stem.point(t), want.0);
+                assert_eq!(cursor.at(t), want.0);
+                assert_eq!(cursor.sample(t), want);
             }
         }
     }

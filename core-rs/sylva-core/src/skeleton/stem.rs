@@ -122,8 +122,8 @@ impl Stem {
     }
 }
 
-/// [`Stem::point`] with the last segment's cubic kept ([`Stem::points`]): the same points, without
-/// rebuilding the cubic while `t` stays on one segment.
+/// [`Stem::point`] and [`Stem::sample`] with the last segment's cubic kept ([`Stem::points`]):
+/// the same values, without rebuilding the cubic while `t` stays on one segment.
 pub struct StemPoints<'a> {
     stem: &'a Stem,
     /// The segment `segment` is the cubic of.
@@ -134,11 +134,24 @@ pub struct StemPoints<'a> {
 impl StemPoints<'_> {
     /// The centre curve's point at fraction `t`.
     pub fn at(&mut self, t: f32) -> Vec3 {
+        let u = self.locate(t);
+        self.segment.position(u)
+    }
+
+    /// [`Stem::sample`] at fraction `t`: the centre curve's point and unit tangent.
+    pub fn sample(&mut self, t: f32) -> (Vec3, Vec3) {
+        let u = self.locate(t);
+        self.segment.eval(u)
+    }
+
+    /// Makes `segment` the one fraction `t` lies on; returns the local parameter there.
+    #[inline]
+    fn locate(&mut self, t: f32) -> f32 {
         let (i, u) = self.stem.locate(t);
         if self.index != i {
             (self.index, self.segment) = (i, self.stem.segment(i));
         }
-        self.segment.position(u)
+        u
     }
 }
 
