@@ -162,6 +162,10 @@ test('a broken or hostile query shows an error in the frame, as text', async ({ 
   await expect(status).toContainText('Unsupported link version "2"');
   await expect(status).not.toContainText('loaded the defaults');
   await expect(page.locator('body')).toHaveAttribute('data-status', 'error');
+  // The shared status stylesheet: the error covers the frame and takes the pointer here.
+  expect(await status.evaluate((el) => getComputedStyle(el).pointerEvents)).toBe('auto');
+  const frame = await page.getByTestId('embed').boundingBox();
+  expect((await status.boundingBox())?.height).toBe(frame?.height);
 
   await page.goto(
     '/embed.html?v=1&levels=%3Cimg%20src%3Dx%20onerror%3Dwindow.__xss%3D1%3E&bg=%3Cb%3Ebold',
@@ -222,6 +226,9 @@ test('<sylva-tree> renders, regenerates when seed changes, and cleans up', async
   await custom.evaluate((el) => el.setAttribute('preset', 'baobab'));
   await expect(custom).toHaveAttribute('data-status', 'error');
   await expect(custom.getByTestId('embed-status')).toContainText('Unknown preset "baobab"');
+  // The status stylesheet reaches the shadow root: the error covers the element.
+  const cover = await custom.getByTestId('embed-status').boundingBox();
+  expect(cover?.height).toBe(await custom.evaluate((el) => el.clientHeight));
   await custom.evaluate((el) => el.setAttribute('preset', 'fir'));
   await expect(custom).toHaveAttribute('data-status', 'ready');
 

@@ -16,7 +16,8 @@
 import { TreeEmbed, type EmbedState } from '../embed/TreeEmbed';
 import { parseBackground, parseFlag, type Background } from '../embed/options';
 import { resolveTreeAttributes } from './attributes';
-import css from './element.css?inline';
+import elementCss from './element.css?inline';
+import statusCss from '../embed/status.css?inline';
 import { elementWorkerFactory } from './workerFactory';
 
 const TREE_ATTRIBUTES = ['preset', 'seed', 'params'] as const;
@@ -27,7 +28,7 @@ let sheet: CSSStyleSheet | null = null;
 function styleSheet(): CSSStyleSheet {
   if (!sheet) {
     sheet = new CSSStyleSheet();
-    sheet.replaceSync(css);
+    sheet.replaceSync(elementCss + statusCss);
   }
   return sheet;
 }

@@ -6,6 +6,7 @@ import { createModuleWorker } from '../createWorker';
 import { decodeQuery, decodeVolumes, VOLUMES_KEY } from '../url/codec';
 import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
 import { TreeEmbed, type EmbedState } from './TreeEmbed';
+import './status.css';
 import './embed.css';
 
 /** What tests and the console can read of the embed page. */
