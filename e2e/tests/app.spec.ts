@@ -205,3 +205,35 @@ test('picking a preset writes its values into the URL', async ({ page }) => {
   await expect.poll(() => new URL(page.url()).searchParams.get('shape')).toBe('5');
   expect(new URL(page.url()).searchParams.get('l1_branches')).toBe('140');
 });
+
+test('the stats, the toolbar and the wind card never cover each other, wide or narrow', async ({
+  page,
+}) => {
+  // They share the stage's top: side by side on a wide stage, wrapped into rows on a narrow one
+  // (they overlapped below a stage of about 780 px).
+  const errors = watchErrors(page);
+  await page.goto('/');
+  await waitForTree(page);
+  for (const width of [1440, 1100, 900, 700, 400]) {
+    await page.setViewportSize({ width, height: 800 });
+    await expect(page.getByTestId('copy-embed')).toBeVisible();
+    const boxes = await Promise.all(
+      ['.stats', '.toolbar', '.wind-controls'].map(async (s) => {
+        const box = await page.locator(s).boundingBox();
+        if (!box) throw new Error(`${s} is not laid out at ${width} px`);
+        return { s, ...box };
+      }),
+    );
+    for (const [i, a] of boxes.entries()) {
+      for (const b of boxes.slice(i + 1)) {
+        const apart =
+          a.x + a.width <= b.x ||
+          b.x + b.width <= a.x ||
+          a.y + a.height <= b.y ||
+          b.y + b.height <= a.y;
+        expect(apart, `${a.s} and ${b.s} overlap at ${width} px`).toBe(true);
+      }
+    }
+  }
+  expect(errors).toEqual([]);
+});

@@ -188,18 +188,21 @@ export function App() {
           volumesRef={growthVolumesRef}
           info={info}
         />
-        <StatsOverlay stats={generator.stats} busy={generator.busy} />
-        <WindControls viewerRef={viewerRef} />
-        {info && params ? (
-          <Toolbar
-            registry={registry}
-            params={params}
-            presetName={activePreset}
-            viewerRef={viewerRef}
-            volumesRef={growthVolumesRef}
-            onLoadParams={(next) => apply(next, null, true)}
-          />
-        ) : null}
+        {/* Stats, toolbar and wind in one row that wraps on a narrow stage: never on top of each other. */}
+        <div className="stage-top">
+          <StatsOverlay stats={generator.stats} busy={generator.busy} />
+          {info && params ? (
+            <Toolbar
+              registry={registry}
+              params={params}
+              presetName={activePreset}
+              viewerRef={viewerRef}
+              volumesRef={growthVolumesRef}
+              onLoadParams={(next) => apply(next, null, true)}
+            />
+          ) : null}
+          <WindControls viewerRef={viewerRef} />
+        </div>
         <GrowthProgress progress={generator.progress} onCancel={() => generator.cancel()} />
         <ErrorBanner
           error={generator.error}
