@@ -146,3 +146,25 @@ test('Copy embed code and the docs link', async ({ page, context, baseURL }) => 
   await page.keyboard.press('Escape');
   await expect(dialog).toHaveCount(0);
 });
+
+test('the Export menu closes on Escape and on a press outside it', async ({ page }) => {
+  const errors = watchErrors(page);
+  await page.goto('/');
+  await waitForTree(page);
+  const menu = page.locator('details.toolbar-menu');
+  const summary = page.getByTestId('export-menu');
+  await summary.click();
+  await expect(menu).toHaveAttribute('open', '');
+  await page.keyboard.press('Escape');
+  await expect(menu).not.toHaveAttribute('open', '');
+  await expect(summary).toBeFocused();
+  await summary.click();
+  await expect(page.getByTestId('export-png')).toBeVisible();
+  // A press on the tree (the canvas) closes it; one inside the menu does not.
+  await page.getByTestId('export-png').hover();
+  await page.locator('.toolbar-items').dispatchEvent('pointerdown');
+  await expect(menu).toHaveAttribute('open', '');
+  await page.mouse.click(60, 400);
+  await expect(menu).not.toHaveAttribute('open', '');
+  expect(errors).toEqual([]);
+});

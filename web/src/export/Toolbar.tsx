@@ -6,6 +6,7 @@ import { useCallback, useEffect, useRef, useState, type RefObject } from 'react'
 import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
 import { createModuleWorker } from '../createWorker';
 import { EmbedDialog } from '../embed/EmbedDialog';
+import { useDismiss } from '../ui/useDismiss';
 import { encodeVolumes } from '../url/codec';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { canvasPng, downloadBlob, readTextFile } from './download';
@@ -71,6 +72,9 @@ export function Toolbar(props: Props) {
       .formats()
       .then(setFormats, () => setFormats([]));
   };
+
+  // Escape or a press outside closes the menu.
+  useDismiss(menuRef);
 
   const screenshot = () => {
     closeMenu();
