@@ -138,12 +138,11 @@ impl Data<'_> {
         self.items() * (a + b)
     }
 
-    /// Writes the little-endian bytes of items `items` into `out`, one slice per plane
-    /// ([`Data::widths`]: `items.len() × width` bytes each). Any split of the items into
-    /// ranges writes the same bytes.
-    pub(super) fn write(&self, items: Range<usize>, out: [&mut [u8]; 2]) {
+    /// Writes the little-endian bytes of items `r` into `out`, one slice per plane
+    /// ([`Data::widths`]: `r.len() × width` bytes each). Any split of the items into ranges
+    /// writes the same bytes.
+    pub(super) fn write(&self, r: Range<usize>, out: [&mut [u8]; 2]) {
         let [out, second] = out;
-        let r = items.clone();
         match *self {
             Data::F32(s) => copy_words(out, &s[r], f32::to_le_bytes),
             Data::U32(s) => copy_words(out, &s[r], u32::to_le_bytes),
