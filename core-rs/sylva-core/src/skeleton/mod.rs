@@ -12,14 +12,13 @@ mod stem;
 mod trace;
 mod trunk;
 
-use crate::math::HwSqrt;
 pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
 
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
-use crate::math::{pow, rad, unit_or};
+use crate::math::{pow, rad, unit_or, HwSqrt};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::{Quat, Vec3};

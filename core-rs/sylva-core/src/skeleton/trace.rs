@@ -2,8 +2,7 @@
 //! AttractionUp, segment and base splits into clones, and the pruning envelope test.
 
 use super::StemStart;
-use crate::math::HwSqrt;
-use crate::math::{acos, rad, PI, TAU};
+use crate::math::{acos, rad, HwSqrt, PI, TAU};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::{Quat, Vec3};

@@ -4,8 +4,7 @@
 //! ([`weld`]: the parent gets extra rings across each footprint, the child starts at its junction
 //! ring).
 
-use crate::math::rad;
-use crate::math::{normalize_or_hw, HwSqrt};
+use crate::math::{normalize_or_hw, rad, HwSqrt};
 use crate::mesh::weld;
 use crate::skeleton::Stem;
 use glam::Vec3;

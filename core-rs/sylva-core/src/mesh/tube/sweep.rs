@@ -8,8 +8,7 @@
 //! claimed ones) and fans.
 
 use super::{Base, Frame, StemMesh, PENDING_CAP};
-use crate::math::HwSqrt;
-use crate::math::{cos, sin, unit_or, TAU};
+use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{MeshBuilder, WIND_STRIDE};
 use crate::params::TreeParams;

@@ -10,8 +10,7 @@
 
 use super::zip::zip_hole;
 use super::{asin, Junction, REACH};
-use crate::math::HwSqrt;
-use crate::math::{atan2, unit_or, TAU};
+use crate::math::{atan2, unit_or, HwSqrt, TAU};
 use crate::mesh::tube::{Frame, StemMesh, StemWind};
 use crate::mesh::{MeshBuilder, WIND_STRIDE};
 use crate::skeleton::Stem;
