@@ -199,27 +199,27 @@ fn push_matrix(out: &mut Vec<f32>, pos: Vec3, dir: Vec3, front: Vec3, len: f32, 
     out.extend_from_slice(&[x.x, x.y, x.z, 0.0, y.x, y.y, y.z, 0.0, z.x, z.y, z.z, 0.0, pos.x, pos.y, pos.z, 1.0]);
 }
 
-/// Places the leaves on `skeleton`.
+/// Places the leaves on `skeleton` and dresses them with the leaf ([`place`] then [`dress`]).
 pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
+    let mut foliage = place(skeleton, p)?;
+    dress(&mut foliage, p)?;
+    Ok(foliage)
+}
+
+/// The foliage stage: where the leaves sit (per-leaf matrices and tints), without the leaf
+/// itself (`mesh` empty, `leaf` none until [`dress`]). Reads the skeleton and the Foliage
+/// parameters; the leaf-shape parameters never change a placement.
+pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
     let spans = spans(skeleton, p);
     let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
     let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
     if need > u64::from(p.max_leaves) {
         return Err(budget_error(need, p.max_leaves));
     }
+    let bare = Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None };
     if need == 0 {
-        return Ok(Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None });
+        return Ok(bare);
     }
-    let leaf = cached_leaf(p)?;
-    let mesh = match p.foliage_lod {
-        LeafLod::Blade => leaf.mesh.clone(),
-        LeafLod::Billboards => leaf.lod.billboards.clone(),
-        LeafLod::Card => leaf.lod.card.clone(),
-        LeafLod::Auto => {
-            let fits = |m: &TreeMesh| (m.triangle_count() as u64) * need <= AUTO_TRIANGLES;
-            [&leaf.mesh, &leaf.lod.billboards].into_iter().find(|m| fits(m)).unwrap_or(&leaf.lod.card).clone()
-        }
-    };
     let mut rng = Rng::new(u64::from(p.seed), "foliage");
     let need_n = need as usize;
     let mut matrices = Vec::with_capacity(need_n * 16);
@@ -268,5 +268,34 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
             }
         }
     }
-    Ok(Foliage { mesh, matrices, colors, leaf: Some(leaf) })
+    Ok(Foliage { matrices, colors, ..bare })
+}
+
+/// The leaf stage: the leaf of the Leaf parameters (generated once per leaf shape, see
+/// [`cached_leaf`]) and the mesh drawn for every placed leaf, by **Leaf Mesh** (Auto: the
+/// finest whose triangles times the leaf count stay within [`AUTO_TRIANGLES`]). A bare tree
+/// stays bare.
+pub fn dress(foliage: &mut Foliage, p: &TreeParams) -> Result<(), SylvaError> {
+    (foliage.mesh, foliage.leaf) = leaf_mesh(foliage.count(), p)?;
+    Ok(())
+}
+
+/// The mesh drawn per leaf for `count` leaves and the leaf it comes from (empty and none for
+/// no leaves); see [`dress`].
+pub fn leaf_mesh(count: usize, p: &TreeParams) -> Result<(TreeMesh, Option<Arc<Leaf>>), SylvaError> {
+    let need = count as u64;
+    if need == 0 {
+        return Ok((TreeMesh::default(), None));
+    }
+    let leaf = cached_leaf(p)?;
+    let mesh = match p.foliage_lod {
+        LeafLod::Blade => leaf.mesh.clone(),
+        LeafLod::Billboards => leaf.lod.billboards.clone(),
+        LeafLod::Card => leaf.lod.card.clone(),
+        LeafLod::Auto => {
+            let fits = |m: &TreeMesh| (m.triangle_count() as u64) * need <= AUTO_TRIANGLES;
+            [&leaf.mesh, &leaf.lod.billboards].into_iter().find(|m| fits(m)).unwrap_or(&leaf.lod.card).clone()
+        }
+    };
+    Ok((mesh, Some(leaf)))
 }

@@ -4,7 +4,11 @@
 //!
 //! ```text
 //! TreeParams --validate--> skeleton::build --> mesh::tube::build --> mesh::holes::cut --> TreeMesh (+ hash, stats)
+//!                                  \-----> foliage::place --> foliage::dress --> Foliage
 //! ```
+//!
+//! [`session::Session`] keeps each stage's last result and reruns only from the first stage an
+//! edit touches (the registry's [`params::Stage`]); [`generate`] is a cold session.
 //!
 //! * [`params`]: the parameter registry, the single source of truth for the UI, URLs and docs.
 //! * [`rng`]: one portable PRNG with a named stream per stage.
@@ -31,6 +35,7 @@ pub mod param_enum;
 pub mod params;
 pub mod presets;
 pub mod rng;
+pub mod session;
 pub mod skeleton;
 
 pub use clock::Clock;
@@ -95,25 +100,39 @@ impl Generated {
 
     /// Everything but the buffers as a JSON object (what `meta_json()` returns in wasm).
     pub fn meta_json(&self) -> String {
+        let mut meta =
+            tree_meta(&self.mesh, &self.foliage, &self.bounds, &self.envelope, self.stats.stems, self.stats.holes);
+        meta["hash"] = serde_json::json!(self.hash_hex());
         let stage_ms: serde_json::Map<String, serde_json::Value> =
             self.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
-        serde_json::json!({
-            "vertices": self.stats.vertices,
-            "triangles": self.stats.triangles,
-            "stems": self.stats.stems,
-            "holes": self.stats.holes,
-            "hash": self.hash_hex(),
-            "bounds": self.bounds,
-            "groups": self.mesh.groups,
-            "stage_ms": stage_ms,
-            "total_ms": self.stats.total_ms,
-            "envelope": self.envelope,
-            "leaves": self.foliage.count(),
-            "leaf_hash": format!("{:016x}", self.foliage.leaf_hash()),
-            "leaf_texture": self.foliage.texture().map(|t| [t.width, t.height]),
-        })
-        .to_string()
+        meta["stage_ms"] = serde_json::Value::Object(stage_ms);
+        meta["total_ms"] = serde_json::json!(self.stats.total_ms);
+        meta.to_string()
     }
+}
+
+/// The meta object shared by [`Generated::meta_json`] and the session's: counts, bounds,
+/// material groups, envelope and leaf facts (no hash, no timings).
+pub(crate) fn tree_meta(
+    mesh: &TreeMesh,
+    foliage: &foliage::Foliage,
+    bounds: &Bounds,
+    envelope: &[[f32; 2]],
+    stems: usize,
+    holes: usize,
+) -> serde_json::Value {
+    serde_json::json!({
+        "vertices": mesh.vertex_count(),
+        "triangles": mesh.triangle_count(),
+        "stems": stems,
+        "holes": holes,
+        "bounds": bounds,
+        "groups": mesh.groups,
+        "envelope": envelope,
+        "leaves": foliage.count(),
+        "leaf_hash": format!("{:016x}", foliage.leaf_hash()),
+        "leaf_texture": foliage.texture().map(|t| [t.width, t.height]),
+    })
 }
 
 /// Number of heights in the envelope preview profile.
@@ -136,35 +155,7 @@ pub fn generate_with_progress(
     clock: &dyn Clock,
     progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<Generated, SylvaError> {
-    params.validate()?;
-    let t0 = clock.now_ms();
-    let (skeleton, markers) = match params.growth_mode {
-        growth::GrowthMode::Parametric => (skeleton::build(params)?, Vec::new()),
-        growth::GrowthMode::SpaceColonization => {
-            let grown = growth::grow_with_progress(params, progress)?;
-            (growth::skeleton(params, &grown), grown.markers)
-        }
-    };
-    let t1 = clock.now_ms();
-    let built = mesh::tube::build_with_stats(&skeleton, params)?;
-    let (mut mesh, welds) = (built.mesh, built.welds);
-    let cut = mesh::holes::cut(&mut mesh, &built.blocks, &skeleton, params);
-    let holes = cut.len();
-    let t2 = clock.now_ms();
-    let foliage = foliage::build(&skeleton, params)?;
-    let t_leaves = clock.now_ms();
-    let hash = foliage.hash_into(mesh.content_hash());
-    let bounds = mesh.bounds();
-    let t3 = clock.now_ms();
-    let stats = Stats {
-        vertices: mesh.vertex_count(),
-        triangles: mesh.triangle_count(),
-        stems: skeleton.stems.len(),
-        holes,
-        welds,
-        stage_ms: vec![("skeleton", t1 - t0), ("mesh", t2 - t1), ("foliage", t_leaves - t2), ("hash", t3 - t_leaves)],
-        total_ms: t3 - t0,
-    };
-    let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
-    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers, foliage, holes: cut })
+    let mut session = session::Session::new();
+    session.update(params, session::Quality::Full, clock, progress)?;
+    Ok(session.into_generated(clock).expect("a full update gives a full tree"))
 }

@@ -18,6 +18,24 @@ pub enum ParamKind {
     Enum,
 }
 
+/// The pipeline stages, in order: the first one a parameter affects is declared in the registry
+/// ([`ParamSpec::stage`]). An edit reruns that stage and every later one and reuses the results of
+/// the earlier ones ([`crate::session::Session`]); a `Viewer` parameter regenerates nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Stage {
+    /// The stems: Weber & Penn's skeleton or space-colonization growth (and the crown envelope).
+    Skeleton,
+    /// The bark surface swept, welded and cut from the skeleton.
+    Mesh,
+    /// Where the leaves sit: per-leaf matrices and tints.
+    Foliage,
+    /// The leaf itself: outline, veins, surface, texture and the leaf mesh drawn per leaf.
+    Leaf,
+    /// Nothing is regenerated: the viewer only shows or hides something.
+    Viewer,
+}
+
 /// One parameter's description, as exported to JS (`registry_json`) and `sylva params`.
 #[derive(Clone, Debug, Serialize)]
 pub struct ParamSpec {
@@ -44,6 +62,8 @@ pub struct ParamSpec {
     /// Option labels for enums (value = index).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub options: Option<Vec<String>>,
+    /// The first pipeline stage the parameter affects.
+    pub stage: Stage,
 }
 
 impl ParamSpec {

@@ -1,0 +1,401 @@
+//! # Session: staged, incremental regeneration
+//!
+//! A [`Session`] keeps the last result of every pipeline [`Stage`] and reruns only from the
+//! first stage an edit touches (the registry declares it per parameter, [`crate::params::ParamSpec::stage`]):
+//!
+//! | stage      | what it makes                                   | reused by a later-stage edit |
+//! |------------|-------------------------------------------------|------------------------------|
+//! | `skeleton` | stems (Weber & Penn or growth), crown envelope  | mesh, foliage, leaf edits    |
+//! | `mesh`     | the bark: swept, welded, holes cut              | foliage, leaf edits          |
+//! | `foliage`  | leaf placements (matrices, tints)               | leaf edits                   |
+//! | `leaf`     | the leaf and the mesh drawn per leaf            | —                            |
+//! | `viewer`   | nothing                                         | everything                   |
+//!
+//! Stages run in that order and each reads only parameters of its own or an earlier stage, so a
+//! rerun from stage S gives the same bytes as a cold generation (tested for every parameter in
+//! `tests/incremental.rs`).
+//!
+//! **Preview.** While a slider is dragged the caller may allow a [`Quality::Preview`]: when the
+//! bark would take longer than the budget (judged by the last full run), the bark is swept at a
+//! lower Mesh Quality without welds or holes and marked as a preview; the skeleton, placements
+//! and leaf are always full and cached. The next [`Quality::Full`] update with the same
+//! parameters sweeps the full bark and nothing else.
+//!
+//! **Hash.** The content hash ([`Session::hash`]) is computed on demand, after the buffers went
+//! out, and only describes a full result.
+
+use crate::clock::Clock;
+use crate::error::SylvaError;
+use crate::foliage::{self, Foliage};
+use crate::mesh::holes::Hole;
+use crate::mesh::tube::WeldStats;
+use crate::mesh::{self, Bounds, TreeMesh};
+use crate::params::{registry, Stage, TreeParams};
+use crate::skeleton::Skeleton;
+use crate::{crown, growth, skeleton, Generated, Stats, ENVELOPE_SAMPLES};
+
+/// Mesh Quality factor of a preview bark (never below the parameter's minimum).
+pub const PREVIEW_QUALITY: f32 = 0.5;
+
+/// How good the answer to an update must be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Quality {
+    /// The full tree, byte-identical to [`crate::generate`].
+    Full,
+    /// A preview bark is allowed when the full bark is predicted to take longer than
+    /// `budget_ms` (from the last full sweep's time).
+    Preview {
+        /// Longest the bark may take before a preview is drawn instead (ms).
+        budget_ms: f64,
+    },
+}
+
+/// What an update changed, relative to the previous successful update of the session.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Changes {
+    /// The stems (and envelope, markers) were rebuilt.
+    pub skeleton: bool,
+    /// The bark buffers differ.
+    pub bark: bool,
+    /// The leaf matrices or tints differ.
+    pub placements: bool,
+    /// The leaf mesh drawn per leaf differs.
+    pub leaf_mesh: bool,
+    /// The leaf shape (texture) differs.
+    pub leaf: bool,
+}
+
+impl Changes {
+    /// Whether anything at all changed.
+    pub fn any(&self) -> bool {
+        self.skeleton || self.bark || self.placements || self.leaf_mesh || self.leaf
+    }
+}
+
+/// The stems and what the viewer draws of them.
+#[derive(Clone, Debug)]
+pub struct SkeletonOut {
+    /// The stems.
+    pub skeleton: Skeleton,
+    /// Growth mode: the markers sampled at the start.
+    pub markers: Vec<glam::Vec3>,
+    /// Crown envelope profile ([`crown::preview_profile`]).
+    pub envelope: Vec<[f32; 2]>,
+}
+
+/// The bark of the current tree.
+#[derive(Clone, Debug)]
+pub struct Bark {
+    /// The buffers.
+    pub mesh: TreeMesh,
+    /// Weld counts.
+    pub welds: WeldStats,
+    /// Holes cut.
+    pub holes: Vec<Hole>,
+    /// Bounds of `mesh`.
+    pub bounds: Bounds,
+    /// A preview sweep (lower quality, no welds, no holes), not the full bark.
+    pub preview: bool,
+    /// `mesh.content_hash()`, once computed.
+    hash: Option<u64>,
+}
+
+/// Milliseconds of the stages the last update ran (0 for the reused ones).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct StageTimes {
+    /// Skeleton (or growth).
+    pub skeleton: f64,
+    /// Bark sweep, welds, holes.
+    pub mesh: f64,
+    /// Leaf placements plus the leaf (the `foliage` figure of [`Stats`]).
+    pub foliage: f64,
+}
+
+/// The current tree of a session.
+#[derive(Clone, Debug)]
+pub struct Current {
+    /// The parameters of the last update.
+    pub params: TreeParams,
+    /// Stems, markers, envelope.
+    pub skeleton: SkeletonOut,
+    /// The bark.
+    pub bark: Bark,
+    /// The leaves.
+    pub foliage: Foliage,
+    /// What the last update changed.
+    pub changes: Changes,
+    /// Stage times of the last update.
+    pub times: StageTimes,
+    /// The first stage the last update reran (`Viewer`: none).
+    pub from: Stage,
+}
+
+impl Current {
+    /// Whether the bark is a preview.
+    pub fn is_preview(&self) -> bool {
+        self.bark.preview
+    }
+
+    /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
+    /// hash ([`Session::hash`] comes after the buffers), the stage times of this update, and
+    /// `preview`, `from` (the first stage rerun) and `changes` (which buffers differ from the
+    /// previous update's).
+    pub fn meta_json(&self) -> String {
+        let b = &self.bark;
+        let stems = self.skeleton.skeleton.stems.len();
+        let mut meta =
+            crate::tree_meta(&b.mesh, &self.foliage, &b.bounds, &self.skeleton.envelope, stems, b.holes.len());
+        let t = self.times;
+        let c = self.changes;
+        meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });
+        meta["total_ms"] = serde_json::json!(t.skeleton + t.mesh + t.foliage);
+        meta["preview"] = serde_json::json!(b.preview);
+        meta["from"] = serde_json::json!(self.from);
+        meta["changes"] = serde_json::json!({
+            "skeleton": c.skeleton, "bark": c.bark, "placements": c.placements, "leaf_mesh": c.leaf_mesh, "leaf": c.leaf,
+        });
+        meta.to_string()
+    }
+}
+
+/// The stages an update ran; `None` = reuse the previous result.
+struct Fresh {
+    params: TreeParams,
+    skeleton: Option<SkeletonOut>,
+    bark: Option<Bark>,
+    placements: Option<Foliage>,
+    leaf: Option<LeafMesh>,
+    changes: Changes,
+    times: StageTimes,
+    from: Stage,
+}
+
+type LeafMesh = (TreeMesh, Option<std::sync::Arc<crate::leaf::Leaf>>);
+
+impl Fresh {
+    /// The new current tree: fresh stages, the rest moved (not copied) out of `prev`.
+    fn assemble(self, prev: Option<Current>) -> Current {
+        let (skeleton, bark, foliage) = match prev {
+            Some(c) => (self.skeleton.unwrap_or(c.skeleton), self.bark.unwrap_or(c.bark), {
+                let mut f = self.placements.unwrap_or(c.foliage);
+                if let Some((mesh, leaf)) = self.leaf {
+                    (f.mesh, f.leaf) = (mesh, leaf);
+                }
+                f
+            }),
+            None => {
+                let mut f = self.placements.expect("a first update places the leaves");
+                (f.mesh, f.leaf) = self.leaf.expect("a first update dresses the leaves");
+                (
+                    self.skeleton.expect("a first update builds the skeleton"),
+                    self.bark.expect("a first update sweeps the bark"),
+                    f,
+                )
+            }
+        };
+        Current {
+            params: self.params,
+            skeleton,
+            bark,
+            foliage,
+            changes: self.changes,
+            times: self.times,
+            from: self.from,
+        }
+    }
+}
+
+/// Incremental generator state: the last result of every stage. See the module docs.
+#[derive(Debug, Default)]
+pub struct Session {
+    current: Option<Current>,
+    /// Time of the last full bark sweep (ms), the predictor of the next one.
+    last_full_mesh_ms: Option<f64>,
+}
+
+/// The first stage whose parameters differ between `a` and `b` (`Viewer` when only viewer
+/// parameters differ or none do). Volumes belong to the skeleton (growth).
+pub fn first_stage(a: &TreeParams, b: &TreeParams) -> Stage {
+    if a.volumes != b.volumes {
+        return Stage::Skeleton;
+    }
+    let mut first = Stage::Viewer;
+    for spec in registry() {
+        if spec.stage < first {
+            let (x, y) = (a.get(&spec.id), b.get(&spec.id));
+            if x.map(f64::to_bits) != y.map(f64::to_bits) {
+                first = spec.stage;
+            }
+        }
+    }
+    first
+}
+
+impl Session {
+    /// An empty session: the first update generates cold.
+    pub fn new() -> Session {
+        Session::default()
+    }
+
+    /// The current tree, if an update succeeded.
+    pub fn current(&self) -> Option<&Current> {
+        self.current.as_ref()
+    }
+
+    /// Forgets every cached stage (the next update generates cold).
+    pub fn clear(&mut self) {
+        self.current = None;
+        self.last_full_mesh_ms = None;
+    }
+
+    /// Brings the tree to `params`, rerunning from the first stage that changed. On an error
+    /// the previous tree stays current, unchanged.
+    pub fn update(
+        &mut self,
+        params: &TreeParams,
+        quality: Quality,
+        clock: &dyn Clock,
+        progress: Option<&mut dyn FnMut(f32)>,
+    ) -> Result<&Current, SylvaError> {
+        params.validate()?;
+        let prev = self.current.take();
+        match self.compute(prev.as_ref(), params, quality, clock, progress) {
+            Ok(fresh) => self.current = Some(fresh.assemble(prev)),
+            Err(e) => {
+                self.current = prev;
+                return Err(e);
+            }
+        }
+        Ok(self.current.as_ref().expect("just set"))
+    }
+
+    /// Runs the stages `p` needs on top of `prev`, borrowing what it reuses.
+    fn compute(
+        &mut self,
+        prev: Option<&Current>,
+        p: &TreeParams,
+        quality: Quality,
+        clock: &dyn Clock,
+        progress: Option<&mut dyn FnMut(f32)>,
+    ) -> Result<Fresh, SylvaError> {
+        let from = prev.map_or(Stage::Skeleton, |c| first_stage(&c.params, p));
+        let want_preview = match quality {
+            Quality::Full => false,
+            Quality::Preview { budget_ms } => self.last_full_mesh_ms.is_some_and(|ms| ms > budget_ms),
+        };
+        let mut times = StageTimes::default();
+
+        let t0 = clock.now_ms();
+        let skeleton = (from <= Stage::Skeleton).then(|| build_skeleton(p, progress)).transpose()?;
+        let skel = skeleton.as_ref().or(prev.map(|c| &c.skeleton)).expect("a first update builds the skeleton");
+        let t1 = clock.now_ms();
+        times.skeleton = t1 - t0;
+
+        // The bark is swept again when its inputs changed, or when the bark shown is a preview
+        // and a full answer is wanted.
+        let bark_stale = from <= Stage::Mesh || prev.is_some_and(|c| c.bark.preview && !want_preview);
+        let bark = match (bark_stale, want_preview) {
+            (false, _) => None,
+            (true, true) => Some(preview_bark(&skel.skeleton, p)?),
+            (true, false) => Some(full_bark(&skel.skeleton, p)?),
+        };
+        let t2 = clock.now_ms();
+        times.mesh = t2 - t1;
+        if bark.as_ref().is_some_and(|b| !b.preview) {
+            self.last_full_mesh_ms = Some(times.mesh);
+        }
+
+        let placements = (from <= Stage::Foliage).then(|| foliage::place(&skel.skeleton, p)).transpose()?;
+        let count = placements.as_ref().or(prev.map(|c| &c.foliage)).map_or(0, Foliage::count);
+        let leaf = (from <= Stage::Leaf).then(|| foliage::leaf_mesh(count, p)).transpose()?;
+        times.foliage = clock.now_ms() - t2;
+
+        let changes = match prev {
+            None => Changes { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true },
+            Some(c) => Changes {
+                skeleton: skeleton.is_some(),
+                bark: bark.is_some(),
+                placements: placements
+                    .as_ref()
+                    .is_some_and(|f| f.matrices != c.foliage.matrices || f.colors != c.foliage.colors),
+                leaf_mesh: leaf.as_ref().is_some_and(|(m, _)| *m != c.foliage.mesh),
+                leaf: leaf.as_ref().is_some_and(|(_, l)| l.as_ref().map_or(0, |l| l.hash) != c.foliage.leaf_hash()),
+            },
+        };
+        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, changes, times, from })
+    }
+
+    /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),
+    /// computed once per bark and cheap for leaf-only edits. `None` before the first update or
+    /// while the bark is a preview.
+    pub fn hash(&mut self) -> Option<u64> {
+        let c = self.current.as_mut()?;
+        if c.bark.preview {
+            return None;
+        }
+        let bark = *c.bark.hash.get_or_insert_with(|| c.bark.mesh.content_hash());
+        Some(c.foliage.hash_into(bark))
+    }
+
+    /// Moves the current full tree out as a [`Generated`] without copying its buffers.
+    pub fn into_generated(mut self, clock: &dyn Clock) -> Option<Generated> {
+        let t0 = clock.now_ms();
+        let hash = self.hash()?;
+        let hash_ms = clock.now_ms() - t0;
+        let c = self.current?;
+        let t = c.times;
+        let stats = Stats {
+            vertices: c.bark.mesh.vertex_count(),
+            triangles: c.bark.mesh.triangle_count(),
+            stems: c.skeleton.skeleton.stems.len(),
+            holes: c.bark.holes.len(),
+            welds: c.bark.welds,
+            stage_ms: vec![("skeleton", t.skeleton), ("mesh", t.mesh), ("foliage", t.foliage), ("hash", hash_ms)],
+            total_ms: t.skeleton + t.mesh + t.foliage + hash_ms,
+        };
+        Some(Generated {
+            mesh: c.bark.mesh,
+            skeleton: c.skeleton.skeleton,
+            bounds: c.bark.bounds,
+            hash,
+            stats,
+            envelope: c.skeleton.envelope,
+            markers: c.skeleton.markers,
+            foliage: c.foliage,
+            holes: c.bark.holes,
+        })
+    }
+}
+
+/// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
+fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {
+    let (skeleton, markers) = match p.growth_mode {
+        growth::GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
+        growth::GrowthMode::SpaceColonization => {
+            let grown = growth::grow_with_progress(p, progress)?;
+            (growth::skeleton(p, &grown), grown.markers)
+        }
+    };
+    let envelope = crown::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
+    Ok(SkeletonOut { skeleton, markers, envelope })
+}
+
+/// The mesh stage at full quality: sweep and weld, then cut the holes.
+fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+    let built = mesh::tube::build_with_stats(skeleton, p)?;
+    let mut mesh = built.mesh;
+    let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
+    let bounds = mesh.bounds();
+    Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, hash: None })
+}
+
+/// A preview bark: [`PREVIEW_QUALITY`] times the Mesh Quality, separate tubes, no holes.
+fn preview_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+    let mut q = p.clone();
+    q.mesh_quality = (p.mesh_quality * PREVIEW_QUALITY).max(0.25);
+    q.weld = false;
+    q.hole_count = 0;
+    let mut bark = full_bark(skeleton, &q)?;
+    bark.preview = true;
+    Ok(bark)
+}

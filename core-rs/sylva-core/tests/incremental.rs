@@ -1,0 +1,187 @@
+//! Incremental regeneration (`session`): an edit applied to a session gives the same bytes as a
+//! cold generation of the same parameters, for every parameter of the registry; only the stages
+//! from the edited parameter's declared stage on rerun; previews never leak into a full result.
+
+use sylva_core::clock::NoClock;
+use sylva_core::params::{registry, ParamKind, ParamSpec, Stage};
+use sylva_core::session::{first_stage, Quality, Session};
+use sylva_core::{generate, TreeParams};
+
+/// A valid value of `spec` different from `v` (a small step up, or down at the top).
+fn edited(spec: &ParamSpec, v: f64) -> f64 {
+    match spec.kind {
+        ParamKind::Bool => 1.0 - v,
+        ParamKind::Enum => (v + 1.0) % (spec.max + 1.0),
+        ParamKind::Int => {
+            if v + 1.0 <= spec.max {
+                v + 1.0
+            } else {
+                v - 1.0
+            }
+        }
+        ParamKind::Float => {
+            let d = ((spec.max - spec.min) * 0.05).max(spec.step);
+            let up = v + d;
+            let w = if up <= spec.max { up } else { v - d };
+            f64::from(w.clamp(spec.min, spec.max) as f32)
+        }
+    }
+}
+
+/// Bases whose every parameter matters somewhere: Weber & Penn with holes and roots, and a
+/// small grown tree.
+fn bases() -> Vec<(&'static str, TreeParams)> {
+    let wp = TreeParams::from_values([("hole_count", 2.0), ("root_count", 3.0), ("l2_branches", 12.0)]).unwrap();
+    let grown = TreeParams::from_values([("growth_mode", 1.0), ("markers", 400.0), ("iterations", 120.0)]).unwrap();
+    vec![("weber_penn", wp), ("grown", grown)]
+}
+
+fn cold_hash(p: &TreeParams) -> Result<u64, String> {
+    generate(p).map(|g| g.hash).map_err(|e| e.to_string())
+}
+
+#[test]
+fn every_parameter_edited_incrementally_gives_the_cold_bytes() {
+    for (name, base) in bases() {
+        let mut session = Session::new();
+        session.update(&base, Quality::Full, &NoClock, None).unwrap();
+        assert_eq!(session.hash(), Some(cold_hash(&base).unwrap()), "{name}: base");
+        for spec in registry() {
+            let old = base.get(&spec.id).unwrap();
+            let new = edited(spec, old);
+            let mut p = base.clone();
+            p.set(&spec.id, new).unwrap();
+            let cold = cold_hash(&p);
+            let warm = session.update(&p, Quality::Full, &NoClock, None).map(|c| c.from);
+            match (&cold, warm) {
+                (Ok(h), Ok(from)) => {
+                    assert_eq!(from, spec.stage, "{name}: {} reran from the wrong stage", spec.id);
+                    assert_eq!(session.hash(), Some(*h), "{name}: {} {old} -> {new}", spec.id);
+                }
+                (Err(c), Err(w)) => assert_eq!(*c, w.to_string(), "{name}: {}", spec.id),
+                (c, w) => panic!("{name}: {} {old} -> {new}: cold {c:?}, incremental {w:?}", spec.id),
+            }
+            // Back to the base: the session must be able to return as well.
+            session.update(&base, Quality::Full, &NoClock, None).unwrap();
+            assert_eq!(session.hash(), Some(cold_hash(&base).unwrap()), "{name}: back from {}", spec.id);
+        }
+    }
+}
+
+#[test]
+fn a_chain_of_edits_across_stages_stays_equal_to_cold() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    let edits: &[(&str, f64)] = &[
+        ("foliage_angle", 30.0),
+        ("leaf_teeth", 20.0),
+        ("l1_length", 0.35),
+        ("mesh_quality", 0.8),
+        ("leaves", 12.0),
+        ("leaf_margin", 2.0),
+        ("show_preview", 1.0),
+        ("seed", 9.0),
+        ("foliage_lod", 3.0),
+    ];
+    for &(id, v) in edits {
+        p.set(id, v).unwrap();
+        session.update(&p, Quality::Full, &NoClock, None).unwrap();
+        assert_eq!(session.hash(), Some(generate(&p).unwrap().hash), "after {id} = {v}");
+    }
+}
+
+#[test]
+fn later_stage_edits_keep_the_earlier_results() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+
+    p.set("foliage_angle", 20.0).unwrap();
+    let c = session.update(&p, Quality::Full, &NoClock, None).unwrap().changes;
+    assert!(!c.skeleton && !c.bark && c.placements && !c.leaf_mesh && !c.leaf, "foliage edit: {c:?}");
+
+    p.set("leaf_teeth", 30.0).unwrap();
+    p.set("leaf_margin", 1.0).unwrap();
+    let c = session.update(&p, Quality::Full, &NoClock, None).unwrap().changes;
+    assert!(!c.skeleton && !c.bark && !c.placements && c.leaf_mesh && c.leaf, "leaf edit: {c:?}");
+
+    p.set("show_preview", 1.0).unwrap();
+    let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    assert_eq!(cur.from, Stage::Viewer);
+    assert!(!cur.changes.any(), "viewer edit: {:?}", cur.changes);
+
+    p.set("mesh_quality", 1.5).unwrap();
+    let c = session.update(&p, Quality::Full, &NoClock, None).unwrap().changes;
+    assert!(!c.skeleton && c.bark && !c.placements && !c.leaf, "mesh edit: {c:?}");
+
+    p.set("l1_branches", 20.0).unwrap();
+    let c = session.update(&p, Quality::Full, &NoClock, None).unwrap().changes;
+    assert!(c.skeleton && c.bark && c.placements, "skeleton edit: {c:?}");
+}
+
+#[test]
+fn first_stage_is_the_earliest_changed_parameter() {
+    let a = TreeParams::default();
+    let mut b = a.clone();
+    assert_eq!(first_stage(&a, &b), Stage::Viewer);
+    b.set("leaf_teeth", 3.0).unwrap();
+    assert_eq!(first_stage(&a, &b), Stage::Leaf);
+    b.set("foliage_angle", 3.0).unwrap();
+    assert_eq!(first_stage(&a, &b), Stage::Foliage);
+    b.set("lobes", 3.0).unwrap();
+    assert_eq!(first_stage(&a, &b), Stage::Mesh);
+    b.set("l2_length", 0.3).unwrap();
+    assert_eq!(first_stage(&a, &b), Stage::Skeleton);
+    let mut c = a.clone();
+    c.set("show_markers", 1.0).unwrap();
+    assert_eq!(first_stage(&a, &c), Stage::Viewer);
+}
+
+#[test]
+fn a_preview_is_never_the_full_tree_and_the_full_one_follows() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    // A budget of -1 ms: any bark is over it, so a bark edit is answered with a preview.
+    let drag = Quality::Preview { budget_ms: -1.0 };
+    p.set("l1_length", 0.34).unwrap();
+    let cur = session.update(&p, drag, &NoClock, None).unwrap();
+    assert!(cur.is_preview() && cur.changes.bark && cur.changes.placements);
+    let preview_vertices = cur.bark.mesh.vertex_count();
+    assert_eq!(session.hash(), None, "a preview has no content hash");
+    // A foliage edit during the drag keeps the preview bark and does not sweep again.
+    p.set("foliage_angle", 50.0).unwrap();
+    let cur = session.update(&p, drag, &NoClock, None).unwrap();
+    assert!(cur.is_preview() && !cur.changes.bark);
+    // The drag ends: the same parameters at full quality sweep the full bark, nothing else.
+    let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    assert!(!cur.is_preview() && cur.changes.bark && !cur.changes.skeleton && !cur.changes.placements);
+    assert!(cur.bark.mesh.vertex_count() > preview_vertices, "the preview is coarser");
+    assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
+    // With a generous budget the answer is full even when a preview is allowed.
+    p.set("l1_length", 0.36).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: 1e9 }, &NoClock, None).unwrap();
+    assert!(!cur.is_preview());
+    assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
+}
+
+#[test]
+fn an_error_keeps_the_previous_tree() {
+    let mut session = Session::new();
+    let p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    let hash = session.hash();
+    let mut bad = p.clone();
+    bad.max_leaves = 10; // the budget error comes from the foliage stage, after a new bark
+    bad.mesh_quality = 2.0;
+    let e = session.update(&bad, Quality::Full, &NoClock, None).unwrap_err();
+    assert!(e.to_string().contains("max_leaves"), "{e}");
+    assert_eq!(session.hash(), hash);
+    assert_eq!(session.current().unwrap().params, p);
+    // And the next edit is still incremental against the kept tree.
+    let mut q = p.clone();
+    q.foliage_angle = 10.0;
+    let cur = session.update(&q, Quality::Full, &NoClock, None).unwrap();
+    assert!(!cur.changes.bark);
+    assert_eq!(session.hash(), Some(generate(&q).unwrap().hash));
+}
