@@ -3,7 +3,7 @@
  * undo/redo of parameter changes.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { applyPreset, defaultParams, matchingPreset, randomSeed } from '../core/params';
+import { applyPreset, defaultParams, firstStage, matchingPreset, randomSeed } from '../core/params';
 import type { Params, VolumePrimitive } from '../core/types';
 import { Toolbar } from '../export/Toolbar';
 import { ErrorBanner } from '../ui/ErrorBanner';
@@ -16,7 +16,7 @@ import { Viewport } from '../ui/Viewport';
 import { WindControls } from '../ui/WindControls';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
-import { installDebugHook } from './debugHook';
+import { emitDebug, installDebugHook } from './debugHook';
 import { historyShortcut, ParamsHistory } from './history';
 import { browserStorage, loadInitialParams, ParamsSync } from './persistence';
 import { useGenerator } from './useGenerator';
@@ -74,6 +74,14 @@ export function App() {
       installDebugHook({
         geometries: () => viewerRef.current?.gpuGeometries ?? null,
         programs: () => viewerRef.current?.gpuPrograms ?? null,
+        measureFrames: (on) => {
+          const viewer = viewerRef.current;
+          if (viewer) {
+            viewer.frameProbe = on
+              ? (ms) => emitDebug('frame', { at: performance.now(), ms })
+              : null;
+          }
+        },
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
           if (!host) return;
@@ -95,12 +103,24 @@ export function App() {
   const registry = useMemo(() => info?.registry ?? [], [info]);
   const presets = useMemo(() => info?.presets ?? [], [info]);
 
-  /** Shows params: state, generation request and debounced URL/storage save. */
+  /**
+   * Shows params: generation request (none when only viewer parameters changed; `interactive`
+   * while a slider is dragged), state and debounced URL/storage save. The request goes out
+   * first, so the worker runs while React renders.
+   */
   const show = useCallback(
-    (next: Params, frame: boolean) => {
+    (next: Params, frame: boolean, interactive = false) => {
+      const previous = paramsRef.current;
       paramsRef.current = next;
+      const stage = previous ? firstStage(registry, previous, next) : 'skeleton';
+      if (stage !== 'viewer' && (stage !== null || frame)) {
+        generatorRef.current.request(next, frame, growthVolumesRef.current, interactive);
+      } else if (stage === 'viewer') {
+        // Nothing to regenerate: the viewer shows or hides what it already has.
+        viewerRef.current?.setPreviewVisible(next.show_preview === 1);
+        emitDebug('applied', { kind: 'viewer', at: performance.now(), preview: false });
+      }
       setParams(next);
-      generatorRef.current.request(next, frame, growthVolumesRef.current);
       syncRef.current?.schedule(registry, next);
     },
     [registry, growthVolumesRef],
@@ -116,9 +136,9 @@ export function App() {
    * (a slider drag coalesces into one step), null for a discrete step (preset, Reset, Randomize).
    */
   const apply = useCallback(
-    (next: Params, key: string | null, frame: boolean) => {
+    (next: Params, key: string | null, frame: boolean, interactive = false) => {
       historyRef.current?.record(next, { key, frame, now: performance.now() });
-      show(next, frame);
+      show(next, frame, interactive);
       updateHistoryState();
     },
     [show, updateHistoryState],
@@ -150,13 +170,26 @@ export function App() {
     return () => window.removeEventListener('keydown', onKeyDown);
   }, [travel]);
 
+  /** A control changed a value; `interactive` while it is dragged or typed into. */
   const onChange = useCallback(
-    (id: string, value: number) => {
+    (id: string, value: number, interactive = false) => {
       const current = paramsRef.current;
-      if (current) apply({ ...current, [id]: value }, id, false);
+      if (current) apply({ ...current, [id]: value }, id, false, interactive);
     },
     [apply],
   );
+
+  // A drag or a burst of typing ends when the pointer or key is released anywhere: the full
+  // tree follows the preview right away (the scheduler also settles after a short pause).
+  useEffect(() => {
+    const settle = () => generatorRef.current.settle();
+    window.addEventListener('pointerup', settle);
+    window.addEventListener('keyup', settle);
+    return () => {
+      window.removeEventListener('pointerup', settle);
+      window.removeEventListener('keyup', settle);
+    };
+  }, []);
 
   const onChangeMany = useCallback(
     (values: Params) => {
@@ -190,7 +223,7 @@ export function App() {
         />
         {/* Stats, toolbar and wind in one row that wraps on a narrow stage: never on top of each other. */}
         <div className="stage-top">
-          <StatsOverlay stats={generator.stats} busy={generator.busy} />
+          <StatsOverlay store={generator.stats} />
           {info && params ? (
             <Toolbar
               registry={registry}

@@ -3,12 +3,31 @@ import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
 import type { WindSettings } from '../viewer/windSettings';
 
+/** A tree the viewer applied (the debug hook's log; benchmarks time answers with it). */
+export interface TreeApplied {
+  /** Request id. */
+  id: number;
+  /** `performance.now()` when its arrays were in the scene, ready for the next frame. */
+  at: number;
+  /** When it was requested (null for a request made before the log). */
+  requestedAt: number | null;
+  /** A preview (a drag's quick answer). */
+  preview: boolean;
+}
+
 /** What the debug hook exposes to tests and the console. */
 export interface SylvaDebugHook {
   /** Makes the generator worker panic (tests the crash-recovery path). */
   panic(): void;
   /** Makes the generator worker busy-loop for `ms` (tests the time limit). */
   hang(ms: number): void;
+  /** The trees applied so far (the last 200), oldest first. */
+  trees(): TreeApplied[];
+  /**
+   * Benchmarks: after every frame, wait for the GPU and dispatch `sylva:frame` on `window`
+   * with `{ at, ms }` (upload + draw); off by default.
+   */
+  measureFrames(on: boolean): void;
   /** Sets the generation time limit in ms (tests use a short one). */
   setTimeLimit(ms: number): void;
   /** Geometries alive on the GPU (three.js `renderer.info.memory.geometries`), for leak tests. */
@@ -54,6 +73,15 @@ declare global {
 /** Whether the hook may be installed: dev builds, or a page URL with `debug=1`. */
 export function debugEnabled(search: string, dev: boolean): boolean {
   return dev || new URLSearchParams(search).get('debug') === '1';
+}
+
+/**
+ * Dispatches `sylva:<name>` on `window` with `detail` when the hook is enabled (benchmarks
+ * listen: `sylva:applied` when an answer is in the scene, `sylva:frame` after a probed frame).
+ */
+export function emitDebug(name: 'applied' | 'frame', detail: object): void {
+  if (!debugEnabled(window.location.search, import.meta.env.DEV)) return;
+  window.dispatchEvent(new CustomEvent(`sylva:${name}`, { detail }));
 }
 
 /**

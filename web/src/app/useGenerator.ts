@@ -1,34 +1,37 @@
 /** React hook wiring the scheduler to the viewer (mesh via refs) and to small React state. */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type { Params, SylvaError, TreeMeta, VolumePrimitive } from '../core/types';
+import type { Params, SylvaError, VolumePrimitive } from '../core/types';
 import { createModuleWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { GenerationScheduler } from '../worker/scheduler';
-import { installDebugHook } from './debugHook';
+import { emitDebug, installDebugHook, type TreeApplied } from './debugHook';
+import { StatsStore } from './statsStore';
 
-/** Per-tree numbers shown in the stats overlay. */
-export type TreeStats = Pick<TreeMeta, 'vertices' | 'triangles' | 'hash' | 'total_ms' | 'stems'> & {
-  /** Request to geometry built on the main thread: generation + transfer + BufferGeometry (ms). */
-  roundTripMs: number | null;
-  /** GPU upload + draw time when measured (null: drawn on the next animation frame). */
-  drawMs: number | null;
-};
+export type { TreeStats } from './statsStore';
 
 /** What the app sees of the generator. */
 export interface Generator {
-  stats: TreeStats | null;
+  /** Stats and busy state, read by the overlay alone (no app re-render per tree). */
+  stats: StatsStore;
   error: SylvaError | null;
-  busy: boolean;
   restarts: number;
-  /** Requests a tree; `frame` re-frames the camera when it (or a newer one) arrives. */
-  request(params: Params, frame: boolean, volumes?: VolumePrimitive[]): void;
+  /**
+   * Requests a tree; `frame` re-frames the camera when it (or a newer one) arrives;
+   * `interactive` marks a step of a drag (a preview may answer; see `settle`).
+   */
+  request(params: Params, frame: boolean, volumes?: VolumePrimitive[], interactive?: boolean): void;
+  /** The drag ended: the full tree follows the preview, if one is shown. */
+  settle(): void;
   clearError(): void;
   /** Growth progress (0..1) of the generation in flight, null when none reports progress. */
   progress: number | null;
   /** Cancels the generation in flight (fresh worker; the last tree stays). */
   cancel(): void;
 }
+
+/** Most trees kept in the debug hook's log. */
+const TREE_LOG = 200;
 
 /**
  * Starts the worker on mount. `onReady` fires once with the registry and presets and returns the
@@ -41,9 +44,8 @@ export function useGenerator(
   initialVolumes?: RefObject<VolumePrimitive[]>,
 ): Generator {
   const [progress, setProgress] = useState<number | null>(null);
-  const [stats, setStats] = useState<TreeStats | null>(null);
+  const [stats] = useState(() => new StatsStore());
   const [error, setError] = useState<SylvaError | null>(null);
-  const [busy, setBusy] = useState(false);
   const [restarts, setRestarts] = useState(0);
   const schedulerRef = useRef<GenerationScheduler | null>(null);
   const frameFromIdRef = useRef(0);
@@ -51,6 +53,8 @@ export function useGenerator(
   const onReadyRef = useRef(onReady);
   /** When each request was made; a result removes its own and every older (superseded) one. */
   const requestedAtRef = useRef(new Map<number, number>());
+  /** Applied trees, for the debug hook (benchmarks read the answer times). */
+  const treeLogRef = useRef<TreeApplied[]>([]);
 
   useEffect(() => {
     onReadyRef.current = onReady;
@@ -64,7 +68,10 @@ export function useGenerator(
         if (!announced) {
           announced = true;
           const initial = onReadyRef.current(info);
-          scheduler.request(initial, initialVolumes?.current);
+          requestedAtRef.current.set(
+            scheduler.request(initial, initialVolumes?.current),
+            performance.now(),
+          );
         }
       },
       onResult: (result) => {
@@ -77,18 +84,29 @@ export function useGenerator(
         for (const id of requestedAtRef.current.keys()) {
           if (id <= result.id) requestedAtRef.current.delete(id); // this one and the superseded
         }
-        viewer.current?.setTree(result, frame);
+        viewer.current?.apply(result, frame);
         const built = performance.now();
+        const { vertices, triangles, hash, total_ms, stems } = result.meta;
+        const preview = result.meta.preview === true;
+        const log = treeLogRef.current;
+        const applied = { id: result.id, at: built, requestedAt: requestedAt ?? null, preview };
+        log.push(applied);
+        if (log.length > TREE_LOG) log.splice(0, log.length - TREE_LOG);
+        emitDebug('applied', { kind: 'tree', ...applied });
         // The upload and draw happen on the next animation frame (never a synchronous draw
         // here: that would block the main thread while a slider is dragged).
-        const drawMs = null;
         const roundTripMs = requestedAt === undefined ? null : built - requestedAt;
-        const { vertices, triangles, hash, total_ms, stems } = result.meta;
-        setStats({ vertices, triangles, hash, total_ms, stems, roundTripMs, drawMs });
+        stats.set({
+          stats: { vertices, triangles, hash, total_ms, stems, roundTripMs, drawMs: null, preview },
+        });
         setError(null);
       },
+      onHash: (hash) => {
+        viewer.current?.setHash(hash);
+        stats.setHash(hash);
+      },
       onError: (err) => setError(err),
-      onBusyChange: setBusy,
+      onBusyChange: (busy) => stats.set({ busy }),
       onProgress: (fraction) => setProgress(fraction),
     });
     schedulerRef.current = scheduler;
@@ -98,20 +116,29 @@ export function useGenerator(
       setTimeLimit: (ms) => {
         scheduler.timeLimitMs = ms;
       },
+      trees: () => [...treeLogRef.current],
     });
     return () => {
       uninstall();
       scheduler.dispose();
       if (schedulerRef.current === scheduler) schedulerRef.current = null;
     };
-  }, [viewer, initialVolumes]);
+  }, [viewer, initialVolumes, stats]);
 
-  const request = useCallback((params: Params, frame: boolean, volumes?: VolumePrimitive[]) => {
-    const scheduler = schedulerRef.current;
-    if (!scheduler) return;
-    const id = scheduler.request(params, volumes);
-    requestedAtRef.current.set(id, performance.now());
-    if (frame) frameFromIdRef.current = id;
+  const request = useCallback(
+    (params: Params, frame: boolean, volumes?: VolumePrimitive[], interactive = false) => {
+      const scheduler = schedulerRef.current;
+      if (!scheduler) return;
+      const id = scheduler.request(params, volumes, { interactive });
+      requestedAtRef.current.set(id, performance.now());
+      if (frame) frameFromIdRef.current = id;
+    },
+    [],
+  );
+
+  const settle = useCallback(() => {
+    const id = schedulerRef.current?.settle();
+    if (id != null) requestedAtRef.current.set(id, performance.now());
   }, []);
 
   const clearError = useCallback(() => setError(null), []);
@@ -120,5 +147,5 @@ export function useGenerator(
     schedulerRef.current?.cancel();
   }, []);
 
-  return { stats, error, busy, restarts, request, clearError, progress, cancel };
+  return { stats, error, restarts, request, settle, clearError, progress, cancel };
 }

@@ -4,7 +4,9 @@ import type { ParamSpec } from './types';
 import {
   applyPreset,
   decimalsOf,
+  defaultParams,
   displayValue,
+  firstStage,
   groupParams,
   matchingPreset,
   normalizeValue,
@@ -87,5 +89,26 @@ describe('params helpers', () => {
       expect(match).toBeDefined();
       expect(applyPreset(registry, match ?? preset)).toEqual(params);
     }
+  });
+});
+
+describe('firstStage', () => {
+  const reg = realRegistry();
+  const base = defaultParams(reg);
+  it('is the earliest stage among the changed parameters, null when none changed', () => {
+    expect(firstStage(reg, base, { ...base })).toBeNull();
+    expect(firstStage(reg, base, { ...base, show_preview: 1 })).toBe('viewer');
+    expect(firstStage(reg, base, { ...base, leaf_teeth: 3 })).toBe('leaf');
+    expect(firstStage(reg, base, { ...base, leaf_teeth: 3, foliage_angle: 10 })).toBe('foliage');
+    expect(firstStage(reg, base, { ...base, mesh_quality: 2, foliage_angle: 10 })).toBe('mesh');
+    expect(firstStage(reg, base, { ...base, l1_branches: 9, show_markers: 1 })).toBe('skeleton');
+  });
+  it('every registry parameter declares its stage', () => {
+    const stages = new Set(reg.map((s) => s.stage));
+    expect([...stages].sort()).toEqual(['foliage', 'leaf', 'mesh', 'skeleton', 'viewer']);
+    expect(reg.every((s) => s.stage !== undefined)).toBe(true);
+    expect(reg.filter((s) => s.stage === 'viewer').map((s) => s.id)).toEqual(
+      expect.arrayContaining(['show_preview', 'show_markers', 'show_volumes']),
+    );
   });
 });

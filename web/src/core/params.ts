@@ -1,5 +1,5 @@
 /** Pure helpers over the parameter registry: defaults, step snapping, presets, grouping. */
-import type { ParamSpec, Params, Preset } from './types';
+import type { ParamSpec, Params, Preset, Stage } from './types';
 
 /** Number of decimals in a number's plain or exponent notation (0.05 → 2, 1e-7 → 7). */
 export function decimalsOf(x: number): number {
@@ -114,4 +114,23 @@ export function randomSeed(spec: ParamSpec, random: () => number = Math.random):
   const lo = Math.ceil(spec.min);
   const hi = Math.floor(spec.max);
   return lo + Math.floor(random() * (hi - lo + 1));
+}
+
+const STAGE_ORDER: readonly Stage[] = ['skeleton', 'mesh', 'foliage', 'leaf', 'viewer'];
+
+/**
+ * The first pipeline stage whose parameters differ between `a` and `b` (the registry's
+ * `stage`; a spec without one counts as `skeleton`), or null when none differs. `viewer`
+ * means nothing needs regenerating.
+ */
+export function firstStage(registry: readonly ParamSpec[], a: Params, b: Params): Stage | null {
+  let first: number | null = null;
+  for (const spec of registry) {
+    const x = a[spec.id] ?? spec.default;
+    const y = b[spec.id] ?? spec.default;
+    if (Object.is(x, y)) continue;
+    const rank = STAGE_ORDER.indexOf(spec.stage ?? 'skeleton');
+    if (first === null || rank < first) first = rank;
+  }
+  return first === null ? null : (STAGE_ORDER[first] ?? null);
 }

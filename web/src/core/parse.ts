@@ -8,12 +8,15 @@ import type {
   Preset,
   SylvaError,
   SylvaErrorKind,
+  Stage,
+  TreeChanges,
   TreeMeta,
 } from './types';
 
 type Json = Record<string, unknown>;
 
 const PARAM_KINDS: readonly ParamKind[] = ['float', 'int', 'bool', 'enum'];
+const STAGES: readonly Stage[] = ['skeleton', 'mesh', 'foliage', 'leaf', 'viewer'];
 const ERROR_KINDS: readonly SylvaErrorKind[] = [
   'invalid_param',
   'unknown_param',
@@ -92,6 +95,13 @@ function parseParamSpec(value: unknown, index: number): ParamSpec {
   if (o.options !== undefined && o.options !== null) {
     spec.options = array(o.options, `${where}.options`).map((x) => String(x));
   }
+  if (o.stage !== undefined) {
+    const stage = str(o, 'stage', where);
+    if (!STAGES.includes(stage as Stage)) {
+      throw new ContractError(`${where}.stage: unknown stage "${stage}"`);
+    }
+    spec.stage = stage as Stage;
+  }
   return spec;
 }
 
@@ -124,6 +134,22 @@ function parseGroup(value: unknown, i: number): MeshGroup {
   return { material, start: num(o, 'start', where), count: num(o, 'count', where) };
 }
 
+function parseChanges(value: unknown): TreeChanges {
+  const o = record(value, 'meta.changes');
+  const flag = (key: keyof TreeChanges): boolean => {
+    if (typeof o[key] !== 'boolean')
+      throw new ContractError(`meta.changes.${key}: expected a boolean`);
+    return o[key];
+  };
+  return {
+    skeleton: flag('skeleton'),
+    bark: flag('bark'),
+    placements: flag('placements'),
+    leaf_mesh: flag('leaf_mesh'),
+    leaf: flag('leaf'),
+  };
+}
+
 /** Parses and validates a tree's `meta_json()` output. */
 export function parseMeta(text: string): TreeMeta {
   const o = record(JSON.parse(text), 'meta');
@@ -135,7 +161,9 @@ export function parseMeta(text: string): TreeMeta {
   return {
     vertices: num(o, 'vertices', 'meta'),
     triangles: num(o, 'triangles', 'meta'),
-    hash: str(o, 'hash', 'meta'),
+    hash: typeof o.hash === 'string' ? o.hash : '',
+    ...(typeof o.preview === 'boolean' ? { preview: o.preview } : {}),
+    ...(o.changes !== undefined ? { changes: parseChanges(o.changes) } : {}),
     bounds,
     groups: array(o.groups, 'meta.groups').map(parseGroup),
     stage_ms: o.stage_ms === undefined ? {} : numberRecord(o.stage_ms, 'meta.stage_ms'),

@@ -3,6 +3,12 @@
 /** Kind of a generator parameter; every value is a number on the wire (bool 0/1, enum index). */
 export type ParamKind = 'float' | 'int' | 'bool' | 'enum';
 
+/**
+ * The first pipeline stage a parameter affects (the core's `params::Stage`): an edit reruns
+ * that stage and the later ones in the worker's session; `viewer` regenerates nothing.
+ */
+export type Stage = 'skeleton' | 'mesh' | 'foliage' | 'leaf' | 'viewer';
+
 /** One entry of `registry_json()`: describes a generator parameter and its valid range. */
 export interface ParamSpec {
   id: string;
@@ -16,6 +22,8 @@ export interface ParamSpec {
   unit: string;
   description: string;
   options?: string[];
+  /** The first stage the parameter affects (absent in hand-made specs: `skeleton`). */
+  stage?: Stage;
 }
 
 /** One entry of `presets_json()`: only the non-default values are listed. */
@@ -59,11 +67,25 @@ export interface Bounds {
   max: [number, number, number];
 }
 
+/** Which buffers of a session update differ from the previous update's (`meta.changes`). */
+export interface TreeChanges {
+  skeleton: boolean;
+  bark: boolean;
+  placements: boolean;
+  leaf_mesh: boolean;
+  leaf: boolean;
+}
+
 /** Parsed `meta_json()` of a generated tree. */
 export interface TreeMeta {
   vertices: number;
   triangles: number;
+  /** Content hash (16 hex digits); '' while it is computed, and for a preview. */
   hash: string;
+  /** The bark is a quick preview (during a drag), not the full tree. */
+  preview?: boolean;
+  /** Session updates: what changed since the previous update. */
+  changes?: TreeChanges;
   bounds: Bounds;
   groups: MeshGroup[];
   stage_ms: Record<string, number>;
@@ -98,6 +120,44 @@ export interface FoliageBuffers {
   texture: LeafTextureBuffers | null;
   /** `meta.leaf_hash`: which leaf shape the mesh and texture are. */
   leafHash: string;
+}
+
+/** The bark arrays of a tree (see `TreeMesh`). */
+export interface BarkBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  uvs: Float32Array;
+  indices: Uint32Array;
+  /** Wind data, 8 floats per vertex, or empty. */
+  wind: Float32Array;
+}
+
+/** The leaf mesh drawn once per leaf (leaf units). */
+export interface LeafMeshBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  uvs: Float32Array;
+  indices: Uint32Array;
+}
+
+/**
+ * What one answer of the worker's session carries: the meta, and only the arrays that changed
+ * since its previous answer (absent = keep what you have).
+ */
+export interface TreeUpdate {
+  meta: TreeMeta;
+  bark?: BarkBuffers;
+  /** Crown envelope line segments (with a new skeleton). */
+  envelope?: Float32Array;
+  /** Growth markers (with a new skeleton). */
+  markers?: Float32Array;
+  /** Per-leaf matrices and tints. */
+  instances?: { matrices: Float32Array; colors: Float32Array };
+  leafMesh?: LeafMeshBuffers;
+  /** The leaf texture (a new leaf shape). */
+  leafTexture?: LeafTextureBuffers;
+  /** The baked bark maps (the first answer of a worker). */
+  barkTextures?: BarkTextureBuffers;
 }
 
 /** The mesh buffers of a generated tree plus its metadata. */
@@ -192,8 +252,38 @@ export interface WasmTree {
   free(): void;
 }
 
+/** A `Session` of the wasm module: incremental generation (see `sylva_core::session`). */
+export interface WasmSession {
+  /** Meta JSON with `changes` and `preview`; budget >= 0 allows a preview bark. */
+  update(
+    paramsJson: string,
+    previewBudgetMs: number,
+    progress?: (fraction: number) => void,
+  ): string;
+  /** Hash of the current full tree; undefined for a preview. */
+  hash(): string | undefined;
+  clear(): void;
+  positions(): Float32Array;
+  normals(): Float32Array;
+  uvs(): Float32Array;
+  indices(): Uint32Array;
+  wind(): Float32Array;
+  markers(): Float32Array;
+  envelope_lines(): Float32Array;
+  leaf_positions(): Float32Array;
+  leaf_normals(): Float32Array;
+  leaf_uvs(): Float32Array;
+  leaf_indices(): Uint32Array;
+  leaf_matrices(): Float32Array;
+  leaf_colors(): Float32Array;
+  leaf_texture(): Uint8Array;
+  free(): void;
+}
+
 /** The subset of the wasm module's exports the worker uses (after init). */
 export interface WasmApi {
+  /** The incremental generator the worker keeps (one per worker). */
+  Session: new () => WasmSession;
   registry_json(): string;
   presets_json(): string;
   core_version(): string;

@@ -86,9 +86,13 @@ export class TreeEmbed {
         if (first) this.requestNow();
       },
       onResult: (result) => {
-        this.viewer.setTree(result, true);
-        if (result.id !== this.latestId) return;
-        this.setState({ status: 'ready', hash: result.meta.hash, messages: this.messages });
+        this.viewer.apply(result, true);
+      },
+      // Ready once the latest tree's hash (which follows its buffers) is known.
+      onHash: (hash, id) => {
+        this.viewer.setHash(hash);
+        if (id !== this.latestId) return;
+        this.setState({ status: 'ready', hash, messages: this.messages });
       },
       onError: (error, id) => {
         if (id !== null && id !== this.latestId) return;

@@ -1,6 +1,7 @@
 /** Mesh export, worker side (the real core's exporters), the client, and the ZIP writer. */
 import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
+import { harness } from '../testing/workerHarness';
 import type { WasmApi } from '../core/types';
 import { createHandler } from '../worker/handler';
 import type { WorkerResponse } from '../worker/protocol';
@@ -70,9 +71,10 @@ describe('export feature check', () => {
 
 describe('export request (worker handler, real core)', () => {
   it('GLB: regenerates the params, glTF 2.0 binary, a Blob read from the core memory', async () => {
-    const { sent, handle } = collect(loadWasm());
+    const h = harness();
+    const { sent, handle } = h;
     handle({ type: 'generate', id: 1, params: { seed: 3, levels: 2 } });
-    const shown = sent[0]?.message;
+    const shown = h.tree();
     handle({
       type: 'export',
       id: 4,
@@ -84,7 +86,7 @@ describe('export request (worker handler, real core)', () => {
     const message = exported(sent);
     expect(message.id).toBe(4);
     // The same tree as the viewer shows.
-    expect(shown?.type === 'result' && shown.meta.hash).toBe(message.hash);
+    expect(shown.meta.hash).toBe(message.hash);
     const [file] = message.files;
     expect(file?.name).toBe('oak-1.glb');
     expect(file?.mime).toBe('model/gltf-binary');

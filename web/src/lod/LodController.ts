@@ -93,6 +93,7 @@ export class LodController {
   private owned: { dispose(): void }[] = [];
   private readonly probeParts: { dispose(): void }[];
   private readonly unsubscribe: () => void;
+  private readonly unsubscribeHash: () => void;
   private leafMap: Texture | null = null;
   private last: LodState | null = null;
   private disposed = false;
@@ -125,6 +126,11 @@ export class LodController {
     this.probeParts = [probeGeometry, probeMaterial];
     host.scene.add(this.probe);
     this.unsubscribe = host.onTree((buffers) => this.onTree(buffers));
+    // The hash follows the buffers: the levels are requested once it is known.
+    this.unsubscribeHash = host.onHash((hash) => {
+      this.hash = hash;
+      this.armIdle();
+    });
     host.orbit.addEventListener('change', this.onChange);
   }
 
@@ -167,6 +173,7 @@ export class LodController {
     this.disposed = true;
     if (this.idleTimer !== null) clearTimeout(this.idleTimer);
     this.unsubscribe();
+    this.unsubscribeHash();
     this.host.orbit.removeEventListener('change', this.onChange);
     this.clearLevels();
     this.setBaseVisible(true);
@@ -180,6 +187,11 @@ export class LodController {
     this.sphere = sphereOf(buffers);
     this.clearLevels();
     this.update();
+    this.armIdle();
+  }
+
+  /** (Re)starts the idle wait before the levels are requested. */
+  private armIdle(): void {
     if (this.idleTimer !== null) clearTimeout(this.idleTimer);
     this.idleTimer = setTimeout(() => this.requestLods(), LOD_IDLE_MS);
   }

@@ -20,7 +20,7 @@ export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
 interface Props {
   registry: readonly ParamSpec[];
   params: Params;
-  onChange: (id: string, value: number) => void;
+  onChange: (id: string, value: number, interactive?: boolean) => void;
   /** Applies several values at once (a leaf preset). */
   onChangeMany: (values: Params) => void;
 }

@@ -7,7 +7,8 @@ import { NumberField } from './NumberField';
 interface Props {
   spec: ParamSpec;
   value: number;
-  onChange: (id: string, value: number) => void;
+  /** `interactive`: a step of a drag or of typing (the full tree follows when it settles). */
+  onChange: (id: string, value: number, interactive?: boolean) => void;
 }
 
 /**
@@ -31,7 +32,7 @@ export const ParamControl = memo(function ParamControl({ spec, value, onChange }
           data-param-id={spec.id}
           data-testid={`param-check-${spec.id}`}
           checked={value !== 0}
-          onChange={(e) => onChange(spec.id, e.currentTarget.checked ? 1 : 0)}
+          onChange={(e) => onChange(spec.id, e.currentTarget.checked ? 1 : 0, true)}
         />
         {label}
       </div>
@@ -46,7 +47,7 @@ export const ParamControl = memo(function ParamControl({ spec, value, onChange }
           data-param-id={spec.id}
           data-testid={`param-select-${spec.id}`}
           value={value}
-          onChange={(e) => onChange(spec.id, Number(e.currentTarget.value))}
+          onChange={(e) => onChange(spec.id, Number(e.currentTarget.value), true)}
         >
           {(spec.options ?? []).map((option, index) => (
             <option key={option} value={index}>
@@ -71,9 +72,9 @@ export const ParamControl = memo(function ParamControl({ spec, value, onChange }
           max={spec.max}
           step={spec.step > 0 ? spec.step : 'any'}
           value={value}
-          onChange={(e) => onChange(spec.id, snapToStep(spec, e.currentTarget.valueAsNumber))}
+          onChange={(e) => onChange(spec.id, snapToStep(spec, e.currentTarget.valueAsNumber), true)}
         />
-        <NumberField spec={spec} value={value} onCommit={(v) => onChange(spec.id, v)} />
+        <NumberField spec={spec} value={value} onCommit={(v) => onChange(spec.id, v, true)} />
       </div>
     </div>
   );

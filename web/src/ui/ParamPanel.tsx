@@ -11,7 +11,7 @@ interface Props {
   params: Params;
   activePreset: string | null;
   version: string;
-  onChange: (id: string, value: number) => void;
+  onChange: (id: string, value: number, interactive?: boolean) => void;
   onPreset: (name: string) => void;
   onRandomize: () => void;
   onReset: () => void;
@@ -71,7 +71,7 @@ export function ParamPanel(props: Props) {
             <NumberField
               spec={seedSpec}
               value={params[seedSpec.id] ?? seedSpec.default}
-              onCommit={(v) => onChange(seedSpec.id, v)}
+              onCommit={(v) => onChange(seedSpec.id, v, true)}
               className="seed-field"
               id="seed-field"
             />

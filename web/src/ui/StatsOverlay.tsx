@@ -1,10 +1,15 @@
 /** Overlay with the current tree's vertex/triangle counts, generation and round-trip time, hash. */
-import type { TreeStats } from '../app/useGenerator';
+import { useSyncExternalStore } from 'react';
+import type { StatsStore } from '../app/statsStore';
 
 const integer = new Intl.NumberFormat('en-US');
 
-/** Stats box over the viewer; shows dashes until the first tree arrives. */
-export function StatsOverlay({ stats, busy }: { stats: TreeStats | null; busy: boolean }) {
+/**
+ * Stats box over the viewer; shows dashes until the first tree arrives. It reads its own store
+ * so that a new tree re-renders only this box.
+ */
+export function StatsOverlay({ store }: { store: StatsStore }) {
+  const { stats, busy } = useSyncExternalStore(store.subscribe, store.get);
   return (
     <div className="stats" aria-live="polite">
       <dl>
@@ -25,10 +30,19 @@ export function StatsOverlay({ stats, busy }: { stats: TreeStats | null; busy: b
           {stats?.roundTripMs != null ? `${stats.roundTripMs.toFixed(1)} ms` : '–'}
         </dd>
         <dt>Hash</dt>
-        <dd data-testid="stat-hash" className="hash">
-          {stats ? stats.hash : '–'}
+        <dd
+          data-testid="stat-hash"
+          className="hash"
+          title={stats?.preview ? 'A preview has no hash: the full tree follows' : undefined}
+        >
+          {stats ? stats.hash || (stats.preview ? 'preview' : '…') : '–'}
         </dd>
       </dl>
+      {stats?.preview ? (
+        <div className="preview-badge" data-testid="stat-preview" role="status">
+          preview
+        </div>
+      ) : null}
       {busy ? (
         <div className="busy" data-testid="busy" role="status">
           <span className="spinner" aria-hidden="true" /> Generating…

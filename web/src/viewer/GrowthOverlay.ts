@@ -86,6 +86,8 @@ function volumeOf(base: VolumePrimitive, object: Object3D): VolumePrimitive {
 export class GrowthOverlay {
   private readonly root = new Group();
   private readonly volumesGroup = new Group();
+  /** The markers array drawn (the same array again needs no new geometry). */
+  private shownMarkers: Float32Array | undefined = undefined;
   private readonly markers = new Points(
     new BufferGeometry(),
     new PointsMaterial({ color: MARKER_COLOR, size: 3, sizeAttenuation: false }),
@@ -207,6 +209,9 @@ export class GrowthOverlay {
   }
 
   private setMarkers(buffers: TreeBuffers): void {
+    // Session updates keep the markers array while the skeleton stays.
+    if (buffers.markers !== undefined && buffers.markers === this.shownMarkers) return;
+    this.shownMarkers = buffers.markers;
     const data = buffers.markers ?? new Float32Array(0);
     this.markers.geometry.dispose();
     const geometry = new BufferGeometry();

@@ -19,12 +19,13 @@ import {
   type BufferGeometry,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { TreeBuffers } from '../core/types';
+import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
 import { BarkTextures } from './barkMaterial';
 import { Foliage } from './Foliage';
 import { WindController } from './wind';
 import { hashPixels } from './windDebug';
-import { buildEnvelopeGeometry, buildTreeGeometry } from './geometry';
+import { buildEnvelopeGeometry, buildTreeGeometry, updateTreeGeometry } from './geometry';
+import { mergeUpdate, updateOf } from './treeState';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';
@@ -41,6 +42,8 @@ export interface OverlayHost {
   orbit: OrbitControls;
   requestRender(): void;
   onTree(listener: (buffers: TreeBuffers) => void): () => void;
+  /** Subscribes to the current tree's content hash, which arrives after its buffers. */
+  onHash(listener: (hash: string) => void): () => void;
 }
 
 /** Owns every three.js object of the viewer; mesh data lives here, never in React state. */
@@ -69,8 +72,16 @@ export class TreeViewer {
   readonly wind = new WindController(() => this.requestRender());
   private readonly barkTextures = new BarkTextures(this.bark);
   private frameRequested = false;
+  /**
+   * Benchmarks: called after every frame with its upload + draw time (ms), measured by waiting
+   * for the GPU; null (the default) never waits.
+   */
+  frameProbe: ((ms: number) => void) | null = null;
   /** Called with every new tree (the growth overlay reads its markers). */
   private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
+  private readonly hashListeners = new Set<(hash: string) => void>();
+  /** The whole current tree (session updates are merged into it). */
+  private current: TreeBuffers | null = null;
   private frameId = 0;
   private disposed = false;
 
@@ -123,8 +134,45 @@ export class TreeViewer {
     this.resize();
   }
 
-  /** Shows a new tree, disposing the previous geometry; optionally re-frames the camera. */
+  /** Shows a whole new tree (every array given); optionally re-frames the camera. */
   setTree(buffers: TreeBuffers, frame: boolean): void {
+    this.current = null;
+    this.apply(updateOf(buffers), frame);
+  }
+
+  /**
+   * Applies a session update (only the arrays that changed): same-size arrays are swapped
+   * into the existing attributes in place, other sizes get new geometry and the old is
+   * disposed. Optionally re-frames the camera. Returns the whole current tree.
+   */
+  apply(update: TreeUpdate, frame: boolean): TreeBuffers {
+    const buffers = mergeUpdate(this.current, update);
+    this.current = buffers;
+    if (update.bark) this.setBark(update.bark, buffers);
+    if (update.envelope) {
+      this.envelope.geometry.dispose();
+      this.envelope.geometry = buildEnvelopeGeometry(update.envelope);
+    }
+    this.foliage.update(update);
+    const geometry = this.tree?.geometry;
+    this.wind.setTree(buffers.meta.bounds, geometry?.hasAttribute('windPivot') ?? false);
+    if (update.barkTextures) this.barkTextures.set(update.barkTextures);
+    for (const listener of this.treeListeners) listener(buffers);
+    const sphere = geometry?.boundingSphere ?? new Sphere(new Vector3(), 1);
+    this.fitStage(sphere);
+    if (frame) this.frameBounds(sphere);
+    this.requestRender();
+    return buffers;
+  }
+
+  /** The content hash of the current tree arrived (it follows the buffers). */
+  setHash(hash: string): void {
+    if (this.current) this.current.meta = { ...this.current.meta, hash };
+    for (const listener of this.hashListeners) listener(hash);
+  }
+
+  private setBark(bark: BarkBuffers, buffers: TreeBuffers): void {
+    if (this.tree && updateTreeGeometry(this.tree.geometry, bark, buffers.meta)) return;
     const geometry = buildTreeGeometry(buffers);
     if (this.tree) {
       this.tree.geometry.dispose();
@@ -136,16 +184,6 @@ export class TreeViewer {
       this.tree.customDepthMaterial = this.wind.depthMaterial('bark');
       this.scene.add(this.tree);
     }
-    this.envelope.geometry.dispose();
-    this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
-    this.foliage.set(buffers.foliage);
-    this.wind.setTree(buffers.meta.bounds, geometry.hasAttribute('windPivot'));
-    if (buffers.bark) this.barkTextures.set(buffers.bark);
-    for (const listener of this.treeListeners) listener(buffers);
-    const sphere = geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
-    this.fitStage(sphere);
-    if (frame) this.frameBounds(sphere);
-    this.requestRender();
   }
 
   /**
@@ -162,6 +200,10 @@ export class TreeViewer {
       onTree: (listener) => {
         this.treeListeners.add(listener);
         return () => this.treeListeners.delete(listener);
+      },
+      onHash: (listener) => {
+        this.hashListeners.add(listener);
+        return () => this.hashListeners.delete(listener);
       },
     };
   }
@@ -310,8 +352,20 @@ export class TreeViewer {
       if (this.disposed) return;
       // While the wind blows, every frame advances its clock and asks for the next one.
       this.wind.tick(now);
+      const t0 = performance.now();
       this.renderer.render(this.scene, this.camera);
+      if (this.frameProbe) this.frameProbe(this.finishFrame(t0));
       if (this.wind.animating) this.requestRender();
     });
+  }
+
+  /**
+   * Waits for the frame just issued to be drawn (a one-pixel read-back) and returns the time
+   * since `t0` (ms): the upload and draw of the frame. Only with a frame probe (benchmarks).
+   */
+  private finishFrame(t0: number): number {
+    const gl = this.renderer.getContext();
+    gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
+    return performance.now() - t0;
   }
 }

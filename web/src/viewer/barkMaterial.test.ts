@@ -1,7 +1,7 @@
 import { NoColorSpace, RepeatWrapping, SRGBColorSpace, type DataTexture } from 'three';
 import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
-import { barkOf } from '../worker/handler';
+import { barkOf } from '../worker/generate';
 import { BARK_FLAT_COLOR, BARK_REPEAT, BarkTextures, createBarkMaterial } from './barkMaterial';
 
 describe('bark material', () => {

@@ -1,21 +1,19 @@
 /** The worker side of wind and bark: defensive reads, one bark bake per worker, transfers. */
 import { describe, expect, it } from 'vitest';
-import type { WasmApi, WasmTree } from '../core/types';
+import type { WasmApi } from '../core/types';
 import { loadWasm } from '../testing/realWasm';
-import { barkOf, createHandler, windOf } from '../worker/handler';
-import type { ResultResponse, WorkerResponse } from '../worker/protocol';
+import { harness } from '../testing/workerHarness';
+import { barkOf, windOf } from '../worker/generate';
 import { buildTreeGeometry } from './geometry';
-
-const fakeTree = (extra: Partial<WasmTree> = {}): WasmTree =>
-  ({ positions: () => new Float32Array(6), ...extra }) as WasmTree;
+import { mergeUpdate } from './treeState';
 
 describe('wind data from the core', () => {
-  it('is read only when the getter exists and matches the vertex count', () => {
-    expect(windOf(fakeTree(), 2)).toHaveLength(0);
+  it('is used only when it matches the vertex count', () => {
     const good = new Float32Array(16);
-    expect(windOf(fakeTree({ wind: () => good }), 2)).toBe(good);
-    expect(windOf(fakeTree({ wind: () => new Float32Array(15) }), 2)).toHaveLength(0);
-    expect(windOf(fakeTree({ wind: () => new Float32Array(0) }), 2)).toHaveLength(0);
+    expect(windOf(good, 2)).toBe(good);
+    expect(windOf(new Float32Array(15), 2)).toHaveLength(0);
+    expect(windOf(new Float32Array(0), 2)).toHaveLength(0);
+    expect(windOf(new Float32Array(0), 0)).toHaveLength(0);
   });
 
   it('bark maps need both getters', () => {
@@ -25,29 +23,29 @@ describe('wind data from the core', () => {
   });
 
   it('the first result carries the bark maps and the wind buffer, transferred', () => {
-    const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
-    const handle = createHandler(loadWasm(), (message, transfer) =>
-      sent.push({ message, transfer }),
-    );
-    handle({ type: 'generate', id: 1, params: { seed: 2 } });
-    handle({ type: 'generate', id: 2, params: { seed: 3 } });
-    const results = sent.filter((s) => s.message.type === 'result');
+    const h = harness();
+    h.handle({ type: 'generate', id: 1, params: { seed: 2 } });
+    h.handle({ type: 'generate', id: 2, params: { seed: 3 } });
+    const results = h.sent.filter((s) => s.message.type === 'result');
     expect(results).toHaveLength(2);
-    const [first, second] = results.map((r) => r.message as ResultResponse);
+    const [first, second] = h.results();
     if (!first || !second) throw new Error('no results');
-    expect(first.bark?.size).toBe(256);
-    expect(first.bark?.color).toHaveLength(256 * 256 * 4);
+    expect(first.barkTextures?.size).toBe(256);
+    expect(first.barkTextures?.color).toHaveLength(256 * 256 * 4);
     expect(results[0]?.transfer).toEqual(
-      expect.arrayContaining([first.bark?.color.buffer, first.bark?.normal.buffer]),
+      expect.arrayContaining([first.barkTextures?.color.buffer, first.barkTextures?.normal.buffer]),
     );
-    expect(second.bark).toBeUndefined();
-    // Wind: either the core's 8 floats per vertex or empty (older core), always transferred.
+    expect(second.barkTextures).toBeUndefined();
+    // Wind: the core's 8 floats per vertex, transferred.
+    let tree = null;
     for (const [i, r] of [first, second].entries()) {
-      const wind = r.wind ?? new Float32Array(0);
-      expect([0, (r.positions.length / 3) * 8]).toContain(wind.length);
+      const wind = r.bark?.wind ?? new Float32Array(0);
+      expect(wind.length).toBe(((r.bark?.positions.length ?? 0) / 3) * 8);
+      expect(wind.length).toBeGreaterThan(0);
       expect(results[i]?.transfer).toContain(wind.buffer);
-      const geometry = buildTreeGeometry(r);
-      expect(geometry.hasAttribute('windPivot')).toBe(wind.length > 0);
+      tree = mergeUpdate(tree, r);
+      const geometry = buildTreeGeometry(tree);
+      expect(geometry.hasAttribute('windPivot')).toBe(true);
     }
   });
 });

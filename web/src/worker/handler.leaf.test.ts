@@ -1,24 +1,15 @@
 /** Leaf inspector requests and tree foliage through the worker handler and the real wasm. */
 import { describe, expect, it, vi } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
-import { createHandler, readyMessage } from './handler';
-import type { LeafResponse, ResultResponse, WorkerResponse } from './protocol';
+import { harness } from '../testing/workerHarness';
+import { readyMessage } from './handler';
+import type { LeafResponse, WorkerResponse } from './protocol';
 
-function collect() {
-  const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
-  const handle = createHandler(loadWasm(), (message, transfer) => sent.push({ message, transfer }));
-  return { sent, handle };
-}
+const collect = () => harness();
 
 function leafOf(sent: { message: WorkerResponse }[]): LeafResponse {
   const m = sent.at(-1)?.message;
   if (m?.type !== 'leaf') throw new Error(`expected a leaf, got ${JSON.stringify(m)}`);
-  return m;
-}
-
-function resultOf(sent: { message: WorkerResponse }[]): ResultResponse {
-  const m = sent.at(-1)?.message;
-  if (m?.type !== 'result') throw new Error(`expected a result, got ${JSON.stringify(m)}`);
   return m;
 }
 
@@ -62,10 +53,11 @@ describe('leaf requests', () => {
   });
 
   it('trees carry foliage; the texture is sent once per leaf shape', () => {
-    const { sent, handle } = collect();
+    const h = collect();
+    const { sent, handle } = h;
     const params = { l1_branches: 6, l2_branches: 5 };
     handle({ type: 'generate', id: 1, params });
-    const first = resultOf(sent);
+    const first = h.tree();
     const f = first.foliage;
     if (!f) throw new Error('no foliage');
     const leaves = first.meta.leaves ?? 0;
@@ -75,15 +67,16 @@ describe('leaf requests', () => {
     expect(f.indices.length % 3).toBe(0);
     expect(f.positions.length / 3).toBe(f.uvs.length / 2);
     expect(f.texture?.rgba.length).toBe((f.texture?.width ?? 0) * (f.texture?.height ?? 0) * 4);
-    expect(sent.at(-1)?.transfer).toContain(f.matrices.buffer);
+    expect(sent.find((s) => s.message.type === 'result')?.transfer).toContain(f.matrices.buffer);
     // Not even read out of the module when it is not sent (a 128 KiB copy per tree).
-    const tree = (loadWasm() as unknown as { GeneratedTree: { prototype: object } }).GeneratedTree;
-    const read = vi.spyOn(tree.prototype as { leaf_texture(): Uint8Array }, 'leaf_texture');
+    const session = (loadWasm() as unknown as { Session: { prototype: object } }).Session;
+    const read = vi.spyOn(session.prototype as { leaf_texture(): Uint8Array }, 'leaf_texture');
     handle({ type: 'generate', id: 2, params: { ...params, seed: 2 } });
-    expect(resultOf(sent).foliage?.texture).toBeNull();
+    expect(h.lastResult().leafTexture).toBeUndefined();
+    expect(h.tree().foliage?.texture).toBeNull();
     expect(read).not.toHaveBeenCalled();
     handle({ type: 'generate', id: 3, params: { ...params, leaf_m: 5 } });
-    expect(resultOf(sent).foliage?.texture).not.toBeNull();
+    expect(h.tree().foliage?.texture).not.toBeNull();
     expect(read).toHaveBeenCalledTimes(1);
     read.mockRestore();
     handle({ type: 'generate', id: 4, params: { ...params, max_leaves: 0 } });

@@ -6,7 +6,11 @@ import type { WorkerResponse } from './protocol';
 
 function run(request: Parameters<ReturnType<typeof createHandler>>[0]) {
   const sent: WorkerResponse[] = [];
-  createHandler(loadWasm(), (message) => sent.push(message))(request);
+  const now = (task: () => void) => {
+    task();
+    return () => undefined;
+  };
+  createHandler(loadWasm(), (message) => sent.push(message), undefined, now)(request);
   return sent;
 }
 
@@ -23,8 +27,9 @@ describe('growth through the worker handler', () => {
       true,
     );
     expect(progress.every((m) => m.type === 'progress' && m.id === 7)).toBe(true);
-    const last = sent[sent.length - 1];
-    if (last?.type !== 'result') throw new Error('expected a result last');
+    const last = sent.findLast((m) => m.type === 'result');
+    if (last?.type !== 'result') throw new Error('expected a result');
+    expect(sent.at(-1)?.type).toBe('hash');
     expect(last.markers?.length).toBeGreaterThan(300);
     expect((last.markers?.length ?? 0) % 3).toBe(0);
   });
@@ -32,8 +37,8 @@ describe('growth through the worker handler', () => {
   it('sends volumes to the core: a crown sphere changes the tree, a bad one names the field', () => {
     const hash = (sent: WorkerResponse[]) => {
       const last = sent[sent.length - 1];
-      if (last?.type !== 'result') throw new Error(JSON.stringify(last));
-      return last.meta.hash;
+      if (last?.type !== 'hash') throw new Error(JSON.stringify(last));
+      return last.hash;
     };
     const plain = hash(run({ type: 'generate', id: 1, params: { ...GROW, crown_volume: 2 } }));
     const sphere = {

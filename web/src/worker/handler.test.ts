@@ -3,21 +3,13 @@ import { describe, expect, it } from 'vitest';
 import { defaultParams } from '../core/params';
 import { buildTreeGeometry } from '../viewer/geometry';
 import { loadWasm, realRegistry } from '../testing/realWasm';
-import { createHandler, readyMessage } from './handler';
-import type { ResultResponse, WorkerResponse } from './protocol';
+import { harness } from '../testing/workerHarness';
+import { readyMessage } from './handler';
 
-function collect() {
-  const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
-  const handle = createHandler(loadWasm(), (message, transfer) => sent.push({ message, transfer }));
-  return { sent, handle };
-}
-
-function onlyResult(sent: { message: WorkerResponse }[]): ResultResponse {
-  expect(sent).toHaveLength(1);
-  const message = sent[0]?.message;
-  if (message?.type !== 'result')
-    throw new Error(`expected a result, got ${JSON.stringify(message)}`);
-  return message;
+/** One request answered with a result and then its hash; the merged tree. */
+function onlyTree(h: ReturnType<typeof harness>) {
+  expect(h.sent.map((s) => s.message.type)).toEqual(['result', 'hash']);
+  return h.tree();
 }
 
 describe('real wasm through the worker handler', () => {
@@ -34,11 +26,14 @@ describe('real wasm through the worker handler', () => {
   });
 
   it('generates the default tree with buffer lengths that agree with meta', () => {
-    const { sent, handle } = collect();
-    handle({ type: 'generate', id: 1, params: {} });
-    const result = onlyResult(sent);
+    const h = harness();
+    h.handle({ type: 'generate', id: 1, params: {} });
+    const result = onlyTree(h);
+    const { sent } = h;
     const { meta } = result;
-    expect(result.id).toBe(1);
+    expect(h.lastResult().id).toBe(1);
+    expect(h.lastResult().meta.hash).toBe('');
+    expect(sent[1]?.message).toEqual({ type: 'hash', id: 1, hash: meta.hash });
     expect(meta.vertices).toBeGreaterThan(100);
     expect(result.positions.length).toBe(meta.vertices * 3);
     expect(result.normals.length).toBe(meta.vertices * 3);
@@ -63,17 +58,17 @@ describe('real wasm through the worker handler', () => {
   });
 
   it('explicit defaults give the same hash as an empty object (deterministic)', () => {
-    const a = collect();
+    const a = harness();
     a.handle({ type: 'generate', id: 1, params: {} });
-    const b = collect();
+    const b = harness();
     b.handle({ type: 'generate', id: 2, params: defaultParams(realRegistry()) });
-    expect(onlyResult(b.sent).meta.hash).toBe(onlyResult(a.sent).meta.hash);
+    expect(onlyTree(b).meta.hash).toBe(onlyTree(a).meta.hash);
   });
 
   it('builds a three.js geometry from the buffers without copying', () => {
-    const { sent, handle } = collect();
-    handle({ type: 'generate', id: 1, params: { seed: 3 } });
-    const result = onlyResult(sent);
+    const h = harness();
+    h.handle({ type: 'generate', id: 1, params: { seed: 3 } });
+    const result = onlyTree(h);
     const geometry = buildTreeGeometry(result);
     expect(geometry.getAttribute('position').array).toBe(result.positions);
     expect(geometry.getIndex()?.array).toBe(result.indices);
@@ -83,7 +78,7 @@ describe('real wasm through the worker handler', () => {
   });
 
   it('an invalid value gives a typed error naming the param', () => {
-    const { sent, handle } = collect();
+    const { sent, handle } = harness();
     handle({ type: 'generate', id: 7, params: { scale: -5 } });
     const message = sent[0]?.message;
     expect(message?.type).toBe('error');
@@ -95,7 +90,7 @@ describe('real wasm through the worker handler', () => {
   });
 
   it('an unknown param gives an unknown_param error', () => {
-    const { sent, handle } = collect();
+    const { sent, handle } = harness();
     handle({ type: 'generate', id: 8, params: { no_such_param: 1 } });
     const message = sent[0]?.message;
     expect(message?.type === 'error' && message.error.kind).toBe('unknown_param');
@@ -111,7 +106,7 @@ describe('real wasm through the worker handler', () => {
       .filter(([, v]) => Math.fround(v) !== v);
     expect(bounds.map(([id]) => id)).toEqual(expect.arrayContaining(['ratio', 'prune_width']));
     for (const [id, value] of bounds) {
-      const { sent, handle } = collect();
+      const { sent, handle } = harness();
       // leaves: 0: the range check is what is tested; a leaf shape at a bound may be refused
       // by the leaf's own rules (e.g. a blade of almost no area) once foliage builds it.
       handle({ type: 'generate', id: 1, params: { levels: 1, leaves: 0, [id]: value } });
@@ -121,7 +116,7 @@ describe('real wasm through the worker handler', () => {
 
   // Runs last in this file: the wasm instance is unusable after a panic.
   it('debug-panic reports the panic message as fatal, then refuses further work', () => {
-    const { sent, handle } = collect();
+    const { sent, handle } = harness();
     handle({ type: 'debug-panic' });
     const fatal = sent[0]?.message;
     expect(fatal?.type).toBe('fatal');

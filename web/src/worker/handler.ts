@@ -1,25 +1,18 @@
 /** Worker-side request handling over an initialised wasm API (no Worker globals; testable in Node). */
-import {
-  parseLeafInspection,
-  parseMeta,
-  parsePresets,
-  parseRegistry,
-  toSylvaError,
-} from '../core/parse';
-import type {
-  BarkTextureBuffers,
-  FoliageBuffers,
-  TreeMeta,
-  WasmApi,
-  WasmTree,
-} from '../core/types';
-import { volumeToCore } from '../core/volumes';
+import { parseLeafInspection, parsePresets, parseRegistry, toSylvaError } from '../core/parse';
+import type { WasmApi } from '../core/types';
 import { lodsResponse } from '../lod/lodHandler';
 import { exportFormatsOf, exportTree } from '../export/exportHandler';
-import type { LeafRequest, ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
+import {
+  deferToTimer,
+  PREVIEW_BUDGET_MS,
+  SessionGenerator,
+  type Defer,
+  type Post,
+} from './generate';
+import type { LeafRequest, ReadyResponse, WorkerRequest } from './protocol';
 
-/** Sends a response, transferring the given buffers. */
-export type Post = (message: WorkerResponse, transfer: Transferable[]) => void;
+export type { Post } from './generate';
 
 /** Builds the `ready` message from the wasm registry, presets and version. */
 export function readyMessage(wasm: WasmApi): ReadyResponse {
@@ -68,106 +61,49 @@ function busyWait(ms: number, now: () => number): void {
   }
 }
 
-/** The leaves of a generated tree; the texture only when the leaf shape differs from `sentHash`. */
-export function foliageOf(tree: WasmTree, meta: TreeMeta, sentHash: string): FoliageBuffers {
-  const leafHash = meta.leaf_hash ?? '';
-  const size = meta.leaf_texture;
-  const none = new Float32Array(0);
-  // Read (copied out of the module) only when it is sent.
-  const rgba = size && leafHash !== sentHash ? tree.leaf_texture?.() : undefined;
-  const texture = size && rgba?.length ? { width: size[0], height: size[1], rgba } : null;
-  return {
-    positions: tree.leaf_positions?.() ?? none.slice(),
-    normals: tree.leaf_normals?.() ?? none.slice(),
-    uvs: tree.leaf_uvs?.() ?? none.slice(),
-    indices: tree.leaf_indices?.() ?? new Uint32Array(0),
-    matrices: tree.leaf_matrices?.() ?? none.slice(),
-    colors: tree.leaf_colors?.() ?? none.slice(),
-    texture,
-    // A bare tree sent no texture: the next leafy tree must send one.
-    leafHash: size ? leafHash : '',
-  };
-}
-
-/** Edge length of the baked bark textures (texels). */
-export const BARK_TEXTURE_SIZE = 256;
-
-/** The core's bark maps, or undefined when this wasm build has none. */
-export function barkOf(wasm: WasmApi): BarkTextureBuffers | undefined {
-  if (typeof wasm.bark_color !== 'function' || typeof wasm.bark_normal !== 'function') {
-    return undefined;
-  }
-  const color = wasm.bark_color(BARK_TEXTURE_SIZE);
-  const normal = wasm.bark_normal(BARK_TEXTURE_SIZE);
-  const size = Math.round(Math.sqrt(color.length / 4));
-  if (size < 1 || size * size * 4 !== color.length || normal.length !== color.length) {
-    return undefined;
-  }
-  return { size, color, normal };
+/** Answers a leaf inspector request (throws what the core throws). */
+function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
+  if (!wasm.leaf_inspect) throw new Error('this generator has no leaf inspector');
+  const text = wasm.leaf_inspect(
+    JSON.stringify(request.params),
+    request.step,
+    request.triangulation,
+  );
+  post({ type: 'leaf', id: request.id, ...parseLeafInspection(text) }, []);
 }
 
 /**
- * The tree's wind data (8 floats per vertex), read defensively: empty when the core has no
- * `wind()` getter yet or its length does not match the vertex count.
+ * Creates the request handler: a typed error answers the request and the worker stays usable;
+ * a trap is fatal, and after it every request is answered with `fatal`.
  */
-export function windOf(tree: WasmTree, vertices: number): Float32Array {
-  const read = (tree as { wind?: () => Float32Array }).wind;
-  if (typeof read !== 'function') return new Float32Array(0);
-  const wind = read.call(tree);
-  return wind instanceof Float32Array && wind.length === vertices * 8 && vertices > 0
-    ? wind
-    : new Float32Array(0);
-}
-
-function foliageTransfer(f: FoliageBuffers): Transferable[] {
-  const buffers: Transferable[] = [
-    f.positions.buffer,
-    f.normals.buffer,
-    f.uvs.buffer,
-    f.indices.buffer,
-    f.matrices.buffer,
-    f.colors.buffer,
-  ];
-  if (f.texture) buffers.push(f.texture.rgba.buffer);
-  return buffers;
-}
-
-/** Answers a leaf inspector request (an invalid parameter is a typed error, a trap is fatal). */
-function handleLeaf(
-  wasm: WasmApi,
-  request: LeafRequest,
-  post: Post,
-  die: (t: unknown) => void,
-): void {
-  try {
-    if (!wasm.leaf_inspect) throw new Error('this generator has no leaf inspector');
-    const text = wasm.leaf_inspect(
-      JSON.stringify(request.params),
-      request.step,
-      request.triangulation,
-    );
-    post({ type: 'leaf', id: request.id, ...parseLeafInspection(text) }, []);
-  } catch (thrown) {
-    if (isTrap(thrown)) die(thrown);
-    else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
-  }
-}
-
-/** Creates the request handler; after a panic it answers every request with `fatal`. */
 export function createHandler(
   wasm: WasmApi,
   post: Post,
   now: () => number = () => performance.now(),
+  defer: Defer = deferToTimer,
+  previewBudgetMs: number = PREVIEW_BUDGET_MS,
 ): (request: WorkerRequest) => void {
   let deadMessage: string | null = null;
-  // The leaf texture is sent once per leaf shape: the hash of the last one sent.
-  let sentLeafHash = '';
-  // The bark textures go out once, with the first result (they never change).
-  let barkSent = false;
-
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
     post({ type: 'fatal', message: deadMessage }, []);
+  };
+  const generator = new SessionGenerator(wasm, post, {
+    defer,
+    previewBudgetMs,
+    onDeferredThrow: (thrown) => {
+      if (isTrap(thrown)) die(thrown);
+    },
+  });
+
+  /** Runs one request; what it throws becomes the request's error, or kills the worker. */
+  const run = (id: number | null, work: () => void): void => {
+    try {
+      work();
+    } catch (thrown) {
+      if (isTrap(thrown) || id === null) die(thrown);
+      else post({ type: 'error', id, error: toSylvaError(thrown) }, []);
+    }
   };
 
   return (request) => {
@@ -175,113 +111,32 @@ export function createHandler(
       post({ type: 'fatal', message: deadMessage }, []);
       return;
     }
-    if (request.type === 'debug-hang') {
-      busyWait(request.ms, now);
-      post({ type: 'idle' }, []);
-      return;
-    }
-    if (request.type === 'debug-panic') {
-      try {
-        wasm.debug_panic();
-        post({ type: 'fatal', message: 'debug_panic() returned without panicking' }, []);
-      } catch (thrown) {
-        die(thrown);
-      }
-      return;
-    }
-    if (request.type === 'leaf') {
-      handleLeaf(wasm, request, post, die);
-      return;
-    }
-    if (request.type === 'export') {
-      try {
-        exportTree(wasm, request, post);
-      } catch (thrown) {
-        if (isTrap(thrown)) die(thrown);
-        else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
-      }
-      return;
-    }
-    if (request.type === 'lods') {
-      try {
-        post(...lodsResponse(wasm, request));
-      } catch (thrown) {
-        if (isTrap(thrown)) die(thrown);
-        else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
-      }
-      return;
-    }
-    let tree: WasmTree;
-    try {
-      const input = request.volumes?.length
-        ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
-        : request.params;
-      const json = JSON.stringify(input);
-      const id = request.id;
-      let lastStep = -1;
-      // Progress while growing: at most 50 messages per request (every 2 %).
-      const progress = (fraction: number): void => {
-        const step = Math.floor(fraction * 50);
-        if (step === lastStep) return;
-        lastStep = step;
-        post({ type: 'progress', id, fraction }, []);
-      };
-      tree = wasm.generate_with_progress
-        ? wasm.generate_with_progress(json, progress)
-        : wasm.generate(json);
-    } catch (thrown) {
-      if (isTrap(thrown)) die(thrown);
-      else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
-      return;
-    }
-    try {
-      const positions = tree.positions();
-      const normals = tree.normals();
-      const uvs = tree.uvs();
-      const indices = tree.indices();
-      const envelope = tree.envelope_lines();
-      const markers = tree.markers ? tree.markers() : new Float32Array(0);
-      const meta = parseMeta(tree.meta_json());
-      const foliage = foliageOf(tree, meta, sentLeafHash);
-      sentLeafHash = foliage.leafHash;
-      const wind = windOf(tree, positions.length / 3);
-      const bark = barkSent ? undefined : barkOf(wasm);
-      barkSent = true;
-      post(
-        {
-          type: 'result',
-          id: request.id,
-          positions,
-          normals,
-          uvs,
-          indices,
-          envelope,
-          markers,
-          meta,
-          foliage,
-          wind,
-          ...(bark ? { bark } : {}),
-        },
-        [
-          ...foliageTransfer(foliage),
-          wind.buffer,
-          ...(bark ? [bark.color.buffer, bark.normal.buffer] : []),
-          markers.buffer,
-          positions.buffer,
-          normals.buffer,
-          uvs.buffer,
-          indices.buffer,
-          envelope.buffer,
-        ],
-      );
-    } catch (thrown) {
-      if (isTrap(thrown)) die(thrown);
-      else post({ type: 'error', id: request.id, error: toSylvaError(thrown) }, []);
-    } finally {
-      try {
-        tree.free();
-      } catch {
-        // freeing after a trap may fail; the instance is discarded anyway
+    switch (request.type) {
+      case 'generate':
+        run(request.id, () => generator.handle(request));
+        return;
+      case 'leaf':
+        run(request.id, () => handleLeaf(wasm, request, post));
+        return;
+      case 'export':
+        run(request.id, () => exportTree(wasm, request, post));
+        return;
+      case 'lods':
+        run(request.id, () => post(...lodsResponse(wasm, request)));
+        return;
+      case 'debug-hang':
+        busyWait(request.ms, now);
+        post({ type: 'idle' }, []);
+        return;
+      case 'debug-panic':
+        run(null, () => {
+          wasm.debug_panic();
+          throw new Error('debug_panic() returned without panicking');
+        });
+        return;
+      default: {
+        const unknown: never = request;
+        throw new Error(`unknown request ${JSON.stringify(unknown)}`);
       }
     }
   };

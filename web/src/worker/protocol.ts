@@ -5,7 +5,7 @@ import type {
   Params,
   Preset,
   SylvaError,
-  TreeBuffers,
+  TreeUpdate,
   VolumePrimitive,
 } from '../core/types';
 import type { LodsRequest, LodsResponse } from '../lod/types';
@@ -18,6 +18,11 @@ export interface GenerateRequest {
   params: Params;
   /** Growth mode: the user's volume primitives (sent as the core's `"volumes"` key). */
   volumes?: VolumePrimitive[];
+  /**
+   * A slider is being dragged: the worker may answer with a preview bark when the full one
+   * would take longer than a frame (the full tree follows when the drag settles).
+   */
+  preview?: boolean;
 }
 
 /** Ask the worker to panic on purpose (tests of the recovery path). */
@@ -62,10 +67,23 @@ export interface ReadyResponse {
   exportFormats?: ExportFormat[];
 }
 
-/** A generated tree; the five arrays arrive as transferred buffers. */
-export interface ResultResponse extends TreeBuffers {
+/**
+ * The tree for request `id`: the meta, and only the arrays that changed since the worker's
+ * previous result (transferred buffers; see `TreeUpdate`).
+ */
+export interface ResultResponse extends TreeUpdate {
   type: 'result';
   id: number;
+}
+
+/**
+ * The content hash of result `id`, computed after the result was posted (never for a preview).
+ * It may never come when a newer request superseded that tree.
+ */
+export interface HashResponse {
+  type: 'hash';
+  id: number;
+  hash: string;
 }
 
 /** A typed, recoverable error for one request (the worker stays usable). */
@@ -97,6 +115,7 @@ export interface IdleResponse {
 export type WorkerResponse =
   | ReadyResponse
   | ResultResponse
+  | HashResponse
   | ErrorResponse
   | FatalResponse
   | IdleResponse

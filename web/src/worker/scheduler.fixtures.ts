@@ -62,10 +62,13 @@ export function result(id: number): ResultResponse {
   return {
     type: 'result',
     id,
-    positions: new Float32Array(0),
-    normals: new Float32Array(0),
-    uvs: new Float32Array(0),
-    indices: new Uint32Array(0),
+    bark: {
+      positions: new Float32Array(0),
+      normals: new Float32Array(0),
+      uvs: new Float32Array(0),
+      indices: new Uint32Array(0),
+      wind: new Float32Array(0),
+    },
     envelope: new Float32Array(0),
     meta: META,
   };

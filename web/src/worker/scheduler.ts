@@ -2,6 +2,10 @@
  * Latest-request-wins scheduling over a restartable generator worker (no Worker globals here:
  * the worker comes from an injected factory, so this is unit-tested with a fake). A request
  * that runs past the time limit is stopped: the worker is terminated and recreated.
+ *
+ * Interactive requests (a slider being dragged) may be answered with a preview; when the drag
+ * settles ([`GenerationScheduler.settle`], or [`SETTLE_MS`] without a new interactive request)
+ * the same parameters are requested at full quality, so a preview never stays on screen.
  */
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
 import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
@@ -22,8 +26,10 @@ export type WorkerFactory = (
 export interface SchedulerCallbacks {
   /** The (re)started worker is ready; `restarts` counts recreations so far. */
   onReady(info: ReadyInfo, restarts: number): void;
-  /** A tree for request `result.id`. */
+  /** A tree for request `result.id` (only the arrays that changed since the previous one). */
   onResult(result: ResultResponse): void;
+  /** The content hash of the last result (`id`), computed after it. */
+  onHash?(hash: string, id: number): void;
   /** A typed error for a request, or a crash (`kind: 'panic'`, `id` null). */
   onError(error: SylvaError, id: number | null): void;
   /** Whether a request is in flight or pending. */
@@ -33,9 +39,18 @@ export interface SchedulerCallbacks {
 }
 
 type Slot =
-  | { type: 'generate'; id: number; params: Params; volumes?: VolumePrimitive[] }
+  | { type: 'generate'; id: number; params: Params; volumes?: VolumePrimitive[]; preview?: boolean }
   | { type: 'debug-panic' }
   | { type: 'debug-hang'; ms: number };
+
+/** A drag has settled after this long without an interactive request (ms). */
+export const SETTLE_MS = 150;
+
+/** How a request is made. */
+export interface RequestOptions {
+  /** Part of a continuous edit (a slider drag): a preview answer is acceptable. */
+  interactive?: boolean;
+}
 
 /** Default longest run of one request before the worker is stopped and recreated (ms). */
 export const DEFAULT_TIME_LIMIT_MS = 10_000;
@@ -82,6 +97,11 @@ export class GenerationScheduler {
   private restarts = 0;
   private busy = false;
   private disposed = false;
+  /** The last interactive request's input, until the full tree for it is requested. */
+  private unsettled: { params: Params; volumes?: VolumePrimitive[] } | null = null;
+  private settleTimer: ReturnType<typeof setTimeout> | null = null;
+  /** Id of the last result delivered (a hash is only delivered for it). */
+  private lastResultId = 0;
 
   constructor(
     private readonly factory: WorkerFactory,
@@ -101,14 +121,45 @@ export class GenerationScheduler {
     this.limitMs = checkLimit(ms);
   }
 
-  /** Requests a tree; returns the request id. Supersedes any request not yet sent. */
-  request(params: Params, volumes?: VolumePrimitive[]): number {
+  /**
+   * Requests a tree; returns the request id. Supersedes any request not yet sent. An
+   * interactive request may be answered with a preview; the full tree follows on [`settle`].
+   */
+  request(params: Params, volumes?: VolumePrimitive[], options: RequestOptions = {}): number {
     const id = this.nextId++;
-    this.pending = volumes?.length
-      ? { type: 'generate', id, params, volumes }
-      : { type: 'generate', id, params };
+    const interactive = options.interactive === true;
+    this.clearSettleTimer();
+    if (interactive) {
+      this.unsettled = volumes?.length ? { params, volumes } : { params };
+      this.settleTimer = setTimeout(() => this.settle(), SETTLE_MS);
+    } else {
+      this.unsettled = null;
+    }
+    this.pending = {
+      type: 'generate',
+      id,
+      params,
+      ...(volumes?.length ? { volumes } : {}),
+      ...(interactive ? { preview: true } : {}),
+    };
     this.pump();
     return id;
+  }
+
+  /**
+   * The continuous edit ended (slider released): requests the full tree for the last
+   * interactive request, if any. Returns its id, or null when nothing was unsettled.
+   */
+  settle(): number | null {
+    this.clearSettleTimer();
+    const last = this.unsettled;
+    if (last === null || this.disposed) return null;
+    return this.request(last.params, last.volumes);
+  }
+
+  private clearSettleTimer(): void {
+    if (this.settleTimer !== null) clearTimeout(this.settleTimer);
+    this.settleTimer = null;
   }
 
   /**
@@ -151,6 +202,8 @@ export class GenerationScheduler {
   dispose(): void {
     this.disposed = true;
     this.clearDeadline();
+    this.clearSettleTimer();
+    this.unsettled = null;
     this.worker?.terminate();
     this.worker = null;
     this.inFlight = null;
@@ -185,8 +238,12 @@ export class GenerationScheduler {
       case 'result':
         if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
         this.finishInFlight();
+        this.lastResultId = response.id;
         this.callbacks.onResult(response);
         break;
+      case 'hash':
+        if (response.id === this.lastResultId) this.callbacks.onHash?.(response.hash, response.id);
+        return;
       case 'error':
         if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
         this.finishInFlight();

@@ -1,0 +1,211 @@
+/**
+ * Generate requests over the core's incremental session (one per worker): the session reruns
+ * only the stages an edit touches, the answer carries only the arrays that changed since the
+ * previous answer, and the content hash follows in its own message once the buffers are out.
+ * No Worker globals: the scheduling of the hash is injected, so this is tested in Node.
+ */
+import { parseMeta } from '../core/parse';
+import type { BarkTextureBuffers, TreeMeta, TreeUpdate, WasmApi, WasmSession } from '../core/types';
+import { volumeToCore } from '../core/volumes';
+import type { GenerateRequest, WorkerResponse } from './protocol';
+
+/** Sends a response, transferring the given buffers. */
+export type Post = (message: WorkerResponse, transfer: Transferable[]) => void;
+
+/** Runs `task` later (after the current message), returning a function that cancels it. */
+export type Defer = (task: () => void) => () => void;
+
+/** The worker's default: a zero-delay timer (a queued request runs first and cancels it). */
+export const deferToTimer: Defer = (task) => {
+  const timer = setTimeout(task, 0);
+  return () => clearTimeout(timer);
+};
+
+/**
+ * Longest the full bark may take (by the last full sweep) before a drag is answered with a
+ * preview bark (ms). The default tree's bark takes about 8 ms in wasm on a 2-core machine, its
+ * preview under 2: with the skeleton and the leaves that keeps a drag inside a frame.
+ */
+export const PREVIEW_BUDGET_MS = 4;
+
+/** Edge length of the baked bark textures (texels). */
+export const BARK_TEXTURE_SIZE = 256;
+
+/** The core's bark maps, or undefined when this wasm build has none. */
+export function barkOf(wasm: WasmApi): BarkTextureBuffers | undefined {
+  if (typeof wasm.bark_color !== 'function' || typeof wasm.bark_normal !== 'function') {
+    return undefined;
+  }
+  const color = wasm.bark_color(BARK_TEXTURE_SIZE);
+  const normal = wasm.bark_normal(BARK_TEXTURE_SIZE);
+  const size = Math.round(Math.sqrt(color.length / 4));
+  if (size < 1 || size * size * 4 !== color.length || normal.length !== color.length) {
+    return undefined;
+  }
+  return { size, color, normal };
+}
+
+/**
+ * The tree's wind data (8 floats per vertex), read defensively: empty when its length does
+ * not match the vertex count.
+ */
+export function windOf(wind: Float32Array, vertices: number): Float32Array {
+  return wind.length === vertices * 8 && vertices > 0 ? wind : new Float32Array(0);
+}
+
+/** The arrays of `update`, for the transfer list. */
+export function transferOf(update: TreeUpdate): Transferable[] {
+  const views: ArrayBufferView[] = [];
+  const b = update.bark;
+  if (b) views.push(b.positions, b.normals, b.uvs, b.indices, b.wind);
+  if (update.envelope) views.push(update.envelope);
+  if (update.markers) views.push(update.markers);
+  if (update.instances) views.push(update.instances.matrices, update.instances.colors);
+  const l = update.leafMesh;
+  if (l) views.push(l.positions, l.normals, l.uvs, l.indices);
+  if (update.leafTexture) views.push(update.leafTexture.rgba);
+  if (update.barkTextures) views.push(update.barkTextures.color, update.barkTextures.normal);
+  return [...new Set(views.map((v) => v.buffer as ArrayBuffer))];
+}
+
+/** Settings of a [`SessionGenerator`]. */
+export interface SessionGeneratorOptions {
+  /** How the hash is scheduled after a result (default: a zero-delay timer). */
+  defer?: Defer;
+  /** Bark time above which a drag gets a preview (ms; default [`PREVIEW_BUDGET_MS`]). */
+  previewBudgetMs?: number;
+  /** Called with what a deferred hash computation threw (a trap kills the worker). */
+  onDeferredThrow?: (thrown: unknown) => void;
+}
+
+/** Answers generate requests; throws what the core throws (the caller tells traps apart). */
+export class SessionGenerator {
+  private readonly session: WasmSession;
+  /** Leaf shape whose texture the main thread has ('' = none). */
+  private sentLeafHash = '';
+  private barkSent = false;
+  /** Result whose hash is still to be posted, and the cancel of its scheduled task. */
+  private hashOwed: number | null = null;
+  private cancelHash: (() => void) | null = null;
+
+  private readonly defer: Defer;
+  private readonly previewBudgetMs: number;
+  private readonly onDeferredThrow: (thrown: unknown) => void;
+
+  constructor(
+    private readonly wasm: WasmApi,
+    private readonly post: Post,
+    options: SessionGeneratorOptions = {},
+  ) {
+    this.session = new wasm.Session();
+    this.defer = options.defer ?? deferToTimer;
+    this.previewBudgetMs = options.previewBudgetMs ?? PREVIEW_BUDGET_MS;
+    this.onDeferredThrow = options.onDeferredThrow ?? (() => undefined);
+  }
+
+  /** Generates the tree of `request` and posts the changed arrays (then, later, the hash). */
+  handle(request: GenerateRequest): void {
+    this.cancelHash?.();
+    this.cancelHash = null;
+    const input = request.volumes?.length
+      ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
+      : request.params;
+    let lastStep = -1;
+    // Progress while growing: at most 50 messages per request (every 2 %).
+    const progress = (fraction: number): void => {
+      const step = Math.floor(fraction * 50);
+      if (step === lastStep) return;
+      lastStep = step;
+      this.post({ type: 'progress', id: request.id, fraction }, []);
+    };
+    const budget = request.preview ? this.previewBudgetMs : -1;
+    let meta: TreeMeta;
+    try {
+      meta = parseMeta(this.session.update(JSON.stringify(input), budget, progress));
+    } catch (thrown) {
+      // The previous tree stays on screen: it still needs its hash if a newer request took it.
+      this.postOwedHash();
+      throw thrown;
+    }
+    const update = this.collect(meta);
+    this.post({ type: 'result', id: request.id, ...update }, transferOf(update));
+    this.hashOwed = meta.preview ? null : request.id;
+    if (this.hashOwed !== null) {
+      this.cancelHash = this.defer(() => {
+        this.cancelHash = null;
+        try {
+          this.postOwedHash();
+        } catch (thrown) {
+          this.onDeferredThrow(thrown);
+        }
+      });
+    }
+  }
+
+  /** Forgets the cached stages (the next request generates cold). */
+  clear(): void {
+    this.cancelHash?.();
+    this.cancelHash = null;
+    this.hashOwed = null;
+    this.session.clear();
+  }
+
+  private postOwedHash(): void {
+    const id = this.hashOwed;
+    this.hashOwed = null;
+    if (id === null) return;
+    const hash = this.session.hash();
+    if (hash) this.post({ type: 'hash', id, hash }, []);
+  }
+
+  /** The arrays `meta.changes` names, copied out of the module (one copy each). */
+  private collect(meta: TreeMeta): TreeUpdate {
+    const s = this.session;
+    const changes = meta.changes ?? {
+      skeleton: true,
+      bark: true,
+      placements: true,
+      leaf_mesh: true,
+      leaf: true,
+    };
+    const update: TreeUpdate = { meta };
+    if (changes.bark) {
+      update.bark = {
+        positions: s.positions(),
+        normals: s.normals(),
+        uvs: s.uvs(),
+        indices: s.indices(),
+        wind: windOf(s.wind(), meta.vertices),
+      };
+    }
+    if (changes.skeleton) {
+      update.envelope = s.envelope_lines();
+      update.markers = s.markers();
+    }
+    if (changes.placements) {
+      update.instances = { matrices: s.leaf_matrices(), colors: s.leaf_colors() };
+    }
+    if (changes.leaf_mesh) {
+      update.leafMesh = {
+        positions: s.leaf_positions(),
+        normals: s.leaf_normals(),
+        uvs: s.leaf_uvs(),
+        indices: s.leaf_indices(),
+      };
+    }
+    const leafHash = meta.leaf_texture ? (meta.leaf_hash ?? '') : '';
+    if (leafHash !== this.sentLeafHash && meta.leaf_texture) {
+      const [width, height] = meta.leaf_texture;
+      const rgba = s.leaf_texture();
+      if (rgba.length === width * height * 4) update.leafTexture = { width, height, rgba };
+    }
+    // A bare tree sent no texture: the next leafy tree must send one.
+    this.sentLeafHash = leafHash;
+    if (!this.barkSent) {
+      this.barkSent = true;
+      const bark = barkOf(this.wasm);
+      if (bark) update.barkTextures = bark;
+    }
+    return update;
+  }
+}
