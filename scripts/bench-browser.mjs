@@ -1,8 +1,11 @@
-// Browser part of `npm run bench`: the worker round trip in the real app (built `web/dist`,
-// served by `vite preview`, headless Chromium). For each of N slider changes it reads the figures
-// the app itself measures (stats overlay): request -> geometry built on the main thread
-// (generation in the worker + transfer + BufferGeometry), and the GPU upload + draw after it.
-// Exports `benchBrowser()`; run directly it prints the result.
+// Browser part of `npm run bench`: the built app (`web/dist`, served by `vite preview`) in
+// headless Chromium, measured end to end with the app's own debug events (`?debug=1`):
+//   - first_tree_ms: navigation to the first tree drawn (median over fresh pages);
+//   - drag: 20-step drags of each slider of DRAG_PARAMS; per step, the time from the input event
+//     to the answer (preview or full) being in the scene (`sylva:applied`), then the next frame's
+//     upload + draw (`sylva:frame`, the GPU waited for) reported apart as frame_ms; after each
+//     drag, settle_ms = release to the full-quality tree on screen.
+// Exports `benchBrowser()` and `serve()`; run directly it prints the result.
 import { spawn } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -14,91 +17,252 @@ const CHROMIUM = chromiumPath();
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
   const m = s.length >> 1;
-  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
+  return s.length ? (s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2) : null;
 };
+const percentile = (xs, p) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length ? s[Math.min(s.length - 1, Math.ceil((p / 100) * s.length) - 1)] : null;
+};
+const round = (x) => (x === null ? null : Math.round(x * 100) / 100);
 
-async function serve(port) {
-  const server = spawn(
-    'npm',
-    ['run', 'preview', '-w', 'web', '--', '--port', String(port), '--strictPort'],
-    {
-      cwd: root,
-      stdio: ['ignore', 'pipe', 'pipe'],
-    },
-  );
-  const url = `http://127.0.0.1:${port}/`;
-  for (let i = 0; i < 100; i++) {
+/** The sliders (and other controls) the drag benchmark moves, in order. */
+export const DRAG_PARAMS = [
+  'l1_branches',
+  'l1_length',
+  'attraction_up',
+  'shape',
+  'leaves',
+  'foliage_angle',
+  'leaf_teeth',
+  'mesh_quality',
+  'seed',
+  'show_preview',
+];
+const STEPS = 20;
+
+/**
+ * Starts `vite preview` of `outDir` (default web/dist) on `port` in a process group of its own,
+ * waits until it answers, and returns `{ url, stop }`; `stop()` ends the whole group (vite
+ * itself, not only a wrapper) and resolves when it has exited.
+ */
+export async function serve(port, { outDir } = {}) {
+  const vite = fileURLToPath(new URL('../node_modules/vite/bin/vite.js', import.meta.url));
+  const args = [vite, 'preview', '--port', String(port), '--strictPort', '--host', '127.0.0.1'];
+  if (outDir) args.push('--outDir', outDir);
+  const server = spawn(process.execPath, args, {
+    cwd: `${root}/web`,
+    stdio: 'ignore',
+    detached: true,
+  });
+  const exited = new Promise((resolve) => server.once('exit', resolve));
+  const stop = async () => {
     try {
-      if ((await fetch(url)).ok) return { server, url };
+      process.kill(-server.pid, 'SIGTERM');
+    } catch {
+      // already gone
+    }
+    await exited;
+  };
+  const url = `http://127.0.0.1:${port}/`;
+  for (let i = 0; i < 150; i++) {
+    try {
+      if ((await fetch(url)).ok) return { url, stop, pid: server.pid };
     } catch {
       // not up yet
     }
+    if (server.exitCode !== null) break;
     await new Promise((r) => setTimeout(r, 100));
   }
-  server.kill();
+  await stop();
   throw new Error('vite preview did not start');
 }
 
-/** Median round trip of `runs` regenerations of the default tree; null when no browser. */
-export async function benchBrowser(runs = 25) {
-  if (!existsSync(CHROMIUM)) return null;
-  if (!existsSync(`${root}/web/dist/index.html`))
-    throw new Error('web/dist is missing: npm run build first');
-  const { server, url } = await serve(4391);
-  const browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: CHROMIUM_ARGS,
-  });
-  try {
-    // Wind paused (reduced motion): software WebGL would otherwise spend the CPU on animation
-    // frames that a real GPU draws for free, and the round trip would measure SwiftShader.
-    const page = await browser.newPage({
+/** Navigation to the first tree drawn (ms), in a fresh page each time. */
+async function firstTree(browser, url, runs) {
+  const times = [];
+  for (let i = 0; i < runs; i++) {
+    const context = await browser.newContext({
       viewport: { width: 1000, height: 700 },
       reducedMotion: 'reduce',
     });
-    await page.goto(`${url}?v=1`);
-    const stat = page.getByTestId('stat-roundtrip');
-    const hash = page.getByTestId('stat-hash');
-    await page.waitForFunction(() =>
-      /^[0-9a-f]{16}$/.test(
-        document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
-      ),
-    );
-    const slider = page.locator('input[type="range"][data-param-id="l1_length"]');
-    const trips = [];
-    const draws = [];
-    let vertices = 0;
-    for (let i = 0; i < runs + 3; i++) {
-      const before = (await hash.textContent())?.trim();
-      await slider.evaluate(
-        (el, v) => {
-          const input = el;
-          Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')?.set?.call(
-            input,
-            String(v),
+    const page = await context.newPage();
+    // Before any app code runs: resolve with the end of the first frame after the first tree.
+    await page.addInitScript(() => {
+      window.__firstTree = new Promise((resolve) => {
+        addEventListener(
+          'sylva:applied',
+          () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now()), 0)),
+          { once: true },
+        );
+      });
+    });
+    await page.goto(`${url}?debug=1`);
+    times.push(await page.evaluate(() => window.__firstTree));
+    await context.close();
+  }
+  return times;
+}
+
+/**
+ * Applies `value` to the control of `id` in the page and resolves with the answer's timing:
+ * `{ ms, preview, frameMs }` (input to answer in the scene; the next frame's upload + draw).
+ */
+function step(page, id, value) {
+  return page.evaluate(
+    ([id, value]) =>
+      new Promise((resolve, reject) => {
+        const el =
+          id === 'seed'
+            ? document.querySelector('#seed-field')
+            : document.querySelector(
+                `input[type="range"][data-param-id="${id}"], select[data-param-id="${id}"], input[type="checkbox"][data-param-id="${id}"]`,
+              );
+        if (!el) return reject(new Error(`no control for ${id}`));
+        const timer = setTimeout(() => reject(new Error(`no answer for ${id}=${value}`)), 20_000);
+        let answer = null;
+        const onFrame = (e) => {
+          if (answer === null) return;
+          removeEventListener('sylva:frame', onFrame);
+          clearTimeout(timer);
+          resolve({ ...answer, frameMs: e.detail.ms });
+        };
+        addEventListener(
+          'sylva:applied',
+          (e) => {
+            answer = { ms: e.detail.at - t0, preview: e.detail.preview };
+          },
+          { once: true },
+        );
+        addEventListener('sylva:frame', onFrame);
+        const t0 = performance.now();
+        if (el instanceof HTMLInputElement && el.type === 'checkbox') {
+          el.click();
+        } else {
+          const proto = el instanceof HTMLSelectElement ? HTMLSelectElement : HTMLInputElement;
+          Object.getOwnPropertyDescriptor(proto.prototype, 'value').set.call(el, String(value));
+          el.dispatchEvent(
+            new Event(el instanceof HTMLSelectElement ? 'change' : 'input', { bubbles: true }),
           );
-          input.dispatchEvent(new Event('input', { bubbles: true }));
-        },
-        0.3 + 0.01 * ((i % 7) + 1),
-      );
-      await page.waitForFunction((b) => {
-        const h = document.querySelector('[data-testid=stat-hash]')?.textContent?.trim();
-        return h !== b && !document.querySelector('[data-testid=busy]');
-      }, before);
-      const trip = Number(await stat.getAttribute('data-roundtrip-ms'));
-      const draw = Number((await stat.getAttribute('data-draw-ms')) || 0);
-      vertices = Number(
-        ((await page.getByTestId('stat-vertices').textContent()) ?? '').replace(/[^0-9]/g, ''),
-      );
-      if (i >= 3) {
-        trips.push(trip);
-        draws.push(draw);
+        }
+      }),
+    [id, value],
+  );
+}
+
+/** The release at the end of a drag: resolves with the time to the full-quality tree. */
+function release(page) {
+  return page.evaluate(
+    () =>
+      new Promise((resolve, reject) => {
+        const timer = setTimeout(() => reject(new Error('no full tree after the drag')), 20_000);
+        const t0 = performance.now();
+        const onApplied = (e) => {
+          if (e.detail.preview) return;
+          removeEventListener('sylva:applied', onApplied);
+          clearTimeout(timer);
+          resolve(e.detail.at - t0);
+        };
+        addEventListener('sylva:applied', onApplied);
+        dispatchEvent(new PointerEvent('pointerup', { bubbles: true }));
+      }),
+  );
+}
+
+/** The values of a 20-step drag of the control of `spec`, from its current `value`. */
+function dragValues(spec, value) {
+  if (spec.id === 'seed') return Array.from({ length: STEPS }, (_, i) => value + i + 1);
+  if (spec.kind === 'bool') return Array.from({ length: STEPS }, (_, i) => (value + i + 1) % 2);
+  if (spec.kind === 'enum') {
+    const n = spec.max + 1;
+    return Array.from({ length: STEPS }, (_, i) => (value + i + 1) % n);
+  }
+  // A drag across a fifth of the range and back, one slider step or more at a time.
+  const span = (spec.max - spec.min) / 5;
+  const delta = Math.max(spec.step, span / (STEPS / 2));
+  const dir = value + span <= spec.max ? 1 : -1;
+  return Array.from({ length: STEPS }, (_, i) => {
+    const k = i < STEPS / 2 ? i + 1 : STEPS - i - 1;
+    const v = value + dir * k * delta;
+    const snapped = Math.round((v - spec.min) / spec.step) * spec.step + spec.min;
+    return Math.min(spec.max, Math.max(spec.min, Number(snapped.toFixed(6))));
+  });
+}
+
+/** 20-step drags of every control in DRAG_PARAMS on the default tree. */
+async function drag(browser, url) {
+  const page = await browser.newPage({
+    viewport: { width: 1000, height: 700 },
+    reducedMotion: 'reduce',
+  });
+  await page.goto(`${url}?debug=1&v=1`);
+  await page.waitForFunction(() =>
+    /^[0-9a-f]{16}$/.test(
+      document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
+    ),
+  );
+  await page.evaluate(() => window.__sylva.measureFrames(true));
+  const per = {};
+  const all = [];
+  const frames = [];
+  const settles = [];
+  for (const id of DRAG_PARAMS) {
+    const spec = await page.evaluate((id) => {
+      const el =
+        id === 'seed'
+          ? document.querySelector('#seed-field')
+          : document.querySelector(`[data-param-id="${id}"]:not([type=number])`);
+      if (!el) return null;
+      if (el instanceof HTMLSelectElement) {
+        return { id, kind: 'enum', max: el.options.length - 1, value: Number(el.value) };
       }
+      if (el.type === 'checkbox') return { id, kind: 'bool', value: el.checked ? 1 : 0 };
+      return {
+        id,
+        kind: 'float',
+        min: Number(el.min),
+        max: Number(el.max),
+        step: Number(el.step) || 1,
+        value: Number(el.value),
+      };
+    }, id);
+    if (!spec) throw new Error(`no control for ${id}`);
+    const times = [];
+    for (const v of dragValues(spec, spec.value)) {
+      const r = await step(page, id, v);
+      times.push(r.ms);
+      frames.push(r.frameMs);
     }
-    return { runs, vertices, round_trip_median_ms: median(trips), draw_median_ms: median(draws) };
+    per[id] = round(median(times));
+    all.push(...times);
+    // A viewer-only control regenerates nothing: there is nothing to settle.
+    if (id !== 'show_preview') settles.push(await release(page));
+    await page.waitForTimeout(200);
+  }
+  await page.close();
+  return {
+    steps: all.length,
+    median_ms: round(median(all)),
+    p95_ms: round(percentile(all, 95)),
+    per_param: per,
+    settle_ms: round(median(settles)),
+    frame_ms: round(median(frames)),
+  };
+}
+
+/** The browser benchmark; null when there is no Chromium. */
+export async function benchBrowser(runs = 7) {
+  if (!existsSync(CHROMIUM)) return null;
+  if (!existsSync(`${root}/web/dist/index.html`))
+    throw new Error('web/dist is missing: npm run build first');
+  const { url, stop } = await serve(4391);
+  const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  try {
+    const first = await firstTree(browser, url, Math.max(3, Math.min(runs, 7)));
+    const dragged = await drag(browser, url);
+    return { first_tree_ms: round(median(first)), drag: dragged };
   } finally {
     await browser.close();
-    server.kill();
+    await stop();
   }
 }
 

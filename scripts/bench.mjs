@@ -92,22 +92,98 @@ for (const preset of cases) {
   });
 }
 
-// The worker round trip in the real app (generate + transfer + geometry), default tree.
+// Incremental regeneration (the worker's session), default tree in wasm: an edit of each stage,
+// at full quality and as a drag is answered (a preview bark when the full one is over the
+// worker's 4 ms budget), plus the copies out of the module and the hash that follows.
+const incremental = {};
+if (typeof wasm.Session === 'function') {
+  const session = new wasm.Session();
+  const edits = {
+    skeleton: ['l1_length', 0.3, 0.01],
+    mesh: ['mesh_quality', 1, 0.05],
+    foliage: ['foliage_angle', 45, 1],
+    leaf: ['leaf_teeth', 12, 1],
+  };
+  for (const [stage, [id, base, d]] of Object.entries(edits)) {
+    const timed = (budget) => {
+      session.update('{}', -1);
+      const xs = [];
+      let meta;
+      for (let i = 0; i < runs + 3; i++) {
+        const t0 = performance.now();
+        meta = JSON.parse(
+          session.update(JSON.stringify({ [id]: base + d * (1 + (i % 2)) }), budget),
+        );
+        if (i >= 3) xs.push(performance.now() - t0);
+      }
+      return { ms: median(xs), preview: meta.preview };
+    };
+    const full = timed(-1);
+    const drag = timed(4);
+    incremental[stage] = {
+      param: id,
+      full_ms: full.ms,
+      drag_ms: drag.ms,
+      drag_preview: drag.preview,
+    };
+  }
+  const copy = [];
+  const hash = [];
+  for (let i = 0; i < runs; i++) {
+    session.update(JSON.stringify({ seed: 1 + (i % 2) }), -1);
+    let t0 = performance.now();
+    for (const f of [
+      'positions',
+      'normals',
+      'uvs',
+      'indices',
+      'wind',
+      'leaf_matrices',
+      'leaf_colors',
+    ])
+      session[f]();
+    copy.push(performance.now() - t0);
+    t0 = performance.now();
+    session.hash();
+    hash.push(performance.now() - t0);
+  }
+  incremental.copy_out_ms = median(copy);
+  incremental.hash_ms = median(hash);
+  session.free();
+}
+
+// The app in the browser: first tree, and drags of the studio's sliders (bench-browser.mjs).
 execFileSync('npm', ['run', 'build', '-w', 'web'], { cwd: root, stdio: 'ignore' });
 const browser = await benchBrowser(runs);
+// With --json everything goes into this one object, printed at the end.
+const report = { runs, results, incremental, browser };
 
-if (asJson) {
-  console.log(JSON.stringify({ runs, results, browser }, null, 2));
-} else {
-  if (browser) {
+if (!asJson) {
+  const inc = Object.entries(incremental).filter(([, v]) => typeof v === 'object');
+  if (inc.length) {
     console.log(
-      `Browser (headless Chromium, default tree, ${browser.vertices} vertices): round trip ${browser.round_trip_median_ms.toFixed(1)} ms ` +
-        `(worker generate + transfer + BufferGeometry; drawn on the next frame); median of ${browser.runs}.`,
+      'Incremental edits of the default tree in wasm (median ms; drag = answer during a drag):\n' +
+        inc
+          .map(
+            ([k, v]) =>
+              `  ${k.padEnd(9)} (${v.param}): full ${v.full_ms.toFixed(2)}, drag ${v.drag_ms.toFixed(2)}${v.drag_preview ? ' (preview)' : ''}`,
+          )
+          .join('\n') +
+        `\n  copy out ${incremental.copy_out_ms.toFixed(2)}, hash ${incremental.hash_ms.toFixed(2)}`,
+    );
+  }
+  if (browser) {
+    const d = browser.drag;
+    console.log(
+      `Browser (headless Chromium, built app, default tree): first tree ${browser.first_tree_ms} ms after navigation.\n` +
+        `Drag (${d.steps} steps, input to answer in the scene): median ${d.median_ms} ms, p95 ${d.p95_ms} ms; ` +
+        `settle ${d.settle_ms} ms; next frame (upload + draw, SwiftShader) ${d.frame_ms} ms.\n` +
+        `  per control: ${Object.entries(d.per_param)
+          .map(([k, v]) => `${k} ${v}`)
+          .join(', ')}`,
     );
   } else {
-    console.log(
-      'Browser round trip: skipped (no Chromium at /usr/bin/chromium or $SYLVA_CHROMIUM).',
-    );
+    console.log('Browser: skipped (no Chromium at /usr/bin/chromium or $SYLVA_CHROMIUM).');
   }
   const f = (x) => x.toFixed(2).padStart(8);
   const mv = (x) => (x / 1e6).toFixed(1).padStart(7);
@@ -190,9 +266,8 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
       to_glb_copy: series.copy.length ? { median_ms: median(series.copy.slice(1)) } : null,
     },
   };
-  if (asJson) {
-    console.log(JSON.stringify({ glb }, null, 2));
-  } else {
+  report.glb = glb;
+  if (!asJson) {
     const ms = (s) =>
       s
         ? `${s.median_ms.toFixed(1)} ms` +
@@ -255,9 +330,8 @@ if (typeof wasm.leaf_json === 'function') {
       same_hash: r.hash === leaf.hash,
     });
   }
-  if (asJson) {
-    console.log(JSON.stringify({ leaf: { runs, results: leafResults } }, null, 2));
-  } else {
+  report.leaf = { runs, results: leafResults };
+  if (!asJson) {
     const f = (x) => x.toFixed(2).padStart(8);
     console.log(
       `\nLeaves, 5,000 auxin sources, medians over ${runs} runs (ms). wasm e2e = leaf_json including JSON.`,
@@ -296,11 +370,8 @@ if (typeof wasm.leaf_json === 'function') {
     .flatMap((f) => f.groups)
     .flatMap((g) => g.benchmarks)
     .map((b) => ({ name: b.name, median_ms: b.median, samples: b.sampleCount }));
-  if (asJson) {
-    console.log(
-      JSON.stringify({ forest: { trees: 10_000, budget_ms: 200, results: forest } }, null, 2),
-    );
-  } else {
+  report.forest = { trees: 10_000, budget_ms: 200, results: forest };
+  if (!asJson) {
     console.log('\nForest instancing data, 10,000 trees (Node, medians; budget 200 ms):');
     for (const r of forest)
       console.log(
@@ -308,3 +379,5 @@ if (typeof wasm.leaf_json === 'function') {
       );
   }
 }
+
+if (asJson) console.log(JSON.stringify(report, null, 2));
