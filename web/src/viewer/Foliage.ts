@@ -23,6 +23,9 @@ import {
 import type { FoliageBuffers } from '../core/types';
 import { wrapInstances } from './instances';
 
+/** Strength of the leaf's dim emissive copy of its texture (light shining through the blade). */
+export const LEAF_TRANSLUCENCY = 0.22;
+
 /** Owns the leaf mesh, texture and material. */
 export class Foliage {
   /** The leaf material (the viewer patches it with wind). */
@@ -32,7 +35,7 @@ export class Foliage {
     side: DoubleSide,
     alphaTest: 0.5,
     emissive: '#ffffff',
-    emissiveIntensity: 0.22,
+    emissiveIntensity: LEAF_TRANSLUCENCY,
   });
   private texture: DataTexture | null = null;
   private mesh: InstancedMesh | null = null;
