@@ -220,7 +220,11 @@ export const CELL_DENSITY = [0.1, 0.25, 0.5, 1] as const;
 export function densityCell(density: number): number {
   let best = 0;
   for (let k = 1; k < CELL_DENSITY.length; k++) {
-    if (Math.abs(Math.log(density / CELL_DENSITY[k]!)) < Math.abs(Math.log(density / CELL_DENSITY[best]!))) best = k;
+    if (
+      Math.abs(Math.log(density / CELL_DENSITY[k]!)) <
+      Math.abs(Math.log(density / CELL_DENSITY[best]!))
+    )
+      best = k;
   }
   return best;
 }
