@@ -82,7 +82,7 @@ describe('leaf requests', () => {
     handle({ type: 'generate', id: 2, params: { ...params, seed: 2 } });
     expect(resultOf(sent).foliage?.texture).toBeNull();
     expect(read).not.toHaveBeenCalled();
-    handle({ type: 'generate', id: 3, params: { ...params, leaf_m: 5 } });
+    handle({ type: 'generate', id: 3, params: { ...params, leaf_lobes: 5 } });
     expect(resultOf(sent).foliage?.texture).not.toBeNull();
     expect(read).toHaveBeenCalledTimes(1);
     read.mockRestore();
