@@ -1,13 +1,15 @@
 // Browser part of `npm run bench`: the built app (`web/dist`, served by `vite preview`) in
 // headless Chromium, measured end to end with the app's own debug events (`?debug=1`):
 //   - first_tree_ms: navigation to the first tree drawn (median over fresh pages);
-//   - drag: 20-step drags of each slider of DRAG_PARAMS; per step, the time from the input event
-//     to the answer (preview or full) being in the scene (`sylva:applied`), then the next frame's
-//     upload + draw (`sylva:frame`, the GPU waited for) reported apart as frame_ms; after each
-//     drag, settle_ms = release to the full-quality tree on screen.
+//   - drag: 20-step drags of each control of DRAG_PARAMS; per step, the time from the input event
+//     to the answer (preview or full) being in the scene (`sylva:applied`: buffers received,
+//     attributes set, ready for the next frame); after each drag, settle_ms = release to the
+//     full-quality tree in the scene; frame_ms = a frame's upload + draw (the GPU waited for),
+//     drawn after each drag and each release (no frames are drawn between the timed steps).
 // Exports `benchBrowser()` and `serve()`; run directly it prints the result.
 import { spawn } from 'node:child_process';
 import { existsSync } from 'node:fs';
+import { createServer } from 'node:net';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
@@ -40,6 +42,18 @@ export const DRAG_PARAMS = [
 ];
 const STEPS = 20;
 
+/** A TCP port nothing listens on now (a server of another checkout must not answer for ours). */
+export function freePort() {
+  return new Promise((resolve, reject) => {
+    const probe = createServer();
+    probe.once('error', reject);
+    probe.listen(0, '127.0.0.1', () => {
+      const { port } = probe.address();
+      probe.close(() => resolve(port));
+    });
+  });
+}
+
 /**
  * Starts `vite preview` of `outDir` (default web/dist) on `port` in a process group of its own,
  * waits until it answers, and returns `{ url, stop }`; `stop()` ends the whole group (vite
@@ -55,13 +69,27 @@ export async function serve(port, { outDir } = {}) {
     detached: true,
   });
   const exited = new Promise((resolve) => server.once('exit', resolve));
-  const stop = async () => {
+  const killGroup = () => {
     try {
       process.kill(-server.pid, 'SIGTERM');
     } catch {
       // already gone
     }
+  };
+  // A bench stopped with Ctrl+C (or ending by an error) takes its server with it.
+  const onSignal = () => {
+    killGroup();
+    process.exit(130);
+  };
+  process.once('exit', killGroup);
+  process.once('SIGINT', onSignal);
+  process.once('SIGTERM', onSignal);
+  const stop = async () => {
+    killGroup();
     await exited;
+    process.off('exit', killGroup);
+    process.off('SIGINT', onSignal);
+    process.off('SIGTERM', onSignal);
   };
   const url = `http://127.0.0.1:${port}/`;
   for (let i = 0; i < 150; i++) {
@@ -104,8 +132,8 @@ async function firstTree(browser, url, runs) {
 }
 
 /**
- * Applies `value` to the control of `id` in the page and resolves with the answer's timing:
- * `{ ms, preview, frameMs }` (input to answer in the scene; the next frame's upload + draw).
+ * Applies `value` to the control of `id` in the page and resolves with the time from the input
+ * event to the answer in the scene (`{ ms, preview }`).
  */
 function step(page, id, value) {
   return page.evaluate(
@@ -119,21 +147,14 @@ function step(page, id, value) {
               );
         if (!el) return reject(new Error(`no control for ${id}`));
         const timer = setTimeout(() => reject(new Error(`no answer for ${id}=${value}`)), 20_000);
-        let answer = null;
-        const onFrame = (e) => {
-          if (answer === null) return;
-          removeEventListener('sylva:frame', onFrame);
-          clearTimeout(timer);
-          resolve({ ...answer, frameMs: e.detail.ms });
-        };
         addEventListener(
           'sylva:applied',
           (e) => {
-            answer = { ms: e.detail.at - t0, preview: e.detail.preview };
+            clearTimeout(timer);
+            resolve({ ms: e.detail.at - t0, preview: e.detail.preview });
           },
           { once: true },
         );
-        addEventListener('sylva:frame', onFrame);
         const t0 = performance.now();
         if (el instanceof HTMLInputElement && el.type === 'checkbox') {
           el.click();
@@ -194,13 +215,23 @@ async function drag(browser, url) {
     viewport: { width: 1000, height: 700 },
     reducedMotion: 'reduce',
   });
+  page.on('crash', () => console.error('bench: the page crashed'));
+  page.on('pageerror', (e) => console.error(`bench: page error: ${e.message}`));
   await page.goto(`${url}?debug=1&v=1`);
   await page.waitForFunction(() =>
     /^[0-9a-f]{16}$/.test(
       document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
     ),
   );
-  await page.evaluate(() => window.__sylva.measureFrames(true));
+  // Software WebGL draws a frame of this tree in seconds: frames are not drawn between the
+  // timed steps (the answers are still set up, ready for a frame), and one frame is drawn and
+  // timed after each drag and after each release (frame_ms). With frames that slow a drag would
+  // also read as a pause and settle by itself: only the release settles here, as on a real GPU.
+  await page.evaluate(() => {
+    window.__sylva.pauseRendering(true);
+    window.__sylva.settleWhenIdle(false);
+  });
+  const probe = () => page.evaluate(() => window.__sylva.probeFrame());
   const per = {};
   const all = [];
   const frames = [];
@@ -227,15 +258,17 @@ async function drag(browser, url) {
     }, id);
     if (!spec) throw new Error(`no control for ${id}`);
     const times = [];
-    for (const v of dragValues(spec, spec.value)) {
-      const r = await step(page, id, v);
-      times.push(r.ms);
-      frames.push(r.frameMs);
-    }
+    for (const v of dragValues(spec, spec.value)) times.push((await step(page, id, v)).ms);
+    frames.push(await probe());
     per[id] = round(median(times));
+    if (process.env.SYLVA_BENCH_VERBOSE)
+      console.error(`bench: ${id} ${times.map((t) => t.toFixed(1)).join(' ')}`);
     all.push(...times);
     // A viewer-only control regenerates nothing: there is nothing to settle.
-    if (id !== 'show_preview') settles.push(await release(page));
+    if (id !== 'show_preview') {
+      settles.push(await release(page));
+      frames.push(await probe());
+    }
     await page.waitForTimeout(200);
   }
   await page.close();
@@ -254,7 +287,7 @@ export async function benchBrowser(runs = 7) {
   if (!existsSync(CHROMIUM)) return null;
   if (!existsSync(`${root}/web/dist/index.html`))
     throw new Error('web/dist is missing: npm run build first');
-  const { url, stop } = await serve(4391);
+  const { url, stop } = await serve(await freePort());
   const browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
   try {
     const first = await firstTree(browser, url, Math.max(3, Math.min(runs, 7)));

@@ -6,13 +6,13 @@ import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { serve } from './bench-browser.mjs';
+import { freePort, serve } from './bench-browser.mjs';
 
 test('serve() stops the whole preview server: the port is closed and no process is left', async () => {
   const dir = mkdtempSync(join(tmpdir(), 'sylva-serve-'));
   writeFileSync(join(dir, 'index.html'), '<!doctype html><title>ok</title>');
   try {
-    const { url, stop, pid } = await serve(4399, { outDir: dir });
+    const { url, stop, pid } = await serve(await freePort(), { outDir: dir });
     assert.equal((await fetch(url)).status, 200);
     await stop();
     await assert.rejects(fetch(url), 'the server still answers after stop()');

@@ -1,11 +1,11 @@
 //! `sylva leaf` and `sylva bench-leaf`: one leaf from a leaf preset and `--set` values.
 //!
 //! ```text
-//! sylva leaf [--preset NAME] [--set id=value]... [--svg FILE] [--step N] [--triangulation]
+//! sylva leaf [--preset NAME] [--set id=value]... [--svg FILE] [--obj FILE] [--step N] [--triangulation]
 //! sylva bench-leaf [--preset NAME] [--set id=value]... [--runs N] [--json]
 //! ```
 //! `leaf` prints the leaf as JSON (`sylva_core::leaf::json`) and writes the SVG drawing after
-//! growth step N (default: finished). `bench-leaf` generates the leaf `--runs` times (default
+//! growth step N (default: finished), and `--obj` the blade mesh (LOD0, with the petiole) as OBJ. `bench-leaf` generates the leaf `--runs` times (default
 //! 30) after a warm-up and reports median milliseconds per stage; without `--preset` it runs
 //! Oak (Open venation) and Maple (Closed), and unless `--set leaf_vein_density=...` is given it
 //! sets the density to the maximum, so each leaf gets the full 5,000 auxin sources.
@@ -14,13 +14,14 @@ use sylva_core::leaf::{self, presets, svg};
 use sylva_core::params::TreeParams;
 
 const USAGE: &str = "usage:
-  sylva leaf [--preset NAME] [--set id=value]... [--svg FILE] [--step N] [--triangulation]
+  sylva leaf [--preset NAME] [--set id=value]... [--svg FILE] [--obj FILE] [--step N] [--triangulation]
   sylva bench-leaf [--preset NAME] [--set id=value]... [--runs N] [--json]";
 
 struct Opts {
     presets: Vec<String>,
     sets: Vec<(String, String)>,
     svg: Option<String>,
+    obj: Option<String>,
     step: Option<u32>,
     triangulation: bool,
     runs: usize,
@@ -32,6 +33,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
         presets: Vec::new(),
         sets: Vec::new(),
         svg: None,
+        obj: None,
         step: None,
         triangulation: false,
         runs: 30,
@@ -48,6 +50,7 @@ fn parse(args: &[String]) -> Result<Opts, String> {
                 o.sets.push((k.to_string(), v.to_string()));
             }
             "--svg" => o.svg = Some(value("--svg")?),
+            "--obj" => o.obj = Some(value("--obj")?),
             "--step" => o.step = Some(value("--step")?.parse().map_err(|_| "--step takes a whole number".to_string())?),
             "--triangulation" => o.triangulation = true,
             "--runs" => o.runs = value("--runs")?.parse().map_err(|_| "--runs takes a whole number".to_string())?,
@@ -93,6 +96,9 @@ pub fn run(cmd: &str, args: &[String]) -> Result<String, String> {
     if let Some(path) = &o.svg {
         let opts = svg::SvgOptions { triangulation: o.triangulation, step: o.step, ..svg::SvgOptions::default() };
         std::fs::write(path, svg::render(&l, &opts)).map_err(|e| format!("cannot write {path}: {e}"))?;
+    }
+    if let Some(path) = &o.obj {
+        std::fs::write(path, l.mesh.to_obj()).map_err(|e| format!("cannot write {path}: {e}"))?;
     }
     Ok(leaf::json::to_json(&l))
 }

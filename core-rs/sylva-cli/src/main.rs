@@ -27,6 +27,7 @@ const USAGE: &str = "usage:
   sylva envelope --shape NAME [--samples N]
   sylva params [--markdown]
   sylva presets
+  sylva leaf-presets
   sylva bench [--preset NAME] [--runs N] [--json] [--glb]
 
 export (generate --out):
@@ -66,6 +67,7 @@ fn run(args: &[String]) -> Result<String, String> {
             sylva_core::params::registry_json()
         }),
         "presets" => Ok(presets::presets_json()),
+        "leaf-presets" => Ok(sylva_core::leaf::presets::presets_json()),
         "envelope" => envelope(rest),
         "bench" => bench(rest),
         "leaf" | "bench-leaf" => leaf::run(cmd, rest),

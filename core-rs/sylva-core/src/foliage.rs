@@ -260,7 +260,9 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
                 let front = face_up(d);
                 let s = (1.0 + rng.var(p.foliage_size_v)).max(0.05);
                 let len = p.foliage_scale * s;
-                push_matrix(&mut matrices, pos, d, front, len, len * p.foliage_scale_x);
+                // The petiole (leaf y from -Petiole Length to 0) starts on the stem.
+                let base = pos + d * (len * p.leaf_petiole);
+                push_matrix(&mut matrices, base, d, front, len, len * p.foliage_scale_x);
                 let v = p.foliage_color_v;
                 let b = 1.0 + rng.var(0.5 * v);
                 let yellow = 0.5 * v * rng.next_f32();

@@ -14,6 +14,9 @@ pub struct Preset {
     pub label: &'static str,
     /// One line about the tree.
     pub description: &'static str,
+    /// The leaf preset it wears ([`crate::leaf::presets`]): its values come first, the
+    /// tree's own values after them.
+    pub leaf: &'static str,
     /// Values that differ from the defaults, by parameter id.
     pub values: &'static [(&'static str, f64)],
 }
@@ -26,12 +29,14 @@ pub const PRESETS: &[Preset] = &[
         name: "default",
         label: "Default (Cylindrical)",
         description: "Aspen-like broadleaf with the Cylindrical crown, the guide's starting point.",
+        leaf: "aspen",
         values: &[],
     },
     Preset {
         name: "quaking_aspen",
         label: "Quaking Aspen",
         description: "Weber & Penn's Quaking Aspen: Tend Flame crown, slender and upright.",
+        leaf: "aspen",
         values: &[
             ("shape", 7.0),
         ],
@@ -40,6 +45,7 @@ pub const PRESETS: &[Preset] = &[
         name: "black_tupelo",
         label: "Black Tupelo",
         description: "Weber & Penn's Black Tupelo: Tapered Cylindrical, four levels, wavy twigs.",
+        leaf: "tupelo",
         values: &[
             ("shape", 4.0),
             ("levels", 4.0),
@@ -94,6 +100,7 @@ pub const PRESETS: &[Preset] = &[
         name: "weeping_willow",
         label: "Weeping Willow",
         description: "Weber & Penn's Weeping Willow (paper values; Levels 3, see README): split trunk, hanging branches, pruned crown.",
+        leaf: "willow",
         values: &[
             ("shape", 3.0),
             ("levels", 3.0),
@@ -173,6 +180,7 @@ pub const PRESETS: &[Preset] = &[
         name: "ca_black_oak",
         label: "CA Black Oak",
         description: "Weber & Penn's California Black Oak: Hemispherical, forked trunk, twisting branches.",
+        leaf: "black_oak",
         values: &[
             ("shape", 2.0),
             ("levels", 3.0),
@@ -250,6 +258,7 @@ pub const PRESETS: &[Preset] = &[
         name: "fir",
         label: "Fir (Conical)",
         description: "A conifer: Conical crown, a straight leader and many short whorled branches.",
+        leaf: "fir",
         values: &[
             ("shape", 0.0),
             ("levels", 3.0),
@@ -289,12 +298,17 @@ pub const PRESETS: &[Preset] = &[
             ("l1_branches", 110.0),
             ("l2_branches", 22.0),
             ("l3_branches", 10.0),
+            ("leaves", 80.0),
+            ("foliage_scale", 0.045),
+            ("foliage_angle", 65.0),
+            ("foliage_size_v", 0.1),
         ],
     },
     Preset {
         name: "oak",
         label: "Oak (Spherical)",
         description: "A broad oak: Spherical crown, sturdy trunk, long crooked limbs.",
+        leaf: "oak",
         values: &[
             ("shape", 1.0),
             ("levels", 3.0),
@@ -345,6 +359,7 @@ pub const PRESETS: &[Preset] = &[
         name: "cypress",
         label: "Cypress (Flame)",
         description: "A columnar cypress: Flame crown, widest near its base, sharp tip.",
+        leaf: "fir",
         values: &[
             ("shape", 5.0),
             ("levels", 3.0),
@@ -385,12 +400,17 @@ pub const PRESETS: &[Preset] = &[
             ("l1_branches", 140.0),
             ("l2_branches", 14.0),
             ("l3_branches", 10.0),
+            ("leaves", 80.0),
+            ("foliage_scale", 0.035),
+            ("foliage_angle", 65.0),
+            ("foliage_size_v", 0.1),
         ],
     },
     Preset {
         name: "umbrella",
         label: "Umbrella Tree (Hemispherical)",
         description: "An umbrella tree: a tall bare trunk under a wide flat-topped dome.",
+        leaf: "maple",
         values: &[
             ("shape", 2.0),
             ("levels", 3.0),
@@ -441,6 +461,7 @@ pub const PRESETS: &[Preset] = &[
         name: "weeping",
         label: "Weeping Tree (Inverse Conical)",
         description: "A weeping tree: Inverse Conical crown and negative Attraction Up, as the guide suggests.",
+        leaf: "birch",
         values: &[
             ("shape", 6.0),
             ("levels", 3.0),
@@ -487,6 +508,7 @@ pub const PRESETS: &[Preset] = &[
         name: "grown_broadleaf",
         label: "Grown: Broadleaf",
         description: "Space colonization in an ellipsoid crown: a round broadleaf.",
+        leaf: "maple",
         values: &[
             ("growth_mode", 1.0),
             ("markers", 3000.0),
@@ -505,6 +527,7 @@ pub const PRESETS: &[Preset] = &[
         name: "grown_shrub",
         label: "Grown: Shrub",
         description: "Space colonization from several stems low to the ground: a shrub.",
+        leaf: "birch",
         values: &[
             ("growth_mode", 1.0),
             ("markers", 2500.0),
@@ -526,6 +549,7 @@ pub const PRESETS: &[Preset] = &[
         name: "grown_hedgerow",
         label: "Grown: Hedgerow",
         description: "Seven trunks in a row sharing one long crown: a hedgerow.",
+        leaf: "birch",
         values: &[
             ("growth_mode", 1.0),
             ("markers", 6000.0),
@@ -545,6 +569,7 @@ pub const PRESETS: &[Preset] = &[
         name: "grown_beside_wall",
         label: "Grown: Beside a Wall",
         description: "A tree 1.5 m from a wall: the wall shades the markers near it and the crown leans away.",
+        leaf: "aspen",
         values: &[
             ("growth_mode", 1.0),
             ("markers", 3000.0),
@@ -566,6 +591,7 @@ pub const PRESETS: &[Preset] = &[
         name: "grown_bushy",
         label: "Grown: Bushy (reference)",
         description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5, 3,000 extra markers per 1,000 iterations.",
+        leaf: "oak",
         values: &[
             ("growth_mode", 1.0),
             ("markers", 400.0),
@@ -592,18 +618,25 @@ pub fn find(name: &str) -> Option<&'static Preset> {
 impl Preset {
     /// The preset's full parameters (defaults + its values).
     pub fn params(&self) -> Result<TreeParams, SylvaError> {
-        TreeParams::from_values(self.values.iter().copied())
+        TreeParams::from_values(self.all_values())
+    }
+
+    /// The leaf preset's values, then the tree's own (so a share link or the panel gets both).
+    pub fn all_values(&self) -> Vec<(&'static str, f64)> {
+        let leaf = crate::leaf::presets::find(self.leaf).map_or(&[][..], |l| l.values);
+        leaf.iter().chain(self.values).copied().collect()
     }
 }
 
-/// All presets as JSON: `[{name, label, description, values: {id: number}}]`.
+/// All presets as JSON: `[{name, label, description, leaf, values: {id: number}}]` (the values
+/// include the leaf preset's).
 pub fn presets_json() -> String {
     let list: Vec<serde_json::Value> = PRESETS
         .iter()
         .map(|p| {
             let values: serde_json::Map<String, serde_json::Value> =
-                p.values.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
-            serde_json::json!({"name": p.name, "label": p.label, "description": p.description, "values": values})
+                p.all_values().into_iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
+            serde_json::json!({"name": p.name, "label": p.label, "description": p.description, "leaf": p.leaf, "values": values})
         })
         .collect();
     serde_json::Value::Array(list).to_string()

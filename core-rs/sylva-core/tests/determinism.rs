@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "e7d19e9bb4466827"),
-    ("quaking_aspen", "ff80a5db3ea2da5b"),
-    ("black_tupelo", "8afa194cab056338"),
-    ("weeping_willow", "31a9726d507dbbfc"),
-    ("ca_black_oak", "a22c26af66b60024"),
-    ("fir", "5327545399bb634b"),
-    ("oak", "728fbafa9153ebf2"),
-    ("cypress", "fb3f643013029ed8"),
-    ("umbrella", "10d26da62b6b2cf7"),
-    ("weeping", "23bdca4475358959"),
-    ("grown_broadleaf", "b407898ad46f3ff8"),
-    ("grown_shrub", "201cf4b3a01a9792"),
-    ("grown_hedgerow", "5380c8c008b93283"),
-    ("grown_beside_wall", "f8bea739e2b5f4f7"),
-    ("grown_bushy", "1b358ec0246268f3"),
+    ("default", "41088e503ac19c21"),
+    ("quaking_aspen", "91b0baa6c862f71d"),
+    ("black_tupelo", "f425d6d44ba6afca"),
+    ("weeping_willow", "cb43ff9204212537"),
+    ("ca_black_oak", "21a59d820a353756"),
+    ("fir", "fd19447ede149177"),
+    ("oak", "c26a650d6393dd09"),
+    ("cypress", "00c3a2dc3c8d2663"),
+    ("umbrella", "808b3529e27a0ea8"),
+    ("weeping", "59ed23a398c41c55"),
+    ("grown_broadleaf", "c52199d4c9015def"),
+    ("grown_shrub", "cb51bb7fe018aa5f"),
+    ("grown_hedgerow", "7f0eedd7a6e0491c"),
+    ("grown_beside_wall", "14f2dd9b4794a6f4"),
+    ("grown_bushy", "0f48cd8e2545c527"),
 ];
 
 #[test]

@@ -37,9 +37,13 @@ fn default_tree_has_leaves_only_on_the_last_level() {
             (0..=200).any(|k| (s.sample(k as f32 / 200.0).0 - pos).length() < 0.02 * s.length.max(0.05) + 1e-3)
         })
     };
+    assert!(p.leaf_petiole > 0.0, "the default leaf (aspen) has a long petiole");
     for i in (0..n).step_by((n / 40).max(1)) {
-        let pos = frame(&g.foliage.matrices, i)[3];
-        assert!(on_stem(pos, last), "leaf {i} at {pos} is not on a level-{last} stem");
+        // The blade's base hangs Petiole Length (leaf y) beyond the stem: the petiole starts on it.
+        let [_, dir, _, blade] = frame(&g.foliage.matrices, i);
+        let pos = blade - dir * p.leaf_petiole;
+        assert!(on_stem(pos, last), "leaf {i}'s petiole at {pos} is not on a level-{last} stem");
+        assert!(!on_stem(blade, last) || p.leaf_petiole * dir.length() < 0.02, "the blade hangs off the stem");
     }
     // Leaves per stem: Leaves on each whole last-level stem (split records share them).
     let stems = g.skeleton.stems.iter().filter(|s| s.level == last).count();

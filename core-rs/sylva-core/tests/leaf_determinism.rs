@@ -6,11 +6,21 @@ use sylva_core::leaf::generate;
 use sylva_core::leaf::presets::LEAF_PRESETS;
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("oak", "70e4db4fbbcfab01"),
-    ("maple", "9aa9b8ea0ac66148"),
-    ("birch", "b7357091182e28ab"),
-    ("willow", "f00d88cf2d7ed763"),
-    ("pine", "a998de573e09c3c3"),
+    ("oak", "975def23eb9c5ad5"),
+    ("black_oak", "3f6e25f71e26adac"),
+    ("maple", "48d465c12d38349c"),
+    ("birch", "70735c61a9716353"),
+    ("aspen", "22dee3b7e892a6c3"),
+    ("willow", "8250f969fa2c24dd"),
+    ("tupelo", "d4024b2675e0d87b"),
+    ("ginkgo", "3642f9b3070fc2df"),
+    ("pine", "97f2a8230d0b0b8b"),
+    ("fir", "a9203b46dffd2496"),
+    ("superformula_oak", "70e4db4fbbcfab01"),
+    ("superformula_maple", "9aa9b8ea0ac66148"),
+    ("superformula_birch", "b7357091182e28ab"),
+    ("superformula_willow", "f00d88cf2d7ed763"),
+    ("superformula_pine", "a998de573e09c3c3"),
 ];
 
 #[test]

@@ -25,6 +25,7 @@ fn try_outline(p: &TreeParams) -> Option<Outline> {
 /// A round blade (the superformula with m = 4, a = b = 1, n1 = n2 = n3 = 2 is a circle).
 fn circle(margin: LeafMargin, teeth: u32, depth: f32) -> TreeParams {
     let mut p = TreeParams::default();
+    p.leaf_outline = LeafOutline::Superformula;
     (p.leaf_m, p.leaf_a, p.leaf_b, p.leaf_n1, p.leaf_n2, p.leaf_n3, p.leaf_aspect) =
         (4.0, 1.0, 1.0, 2.0, 2.0, 2.0, 1.0);
     (p.leaf_margin, p.leaf_teeth, p.leaf_tooth_depth) = (margin, teeth, depth);
@@ -72,7 +73,7 @@ fn the_tooth_count_is_visible_in_the_outline() {
     let entire = outline_of(&circle(LeafMargin::Entire, 12, 0.15));
     assert_eq!(count_peaks(&radii(&entire), 0.025), 0, "an entire margin has no teeth");
     // The lobed presets: the margin's lobes sit on the superformula's.
-    for (name, lobes) in [("maple", 5), ("oak", 7)] {
+    for (name, lobes) in [("superformula_maple", 5), ("superformula_oak", 7)] {
         let o = outline_of(&sylva_core::leaf::presets::find(name).unwrap().params().unwrap());
         assert_eq!(count_peaks(&radii(&o), 0.05), lobes, "{name}");
     }
@@ -178,7 +179,7 @@ fn sampling_is_curvature_adaptive() {
     // Denser where the edge bends: on the willow blade (long, nearly straight flanks, a sharp
     // tip) the longest edge is many times the shortest, and no two edges turn by much more than
     // the 15° refinement limit away from the tip and the base.
-    let o = outline_of(&sylva_core::leaf::presets::find("willow").unwrap().params().unwrap());
+    let o = outline_of(&sylva_core::leaf::presets::find("superformula_willow").unwrap().params().unwrap());
     let n = o.points.len();
     let edges: Vec<f32> = (0..n).map(|i| (o.points[(i + 1) % n] - o.points[i]).length()).collect();
     let (shortest, longest) = edges.iter().fold((f32::INFINITY, 0.0f32), |(a, b), &e| (a.min(e), b.max(e)));

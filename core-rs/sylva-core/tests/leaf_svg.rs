@@ -80,7 +80,7 @@ fn svg_is_well_formed_for_every_preset_and_step() {
 
 #[test]
 fn svg_draws_outline_triangulation_auxins_and_veins() {
-    let l = leaf("maple");
+    let l = leaf("superformula_maple");
     let plain = render(&l, &SvgOptions::default());
     let names = well_formed(&plain).unwrap();
     let count = |n: &str, names: &[String]| names.iter().filter(|x| x.as_str() == n).count();
@@ -95,7 +95,7 @@ fn svg_draws_outline_triangulation_auxins_and_veins() {
 
 #[test]
 fn svg_replays_the_growth_step_by_step() {
-    let l = leaf("oak");
+    let l = leaf("superformula_oak");
     let lines = |step: u32| {
         let svg = render(&l, &SvgOptions { step: Some(step), ..SvgOptions::default() });
         well_formed(&svg).unwrap().iter().filter(|n| n.as_str() == "line").count()

@@ -15,10 +15,12 @@ fn every_preset_triangulates_validly_with_both_methods() {
         let p = preset.params().unwrap();
         let (outline, tri) = stages(&p);
         triangulate::validate(&outline.points, &tri).unwrap_or_else(|e| panic!("{}: {e}", preset.name));
-        assert_eq!(tri.method, Method::Rings, "{}: the presets are star-shaped", preset.name);
+        if preset.name.starts_with("superformula_") {
+            assert_eq!(tri.method, Method::Rings, "{}: the superformula presets are star-shaped", preset.name);
+        }
         let robust = cdt::build(&outline.points, p.leaf_rings);
         triangulate::validate(&outline.points, &robust).unwrap_or_else(|e| panic!("{} (robust): {e}", preset.name));
-        if preset.name != "pine" {
+        if p.leaf_aspect >= 0.1 {
             assert!(robust.vertices.len() > outline.points.len(), "{}: interior points", preset.name);
         }
     }

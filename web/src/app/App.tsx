@@ -74,14 +74,11 @@ export function App() {
       installDebugHook({
         geometries: () => viewerRef.current?.gpuGeometries ?? null,
         programs: () => viewerRef.current?.gpuPrograms ?? null,
-        measureFrames: (on) => {
+        pauseRendering: (paused) => {
           const viewer = viewerRef.current;
-          if (viewer) {
-            viewer.frameProbe = on
-              ? (ms) => emitDebug('frame', { at: performance.now(), ms })
-              : null;
-          }
+          if (viewer) viewer.rendering = !paused;
         },
+        probeFrame: () => viewerRef.current?.probeFrame() ?? null,
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
           if (!host) return;

@@ -23,11 +23,15 @@ export interface SylvaDebugHook {
   hang(ms: number): void;
   /** The trees applied so far (the last 200), oldest first. */
   trees(): TreeApplied[];
+  /** Benchmarks: stops (true) or resumes drawing frames; trees are still applied. */
+  pauseRendering(paused: boolean): void;
+  /** Benchmarks: draws a frame now, waits for the GPU, returns its upload + draw time (ms). */
+  probeFrame(): number | null;
   /**
-   * Benchmarks: after every frame, wait for the GPU and dispatch `sylva:frame` on `window`
-   * with `{ at, ms }` (upload + draw); off by default.
+   * Whether a drag settles after 150 ms without input (default) or only on release: the drag
+   * benchmark waits for each software-WebGL frame, longer than that pause.
    */
-  measureFrames(on: boolean): void;
+  settleWhenIdle(on: boolean): void;
   /** Sets the generation time limit in ms (tests use a short one). */
   setTimeLimit(ms: number): void;
   /** Geometries alive on the GPU (three.js `renderer.info.memory.geometries`), for leak tests. */
@@ -77,9 +81,9 @@ export function debugEnabled(search: string, dev: boolean): boolean {
 
 /**
  * Dispatches `sylva:<name>` on `window` with `detail` when the hook is enabled (benchmarks
- * listen: `sylva:applied` when an answer is in the scene, `sylva:frame` after a probed frame).
+ * listen to `sylva:applied`: an answer is in the scene, ready for the next frame).
  */
-export function emitDebug(name: 'applied' | 'frame', detail: object): void {
+export function emitDebug(name: 'applied', detail: object): void {
   if (!debugEnabled(window.location.search, import.meta.env.DEV)) return;
   window.dispatchEvent(new CustomEvent(`sylva:${name}`, { detail }));
 }

@@ -117,6 +117,9 @@ export function useGenerator(
         scheduler.timeLimitMs = ms;
       },
       trees: () => [...treeLogRef.current],
+      settleWhenIdle: (on) => {
+        scheduler.settleWhenIdle = on;
+      },
     });
     return () => {
       uninstall();

@@ -2,16 +2,17 @@
  * three.js objects for one level of detail: bark tubes, instanced leaves, and the billboard
  * cloud (LOD2) as textured quads. The cloud texture is a "leaf clump" painted in the browser from
  * the tree's own leaf texture (a few dozen leaves scattered in a disc), tinted per quad with the
- * cluster's mean leaf colour.
+ * cluster's mean leaf colour, and lit like the leaves (the same translucency), so LOD2 keeps
+ * LOD0's colour: its transparent texels carry the clump's mean colour, not black, so the mipmaps
+ * a distant cloud samples do not darken toward the leaves' edges.
  */
 import type { InstancedMesh } from 'three';
 import {
   BufferAttribute,
   BufferGeometry,
-  CanvasTexture,
   Color,
   DataTexture,
-  DoubleSide,
+  FrontSide,
   LinearFilter,
   LinearMipmapLinearFilter,
   Mesh,
@@ -28,6 +29,7 @@ import type { LeafTextureBuffers } from '../core/types';
 import { mulberry32 } from '../forest/layout';
 import { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from './types';
 import { wrapInstances } from '../viewer/instances';
+import { LEAF_TRANSLUCENCY } from '../viewer/Foliage';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';
@@ -138,9 +140,9 @@ export function mergedLeafGeometry(level: LodLevelBuffers): BufferGeometry | nul
 }
 
 /**
- * The billboard cloud as quads: 4 vertices each (corners `c ± u ± v`), the cluster tint as a
- * vertex colour, and normals pointing away from the crown centre (a rounded crown under light
- * instead of flat cards).
+ * The billboard cloud as quads: 4 vertices each (corners `c ± u ± v`), both windings, the cluster tint as a
+ * vertex colour, and normals facing up like the leaves' fronts, leaning `CLOUD_OUTWARD` away from
+ * the crown centre (a rounded crown under light, lit as brightly as the leaves it stands for).
  */
 export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
   const q = level.cloud;
@@ -150,7 +152,7 @@ export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
   const normals = new Float32Array(n * 12);
   const uvs = new Float32Array(n * 8);
   const colors = new Float32Array(n * 12);
-  const indices = new Uint32Array(n * 6);
+  const indices = new Uint32Array(n * 12);
   let cx = 0;
   let cy = 0;
   let cz = 0;
@@ -169,12 +171,14 @@ export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
     const o = k * QUAD_FLOATS;
     const c = [q[o]!, q[o + 1]!, q[o + 2]!];
     const cell = densityCell(q[o + 12] ?? 1);
-    let nx = c[0]! - cx;
-    let ny = c[1]! - cy + 0.3 * Math.hypot(nx, c[2]! - cz);
-    let nz = c[2]! - cz;
+    // Mostly up, like the leaves (whose fronts turn to the sky), leaning a little outward so
+    // the crown still reads round.
+    const out = Math.hypot(c[0]! - cx, c[1]! - cy, c[2]! - cz) || 1;
+    let nx = (CLOUD_OUTWARD * (c[0]! - cx)) / out;
+    let ny = 1 + (CLOUD_OUTWARD * (c[1]! - cy)) / out;
+    let nz = (CLOUD_OUTWARD * (c[2]! - cz)) / out;
     const len = Math.hypot(nx, ny, nz);
-    if (len < 1e-6) [nx, ny, nz] = [0, 1, 0];
-    else [nx, ny, nz] = [nx / len, ny / len, nz / len];
+    [nx, ny, nz] = [nx / len, ny / len, nz / len];
     corners.forEach(([su, sv], j) => {
       const p = (k * 4 + j) * 3;
       for (let a = 0; a < 3; a++) {
@@ -184,11 +188,14 @@ export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
       normals[p] = nx;
       normals[p + 1] = ny;
       normals[p + 2] = nz;
-      // The clump texture is a 2×2 atlas of densities 1/4 … 1: the quad shows the nearest.
+      // The clump texture is a 2×2 atlas of densities (CELL_DENSITY): the quad shows the nearest.
       uvs[(k * 4 + j) * 2] = (cell % 2) * 0.5 + (su + 1) / 4;
       uvs[(k * 4 + j) * 2 + 1] = Math.floor(cell / 2) * 0.5 + (sv + 1) / 4;
     });
-    indices.set([k * 4, k * 4 + 1, k * 4 + 2, k * 4, k * 4 + 2, k * 4 + 3], k * 6);
+    // Both windings over the same vertices: whichever side faces the camera keeps the up-facing
+    // normal (a double-sided material would flip it on the back and darken the cloud).
+    const [i0, i1, i2, i3] = [k * 4, k * 4 + 1, k * 4 + 2, k * 4 + 3];
+    indices.set([i0, i1, i2, i0, i2, i3, i0, i2, i1, i0, i3, i2], k * 12);
   }
   const g = new BufferGeometry();
   g.setAttribute('position', new BufferAttribute(positions, 3));
@@ -200,9 +207,35 @@ export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
   return g;
 }
 
-/** Cell of the clump atlas (0..3: density 1/4, 1/2, 3/4, 1) for a cloud quad's leaf density. */
+/** How far cloud normals lean away from the crown centre (0 = straight up). */
+const CLOUD_OUTWARD = 0.4;
+
+/**
+ * Leaf densities of the clump atlas's cells: the share of the disc its leaves cover (sparse crowns
+ * let the sky through a cloud as they do through the leaves).
+ */
+export const CELL_DENSITY = [0.1, 0.25, 0.5, 1] as const;
+
+/** Cell of the clump atlas (0..3) for a cloud quad's leaf density: the nearest `CELL_DENSITY`. */
 export function densityCell(density: number): number {
-  return Math.min(3, Math.max(0, Math.round(density * 4) - 1));
+  let best = 0;
+  for (let k = 1; k < CELL_DENSITY.length; k++) {
+    if (
+      Math.abs(Math.log(density / CELL_DENSITY[k]!)) <
+      Math.abs(Math.log(density / CELL_DENSITY[best]!))
+    )
+      best = k;
+  }
+  return best;
+}
+
+/**
+ * Leaves drawn in a clump cell so that they cover about its density of the disc: random leaves
+ * cover `1 − exp(−n a / A)`, so `n ∝ −ln(1 − 0.9 d)`, `MAX_CLUMP_LEAVES` at density 1.
+ */
+export function clumpLeaves(cell: number): number {
+  const d = CELL_DENSITY[cell] ?? 1;
+  return Math.max(2, Math.round((MAX_CLUMP_LEAVES * Math.log(1 - 0.9 * d)) / Math.log(0.1)));
 }
 
 /** The leaf texture as a three.js texture (sRGB, mipmapped). */
@@ -223,8 +256,8 @@ export function leafTexture(buffers: LeafTextureBuffers): DataTexture {
 }
 
 /**
- * A leaf-clump texture for the billboard cloud: a 2×2 atlas whose cells hold 1/4, 1/2, 3/4 and
- * all of `MAX_CLUMP_LEAVES` copies of the leaf texture (or green ellipses for a tree without
+ * A leaf-clump texture for the billboard cloud: a 2×2 atlas whose cells hold `clumpLeaves(cell)`
+ * copies of the leaf texture (or green ellipses for a tree without
  * one) scattered over a disc, denser toward the centre, seeded (see `densityCell`).
  */
 export function clumpTexture(leaf: LeafTextureBuffers | null, seed = 7, size = 512): Texture {
@@ -251,20 +284,62 @@ export function clumpTexture(leaf: LeafTextureBuffers | null, seed = 7, size = 5
   for (let cell = 0; cell < 4; cell++) {
     const rand = mulberry32(seed + cell);
     const ox = (cell % 2) * half;
-    // Canvas rows run top-down; texture v bottom-up (flipY): cell row 0 is the bottom half.
+    // Canvas rows run top-down; texture v bottom-up (bleedAndFlip): cell row 0 is the bottom half.
     const oy = (1 - Math.floor(cell / 2)) * half;
-    const count = Math.round((MAX_CLUMP_LEAVES * (cell + 1)) / 4);
+    const count = clumpLeaves(cell);
     for (let i = 0; i < count; i++) drawLeaf(ctx, sprite, rand, ox, oy, half);
   }
-  const texture = new CanvasTexture(canvas);
+  const image = ctx.getImageData(0, 0, size, size);
+  const texture = new DataTexture(
+    bleedAndFlip(image.data, size, size),
+    size,
+    size,
+    RGBAFormat,
+    UnsignedByteType,
+  );
   texture.colorSpace = SRGBColorSpace;
+  texture.magFilter = LinearFilter;
   texture.minFilter = LinearMipmapLinearFilter;
   texture.generateMipmaps = true;
+  texture.needsUpdate = true;
   return texture;
 }
 
+/**
+ * A canvas image (rows top-down, transparent texels black) as texture rows bottom-up whose
+ * (almost) transparent texels carry the mean colour of the opaque ones: mipmaps then average
+ * leaf colour with leaf colour instead of with black.
+ */
+export function bleedAndFlip(rgba: Uint8ClampedArray, width: number, height: number): Uint8Array {
+  let [r, g, b, n] = [0, 0, 0, 0];
+  for (let i = 0; i < rgba.length; i += 4) {
+    if (rgba[i + 3]! >= 128) {
+      r += rgba[i]!;
+      g += rgba[i + 1]!;
+      b += rgba[i + 2]!;
+      n++;
+    }
+  }
+  const sum = [r, g, b];
+  const mean = sum.map((v) => (n > 0 ? Math.round(v / n) : 0));
+  const out = new Uint8Array(rgba.length);
+  const row = width * 4;
+  for (let y = 0; y < height; y++) {
+    const src = (height - 1 - y) * row;
+    out.set(rgba.subarray(src, src + row), y * row);
+    for (let i = y * row; i < (y + 1) * row; i += 4) {
+      if (out[i + 3]! < 8) {
+        out[i] = mean[0]!;
+        out[i + 1] = mean[1]!;
+        out[i + 2] = mean[2]!;
+      }
+    }
+  }
+  return out;
+}
+
 /** Leaves in the densest clump cell. */
-const MAX_CLUMP_LEAVES = 90;
+const MAX_CLUMP_LEAVES = 360;
 
 function drawLeaf(
   ctx: CanvasRenderingContext2D,
@@ -279,7 +354,7 @@ function drawLeaf(
     const a = rand() * Math.PI * 2;
     const x = ox + size / 2 + Math.cos(a) * r;
     const y = oy + size / 2 + Math.sin(a) * r;
-    const s = size * (0.12 + 0.06 * rand());
+    const s = size * (0.06 + 0.03 * rand());
     ctx.save();
     ctx.translate(x, y);
     ctx.rotate(rand() * Math.PI * 2);
@@ -297,14 +372,21 @@ function drawLeaf(
   }
 }
 
-/** Material of the billboard cloud (clump texture × quad tint, alpha-tested, two-sided). */
+/**
+ * Material of the billboard cloud (clump texture × quad tint, alpha-tested; the quads carry both
+ * windings, see `cloudGeometry`), lit like
+ * the leaves' own material (viewer/Foliage.ts: roughness and the emissive translucency).
+ */
 export function cloudMaterial(map: Texture): MeshStandardMaterial {
   return new MeshStandardMaterial({
     map,
     vertexColors: true,
     alphaTest: 0.5,
-    side: DoubleSide,
-    roughness: 0.8,
+    side: FrontSide,
+    roughness: 0.7,
+    emissive: '#ffffff',
+    emissiveMap: map,
+    emissiveIntensity: LEAF_TRANSLUCENCY,
   });
 }
 

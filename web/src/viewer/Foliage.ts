@@ -30,6 +30,9 @@ import { wrapInstances } from './instances';
 
 type Instances = NonNullable<TreeUpdate['instances']>;
 
+/** Strength of the leaf's dim emissive copy of its texture (light shining through the blade). */
+export const LEAF_TRANSLUCENCY = 0.22;
+
 /** Owns the leaf mesh, texture and material. */
 export class Foliage {
   /** The leaf material (the viewer patches it with wind). */
@@ -39,7 +42,7 @@ export class Foliage {
     side: DoubleSide,
     alphaTest: 0.5,
     emissive: '#ffffff',
-    emissiveIntensity: 0.22,
+    emissiveIntensity: LEAF_TRANSLUCENCY,
   });
   private texture: DataTexture | null = null;
   private mesh: InstancedMesh | null = null;

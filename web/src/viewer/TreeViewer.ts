@@ -73,10 +73,10 @@ export class TreeViewer {
   private readonly barkTextures = new BarkTextures(this.bark);
   private frameRequested = false;
   /**
-   * Benchmarks: called after every frame with its upload + draw time (ms), measured by waiting
-   * for the GPU; null (the default) never waits.
+   * Benchmarks only: no frame is drawn while false (trees still arrive and are set up), so a
+   * software-WebGL frame of seconds does not sit between the steps of a timed drag.
    */
-  frameProbe: ((ms: number) => void) | null = null;
+  rendering = true;
   /** Called with every new tree (the growth overlay reads its markers). */
   private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
   private readonly hashListeners = new Set<(hash: string) => void>();
@@ -345,25 +345,25 @@ export class TreeViewer {
   }
 
   private requestRender(): void {
-    if (this.frameRequested) return;
+    if (this.frameRequested || !this.rendering) return;
     this.frameRequested = true;
     this.frameId = requestAnimationFrame((now) => {
       this.frameRequested = false;
       if (this.disposed) return;
       // While the wind blows, every frame advances its clock and asks for the next one.
       this.wind.tick(now);
-      const t0 = performance.now();
       this.renderer.render(this.scene, this.camera);
-      if (this.frameProbe) this.frameProbe(this.finishFrame(t0));
       if (this.wind.animating) this.requestRender();
     });
   }
 
   /**
-   * Waits for the frame just issued to be drawn (a one-pixel read-back) and returns the time
-   * since `t0` (ms): the upload and draw of the frame. Only with a frame probe (benchmarks).
+   * Renders a frame now and waits for it to be drawn (a one-pixel read-back); returns the time
+   * it took (ms): the upload of new buffers and the draw. For benchmarks.
    */
-  private finishFrame(t0: number): number {
+  probeFrame(): number {
+    const t0 = performance.now();
+    this.renderer.render(this.scene, this.camera);
     const gl = this.renderer.getContext();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(4));
     return performance.now() - t0;

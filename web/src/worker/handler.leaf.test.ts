@@ -75,7 +75,7 @@ describe('leaf requests', () => {
     expect(h.lastResult().leafTexture).toBeUndefined();
     expect(h.tree().foliage?.texture).toBeNull();
     expect(read).not.toHaveBeenCalled();
-    handle({ type: 'generate', id: 3, params: { ...params, leaf_m: 5 } });
+    handle({ type: 'generate', id: 3, params: { ...params, leaf_lobes: 5 } });
     expect(h.tree().foliage?.texture).not.toBeNull();
     expect(read).toHaveBeenCalledTimes(1);
     read.mockRestore();

@@ -100,6 +100,11 @@ export class GenerationScheduler {
   /** The last interactive request's input, until the full tree for it is requested. */
   private unsettled: { params: Params; volumes?: VolumePrimitive[] } | null = null;
   private settleTimer: ReturnType<typeof setTimeout> | null = null;
+  /**
+   * Whether a drag settles by itself after [`SETTLE_MS`] without input (true), or only on
+   * [`settle`] (benchmarks on software WebGL, whose frames take longer than the pause).
+   */
+  settleWhenIdle = true;
   /** Id of the last result delivered (a hash is only delivered for it). */
   private lastResultId = 0;
 
@@ -131,7 +136,7 @@ export class GenerationScheduler {
     this.clearSettleTimer();
     if (interactive) {
       this.unsettled = volumes?.length ? { params, volumes } : { params };
-      this.settleTimer = setTimeout(() => this.settle(), SETTLE_MS);
+      if (this.settleWhenIdle) this.settleTimer = setTimeout(() => this.settle(), SETTLE_MS);
     } else {
       this.unsettled = null;
     }

@@ -301,6 +301,9 @@ pub fn build(p: &TreeParams, base: &BaseOutline) -> Result<Outline, SylvaError> 
             LeafOutline::Spline => {
                 format!("the spline outline {}°/{}, {}°/{}", p.leaf_angle1, p.leaf_l1, p.leaf_angle2, p.leaf_l2)
             }
+            LeafOutline::Pinnate | LeafOutline::Palmate => {
+                format!("the {} outline with Aspect Ratio {}", p.leaf_outline.label(), p.leaf_aspect)
+            }
         };
         return Err(SylvaError::InvalidParam {
             param: "leaf_outline".into(),

@@ -10,9 +10,11 @@
 //! |---|---|---|
 //! | outline | [`outline`] | superformula (Gielis 2003) or mirrored cubic spline, adaptive sampling |
 //! | margin | [`margin`] | `r (1 + depth · wave(f))` (ANCHORS §5) |
+//! | lobed outlines | [`lobes`] | pinnate lobes along the midrib, palmate lobes (ANCHORS §9) |
+//! | needles, petiole | [`needles`] | pine fascicles, the leaf stalk (ANCHORS §9) |
 //! | triangulation | [`triangulate`] | concentric rings + fan; ear clipping + constrained Delaunay fallback |
 //! | UVs | [`uv`] | planar over the blade's box |
-//! | veins | [`veins`] | space colonization (Runions 2005), open / closed; spline veins |
+//! | veins | [`veins`] | primary veins (pinnate, palmate, dichotomous), then space colonization (Runions 2005), open / closed; spline veins |
 //! | deformation | [`deform`], [`field`] | midrib / cross curvature, edge curl, vein ridges |
 //! | texture | [`texture`] | vein colour + normal maps, RGBA8, powers of two |
 //! | LOD | [`lod`] | card, billboard cloud, hemi-octahedral impostor views |
@@ -23,8 +25,9 @@
 //! counter-clockwise seen from `+z`). Basal lobes may reach below `y = 0`. Deformation moves
 //! vertices along `z` only.
 //!
-//! Every parameter is in the registry (groups "Leaf", "Leaf Veins", "Leaf Surface"); the tree
-//! generator does not read them yet. Randomness comes from the named streams `"leaf-margin"`,
+//! Every parameter is in the registry (groups "Leaf", "Leaf Veins", "Leaf Surface"); the tree's
+//! foliage instances this leaf (see [`crate::foliage`]). The species presets and their
+//! references are described in `docs/leaves.md`. Randomness comes from the named streams `"leaf-margin"`,
 //! `"leaf-veins"` and `"leaf-spline-veins"`; all transcendental math goes through `libm`, so
 //! native and wasm leaves are byte-identical ([`Leaf::hash`]).
 
@@ -32,8 +35,10 @@ pub mod deform;
 pub mod field;
 pub mod geom;
 pub mod json;
+pub mod lobes;
 pub mod lod;
 pub mod margin;
+pub mod needles;
 pub mod options;
 pub mod outline;
 pub mod presets;
@@ -82,6 +87,8 @@ pub struct Leaf {
     pub texture: texture::LeafTexture,
     /// Card, billboard cloud and impostor views.
     pub lod: lod::LeafLod,
+    /// Petiole length below the blade's base (leaf units; 0 = none), drawn in the mesh.
+    pub petiole: f32,
     /// Timings.
     pub stats: LeafStats,
     /// Content hash of everything above but the timings.
@@ -143,23 +150,40 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
     let rings = (triangulation.method == triangulate::Method::Rings).then_some(p.leaf_rings);
     let edge = deform::edge_weights(&triangulation.vertices, &outline.points, rings);
     let positions = deform::displace(p, &triangulation.vertices, &outline.points, &edge, &field);
-    let normals = deform::normals(&positions, &triangulation.triangles);
-    let mut b = MeshBuilder::with_capacity(positions.len(), triangulation.triangles.len() * 3);
+    let surface = if p.leaf_fascicle > 1 {
+        needles::fascicle(p, &uv_frame)
+    } else {
+        let normals = deform::normals(&positions, &triangulation.triangles);
+        needles::Surface { positions, normals, uvs, triangles: triangulation.triangles.clone() }
+    };
+    let mut b = MeshBuilder::with_capacity(surface.positions.len() + 4, surface.triangles.len() * 3 + 6);
     b.begin_group(Material::Leaves);
-    for ((q, n), uv) in positions.iter().zip(&normals).zip(&uvs) {
+    for ((q, n), uv) in surface.positions.iter().zip(&surface.normals).zip(&surface.uvs) {
         b.vertex(q.to_array(), n.to_array(), uv.to_array());
     }
-    for tri in &triangulation.triangles {
+    for tri in &surface.triangles {
         b.triangle(tri[0], tri[1], tri[2]);
     }
+    needles::petiole(p, &uv_frame, &mut b);
     let mesh = b.finish();
+    let positions = surface.positions;
     lap("deformation", &mut stage_ms);
     let texture = texture::bake(&field, &outline.points, p.leaf_vein_displacement);
     lap("texture", &mut stage_ms);
     let lod = lod::build(&uv_frame, &positions, p.leaf_impostor_grid);
     lap("lod", &mut stage_ms);
-    let mut leaf =
-        Leaf { outline, triangulation, uv_frame, veins, mesh, texture, lod, stats: LeafStats::default(), hash: 0 };
+    let mut leaf = Leaf {
+        outline,
+        triangulation,
+        uv_frame,
+        veins,
+        mesh,
+        texture,
+        lod,
+        petiole: p.leaf_petiole,
+        stats: LeafStats::default(),
+        hash: 0,
+    };
     leaf.hash = content_hash(&leaf);
     lap("hash", &mut stage_ms);
     leaf.stats = LeafStats { total_ms: t - t_start, stage_ms };

@@ -11,6 +11,12 @@ param_enum! {
         Superformula = 0, "Superformula";
         /// One cubic spline from base to tip (Angle1, L1, Angle2, L2), mirrored about the midrib.
         Spline = 1, "Spline";
+        /// A blade profile along the midrib with lobes placed along it (oak, birch, aspen,
+        /// willow): [`crate::leaf::lobes::Pinnate`].
+        Pinnate = 2, "Pinnate";
+        /// Lobes radiating from the petiole junction (maple, ginkgo's fan):
+        /// [`crate::leaf::lobes::Palmate`].
+        Palmate = 3, "Palmate";
     }
 }
 
@@ -41,6 +47,21 @@ param_enum! {
         Closed = 2, "Closed";
         /// Arcuate / pinnate spline veins from the midrib to the edge.
         Spline = 3, "Spline";
+    }
+}
+
+param_enum! {
+    /// The primary veins laid down before space colonization fills the rest
+    /// ([`crate::leaf::veins::primary`]).
+    LeafPrimaries {
+        /// None: colonization grows everything from the petiole (the guide's method).
+        None = 0, "None";
+        /// A midrib with secondary veins along it, one per lobe on a lobed blade.
+        Pinnate = 1, "Pinnate";
+        /// Primary veins radiating from the petiole junction, one per lobe.
+        Palmate = 2, "Palmate";
+        /// Veins forking repeatedly in two from the petiole (ginkgo).
+        Dichotomous = 3, "Dichotomous";
     }
 }
 

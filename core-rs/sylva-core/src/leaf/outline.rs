@@ -11,11 +11,15 @@
 //!   mirrored about the midrib. With `A ∈ [5°, 90°]` and `L ∈ [0.05, 1]` the curve is monotone
 //!   along the midrib, so the outline is always a simple polygon.
 //!
-//! Both halves are sampled over `t` with curvature-adaptive refinement ([`adaptive`]): an
+//! * **Pinnate** and **Palmate**: the lobed blades of [`crate::leaf::lobes`] (a profile along
+//!   the midrib with lobes along it; lobes radiating from the petiole junction).
+//!
+//! All halves are sampled over `t` with curvature-adaptive refinement ([`adaptive`]): an
 //! interval is split while its midpoint strays from the chord (sagitta) or the curve turns
 //! more than 15° across it, so flat stretches stay sparse and tight bends get points.
 
 use crate::leaf::geom::DVec2;
+use crate::leaf::lobes;
 use crate::leaf::options::LeafOutline;
 use crate::params::TreeParams;
 
@@ -50,6 +54,10 @@ pub enum Shape {
         /// Bézier parameter at evenly spaced arc lengths from the tip (`ARC_SAMPLES + 1` values).
         arc: Vec<f64>,
     },
+    /// A profile along the midrib with lobes along it.
+    Pinnate(lobes::Pinnate),
+    /// Lobes radiating from the petiole junction (radial about it).
+    Palmate(lobes::Palmate),
 }
 
 const ARC_SAMPLES: usize = 256;
@@ -89,6 +97,17 @@ impl Shape {
                 ];
                 Shape::Spline { arc: arc_table(&pts), p: pts }
             }
+            LeafOutline::Pinnate => Shape::Pinnate(lobes::Pinnate::from_params(p)),
+            LeafOutline::Palmate => Shape::Palmate(lobes::Palmate::from_params(p)),
+        }
+    }
+
+    /// `t` of the lobe apices of one half, from the tip down (lobed outlines; empty otherwise).
+    pub fn lobe_tips(&self) -> Vec<f64> {
+        match self {
+            Shape::Pinnate(s) => s.lobe_tips(),
+            Shape::Palmate(s) => s.lobe_tips(),
+            _ => Vec::new(),
         }
     }
 
@@ -109,7 +128,7 @@ impl Shape {
     /// Whether margins scale the radius about the centre (superformula) or the half-width
     /// (spline).
     pub fn is_radial(&self) -> bool {
-        matches!(self, Shape::Superformula { .. })
+        matches!(self, Shape::Superformula { .. } | Shape::Palmate(_))
     }
 
     /// One half of the blade at `t` (0 = tip, 1 = base) in the raw frame: `x ≥ 0` is the
@@ -131,6 +150,8 @@ impl Shape {
                 let x = if t <= 0.0 || t >= 1.0 { 0.0 } else { q.y * (1.0 + tooth) * width };
                 DVec2::new(x, q.x)
             }
+            Shape::Pinnate(s) => s.raw(t, tooth, width),
+            Shape::Palmate(s) => s.raw(t, tooth, width),
         }
     }
 }
@@ -258,8 +279,12 @@ pub fn build(p: &TreeParams) -> BaseOutline {
     let shape = Shape::from_params(p);
     let detail = f64::from(p.leaf_detail);
     let eval = |t: f64| shape.raw(t, 0.0, 1.0);
-    let segments = 12 + 2 * (f64::from(p.leaf_m).ceil() as usize);
-    let samples = adaptive(&eval, &seeds(segments, &[]), 0.0015 / detail, 4000);
+    let (segments, extra) = match &shape {
+        Shape::Pinnate(s) => (24 + 4 * p.leaf_lobes as usize, s.seeds()),
+        Shape::Palmate(s) => (24 + 4 * p.leaf_lobes as usize, s.seeds()),
+        _ => (12 + 2 * (f64::from(p.leaf_m).ceil() as usize), Vec::new()),
+    };
+    let samples = adaptive(&eval, &seeds(segments, &extra), 0.0015 / detail, 4000);
     let (ts, raw) = samples.into_iter().unzip();
     BaseOutline { shape, ts, raw }
 }
@@ -271,6 +296,7 @@ mod tests {
     #[test]
     fn circle_superformula_has_unit_radius_and_tip_up() {
         let mut p = TreeParams::default();
+        p.leaf_outline = LeafOutline::Superformula;
         (p.leaf_m, p.leaf_a, p.leaf_b, p.leaf_n1, p.leaf_n2, p.leaf_n3) = (4.0, 1.0, 1.0, 2.0, 2.0, 2.0);
         let s = Shape::from_params(&p);
         for i in 0..=10 {

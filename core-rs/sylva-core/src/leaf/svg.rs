@@ -1,5 +1,5 @@
-//! The leaf as an SVG drawing for the 2D inspector and the CLI: base outline (dashed), blade
-//! with its margin, the triangulation (optional), auxin sources (orange while alive, grey once
+//! The leaf as an SVG drawing for the 2D inspector and the CLI: base outline (dashed), petiole,
+//! blade with its margin, the triangulation (optional), auxin sources (orange while alive, grey once
 //! reached) and the vein graph with pipe-model stroke widths (loop links in blue), all as they
 //! were after a given growth step.
 
@@ -58,6 +58,7 @@ pub fn render(leaf: &Leaf, opts: &SvgOptions) -> String {
         lo = lo.min(*p);
         hi = hi.max(*p);
     }
+    lo.y = lo.y.min(-leaf.petiole);
     let px = opts.size_px.clamp(64, 8192) as f32;
     let pad = 0.04 * px;
     let scale = (px - 2.0 * pad) / (hi - lo).max_element().max(1e-6);
@@ -75,6 +76,14 @@ pub fn render(leaf: &Leaf, opts: &SvgOptions) -> String {
             s,
             r##"<path d="{}" fill="none" stroke="#9aa5a0" stroke-width="1" stroke-dasharray="4 3"/>"##,
             path(&view, &leaf.outline.base_outline)
+        );
+    }
+    if leaf.petiole > 0.0 {
+        let ((x0, y0), (x1, y1)) = (view.pt(Vec2::new(0.0, -leaf.petiole)), view.pt(Vec2::ZERO));
+        let width = (crate::leaf::needles::PETIOLE_WIDTH * scale).max(1.5);
+        let _ = writeln!(
+            s,
+            r##"<path d="M{x0:.2} {y0:.2} L{x1:.2} {y1:.2}" fill="none" stroke="#3d6b2a" stroke-width="{width:.2}" stroke-linecap="round"/>"##
         );
     }
     let _ = writeln!(

@@ -10,7 +10,7 @@
 use crate::crown::CrownShape;
 use crate::error::SylvaError;
 use crate::growth::{CrownVolumeKind, GrowthMode};
-use crate::leaf::options::{LeafLod, LeafMargin, LeafOutline, LeafVenation};
+use crate::leaf::options::{LeafLod, LeafMargin, LeafOutline, LeafPrimaries, LeafVenation};
 use crate::mesh::twig::TwigDetail;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -319,8 +319,28 @@ define_params! {
             "Vertex budget: a tree that would need more stops with an error instead of freezing.";
         max_leaves: u32 = 500_000; [0, 5_000_000, 1_000] "", "Budget", "Max Leaves", Foliage,
             "Leaf budget: a tree that would need more leaves stops with an error instead of freezing.";
-        leaf_outline: LeafOutline = LeafOutline::Superformula; [0, 1, 1] "", "Leaf", "Leaf Outline", Leaf,
-            "How the blade outline is drawn: Gielis' superformula, or a mirrored cubic spline (Spline Angle 1, L1, Angle 2, L2).";
+        leaf_outline: LeafOutline = LeafOutline::Pinnate; [0, 3, 1] "", "Leaf", "Leaf Outline", Leaf,
+            "How the blade outline is drawn: Gielis' superformula, a mirrored cubic spline (Spline Angle 1, L1, Angle 2, L2), a Pinnate blade (profile along the midrib, lobes along it) or a Palmate one (lobes from the petiole).";
+        leaf_base_shape: f32 = 0.7; [0.15, 3.0, 0.05] "", "Leaf", "Base Shape", Leaf,
+            "Pinnate outline: exponent of the blade profile at the base; below 1 rounded or truncate, 1 wedge-shaped, above 1 tapering.";
+        leaf_tip_shape: f32 = 0.95; [0.15, 3.0, 0.05] "", "Leaf", "Tip Shape", Leaf,
+            "Pinnate outline: exponent of the blade profile at the tip; below 1 rounded, 1 acute, above 1 drawn out (acuminate). With Base Shape it puts the widest point at base / (base + tip).";
+        leaf_lobes: u32 = 0; [0, 15, 1] "", "Leaf", "Lobes", Leaf,
+            "Pinnate outline: lobes on each side along the midrib (the tip is a terminal lobe); Palmate outline: lobes in all, radiating from the petiole (an odd count has one at the tip). 0 = none.";
+        leaf_lobe_depth: f32 = 0.5; [0.0, 0.95, 0.01] "", "Leaf", "Sinus Depth", Leaf,
+            "How far the sinuses between lobes cut in: a fraction of the half-width (Pinnate) or of the lobe's length (Palmate).";
+        leaf_lobe_point: f32 = 0.0; [0.0, 1.0, 0.01] "", "Leaf", "Lobe Point", Leaf,
+            "Lobe shape: 0 = rounded lobes (oak, ginkgo), 1 = pointed lobes leaning toward the tip (maple, birch's large teeth).";
+        leaf_lobe_spread: f32 = 120.0; [10.0, 175.0, 1.0] "°", "Leaf", "Lobe Spread", Leaf,
+            "Palmate outline: angle between the tip's direction and the lowest lobe, seen from the petiole.";
+        leaf_lobe_teeth: u32 = 0; [0, 6, 1] "", "Leaf", "Lobe Teeth", Leaf,
+            "Palmate outline: large pointed teeth on each flank of every lobe (a Norway maple has two or three).";
+        leaf_petiole: f32 = 0.6; [0.0, 2.0, 0.01] "", "Leaf", "Petiole Length", Foliage,
+            "Leaf stalk between the twig and the blade (leaf lengths); the tree hangs the blade this far from its stem.";
+        leaf_petiole_flat: bool = true; [0, 1, 1] "", "Leaf", "Flat Petiole", Leaf,
+            "The petiole is flattened sideways, across the blade's plane, so the leaf flutters in the lightest wind (aspens, poplars).";
+        leaf_fascicle: u32 = 1; [1, 5, 1] "", "Leaf", "Needles per Fascicle", Leaf,
+            "1 = one leaf; 2 to 5 = a pine fascicle: that many round needles (the outline's length and width) from one sheath.";
         leaf_m: f32 = 2.0; [0.0, 20.0, 0.5] "", "Leaf", "Symmetry (m)", Leaf,
             "Superformula m: number of symmetry axes; odd values put a lobe at the tip and a sinus at the base.";
         leaf_a: f32 = 1.0; [0.05, 4.0, 0.01] "", "Leaf", "Superformula a", Leaf,
@@ -333,7 +353,7 @@ define_params! {
             "Superformula n2: exponent of the cosine term.";
         leaf_n3: f32 = 8.0; [0.2, 40.0, 0.1] "", "Leaf", "Superformula n3", Leaf,
             "Superformula n3: exponent of the sine term.";
-        leaf_aspect: f32 = 0.55; [0.02, 2.0, 0.01] "", "Leaf", "Aspect Ratio", Leaf,
+        leaf_aspect: f32 = 1.0; [0.02, 2.0, 0.01] "", "Leaf", "Aspect Ratio", Leaf,
             "Blade width as a fraction of its length (superformula outline).";
         leaf_angle1: f32 = 70.0; [5.0, 90.0, 1.0] "°", "Leaf", "Spline Angle 1", Leaf,
             "Spline outline: angle between the midrib and the edge where it leaves the base.";
@@ -343,11 +363,11 @@ define_params! {
             "Spline outline: angle between the midrib and the edge where it arrives at the tip.";
         leaf_l2: f32 = 1.0; [0.05, 1.0, 0.01] "", "Leaf", "Spline L2", Leaf,
             "Spline outline: length of the tip handle (leaf lengths).";
-        leaf_margin: LeafMargin = LeafMargin::Entire; [0, 4, 1] "", "Leaf", "Margin", Leaf,
+        leaf_margin: LeafMargin = LeafMargin::Crenate; [0, 4, 1] "", "Leaf", "Margin", Leaf,
             "Edge detail: Entire, Serrate (teeth lean toward the tip), Dentate, Crenate or Lobed.";
-        leaf_teeth: u32 = 12; [0, 200, 1] "", "Leaf", "Tooth Count", Leaf,
+        leaf_teeth: u32 = 44; [0, 200, 1] "", "Leaf", "Tooth Count", Leaf,
             "Teeth (or lobes) around the whole margin; the tip is always a tooth.";
-        leaf_tooth_depth: f32 = 0.1; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Depth", Leaf,
+        leaf_tooth_depth: f32 = 0.035; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Depth", Leaf,
             "How far teeth stand out: the edge radius is multiplied by 1 + depth x wave.";
         leaf_tooth_sharpness: f32 = 0.5; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Sharpness", Leaf,
             "Serrate only: how far each tooth leans toward the tip (0 = upright, 1 = hooked).";
@@ -379,6 +399,12 @@ define_params! {
             "Spline venation: how far the veins bunch toward the tip (1 = spread over the whole midrib).";
         leaf_vein_up: f32 = 0.5; [0.0, 1.0, 0.01] "", "Leaf Veins", "Spline Up", Leaf,
             "Spline venation: control points lie on the edge scaled toward the midrib by this (low = pinnate, high = arcuate).";
+        leaf_primary_veins: LeafPrimaries = LeafPrimaries::Pinnate; [0, 3, 1] "", "Leaf Veins", "Primary Veins", Leaf,
+            "Veins laid down before space colonization fills the rest: None, Pinnate (midrib and secondaries, one per lobe), Palmate (one per lobe from the petiole junction) or Dichotomous (forking in two, ginkgo).";
+        leaf_secondaries: u32 = 6; [0, 30, 1] "", "Leaf Veins", "Secondary Veins", Leaf,
+            "Pinnate primaries on an unlobed blade: secondary veins per side, each ending in the nearest tooth.";
+        leaf_secondary_angle: f32 = 45.0; [10.0, 85.0, 1.0] "°", "Leaf Veins", "Secondary Angle", Leaf,
+            "Angle between a secondary vein and the midrib where it leaves it.";
         leaf_midrib_curvature: f32 = 0.1; [-1.0, 1.0, 0.01] "", "Leaf Surface", "Midrib Curvature", Leaf,
             "Bends the leaf along its length (positive lifts the tip toward the front, +Z).";
         leaf_cross_curvature: f32 = 0.1; [-1.0, 1.0, 0.01] "", "Leaf Surface", "Cross Curvature", Leaf,

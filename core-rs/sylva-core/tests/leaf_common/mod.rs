@@ -24,7 +24,7 @@ fn random_value(id: &str, rng: &mut Rng) -> f64 {
     let s = registry().iter().find(|s| s.id == id).unwrap();
     let steps = ((s.max - s.min) / s.step).floor();
     let k = (f64::from(rng.next_f32()) * (steps + 1.0)).floor().min(steps);
-    let v = s.min + k * s.step;
+    let v = (s.min + k * s.step).min(s.max);
     if s.kind == ParamKind::Float {
         v
     } else {

@@ -288,12 +288,20 @@ impl State {
 /// Grows the veins from the petiole `(0, 0)` toward `sources` inside `mask`; the returned
 /// auxins list the apex source first, then `sources` (in grid-cell order), with the iteration each was reached in.
 pub fn grow(s: &Settings, mask: &Mask, sources: &[Vec2], rng: &mut Rng) -> Veins {
+    grow_from(s, mask, sources, &super::primary::root(), rng)
+}
+
+/// [`grow`] from given primary veins (`seed`: a tree rooted at the petiole, parents before
+/// children, see [`super::primary`]) instead of the petiole alone. Growth iterations continue
+/// after the seed's last `born`; with more than the root, the apex source is not used (the
+/// primaries are the main veins) and sources near the primaries die at once.
+pub fn grow_from(s: &Settings, mask: &Mask, sources: &[Vec2], seed: &VeinGraph, rng: &mut Rng) -> Veins {
     let root = Vec2::ZERO;
     let apex = Vec2::new(0.0, 1.0);
     let (mut lo, mut hi) = (root.min(apex), root.max(apex));
-    for &p in sources {
-        lo = lo.min(p);
-        hi = hi.max(p);
+    for p in sources.iter().chain(seed.nodes.iter().map(|n| &n.pos)) {
+        lo = lo.min(*p);
+        hi = hi.max(*p);
     }
     let (lo, hi) = (lo - Vec2::splat(s.step * 2.0), hi + Vec2::splat(s.step * 2.0));
     // Sources in grid-cell order: a query reads consecutive memory.
@@ -341,9 +349,26 @@ pub fn grow(s: &Settings, mask: &Mask, sources: &[Vec2], rng: &mut Rng) -> Veins
     st.activate(0);
     nodes_grid.push(0, root);
     st.new_node(&grid, 0);
-    let max_iter = (8.0 / s.step) as u32 + 200;
+    if seed.nodes.len() > 1 {
+        st.kill(0, false);
+    }
+    for n in seed.nodes.iter().skip(1) {
+        let u = st.pos.len() as u32;
+        st.pos.push(n.pos);
+        st.parent.push(n.parent);
+        st.born.push(n.born);
+        st.depth.push(st.depth[n.parent as usize] + 1);
+        st.acc.push(Vec2::ZERO);
+        st.best.push(0.0);
+        st.marked.push(false);
+        nodes_grid.push(u, n.pos);
+        st.new_node(&grid, u);
+        st.iter = st.iter.max(n.born);
+    }
+    let first_iter = st.iter;
+    let max_iter = first_iter + (8.0 / s.step) as u32 + 200;
     let dup = 0.25 * s.step;
-    let mut last_growth = 0;
+    let mut last_growth = first_iter;
     let mut fallback = false;
     let mut stalls = 0;
     let mut new_nodes: Vec<u32> = Vec::new();

@@ -178,20 +178,31 @@ impl DynGrid {
             if best != NONE && reach * reach > bd {
                 break;
             }
-            for y in cy - ring..=cy + ring {
-                for x in cx - ring..=cx + ring {
-                    let edge = y == cy - ring || y == cy + ring || x == cx - ring || x == cx + ring;
-                    if !edge || x < 0 || y < 0 || x >= nx || y >= ny {
-                        continue;
+            // Only the ring's own cells: its top and bottom rows, then its side columns.
+            let mut visit = |x: i64, y: i64| {
+                if x < 0 || y < 0 || x >= nx || y >= ny {
+                    return;
+                }
+                let mut id = self.head[(y * nx + x) as usize];
+                while id != NONE {
+                    let d = (pos[id as usize] - p).length_squared();
+                    if d < bd || (d == bd && id < best) {
+                        (best, bd) = (id, d);
                     }
-                    let mut id = self.head[(y * nx + x) as usize];
-                    while id != NONE {
-                        let d = (pos[id as usize] - p).length_squared();
-                        if d < bd || (d == bd && id < best) {
-                            (best, bd) = (id, d);
-                        }
-                        id = self.next[id as usize];
+                    id = self.next[id as usize];
+                }
+            };
+            for y in [cy - ring, cy + ring].into_iter().take(if ring == 0 { 1 } else { 2 }) {
+                if (0..ny).contains(&y) {
+                    for x in (cx - ring).max(0)..=(cx + ring).min(nx - 1) {
+                        visit(x, y);
                     }
+                }
+            }
+            for y in (cy - ring + 1).max(0)..=(cy + ring - 1).min(ny - 1) {
+                visit(cx - ring, y);
+                if ring > 0 {
+                    visit(cx + ring, y);
                 }
             }
         }
@@ -229,5 +240,29 @@ mod tests {
             let want: Vec<u32> = (0..pts.len() as u32).filter(|&i| (pts[i as usize] - q).length() < r).collect();
             assert_eq!(near, want);
         }
+    }
+
+    /// A few points in a fine grid, queried from far away (inside and outside the grid): the
+    /// ring search visits only each ring's own cells (it once scanned the whole square of every
+    /// ring, which made sparse leaves take minutes) and still finds the brute-force nearest.
+    #[test]
+    fn nearest_in_a_sparse_fine_grid_matches_brute_force() {
+        let mut rng = Rng::new(9, "grid");
+        let spec = GridSpec::new(Vec2::ZERO, Vec2::ONE, 0.004);
+        let pts: Vec<Vec2> = (0..7).map(|_| Vec2::new(rng.next_f32(), rng.next_f32())).collect();
+        let mut grid = DynGrid::new(spec);
+        for (i, &p) in pts.iter().enumerate() {
+            grid.push(i as u32, p);
+        }
+        for _ in 0..300 {
+            let q = Vec2::new(rng.uniform(-0.5, 1.5), rng.uniform(-0.5, 1.5));
+            let brute = (0..pts.len() as u32)
+                .min_by(|&a, &b| {
+                    (pts[a as usize] - q).length_squared().total_cmp(&(pts[b as usize] - q).length_squared())
+                })
+                .unwrap();
+            assert_eq!(grid.nearest(q, &pts), (brute, (pts[brute as usize] - q).length_squared()));
+        }
+        assert_eq!(DynGrid::new(spec).nearest(Vec2::splat(0.5), &[]).0, NONE);
     }
 }

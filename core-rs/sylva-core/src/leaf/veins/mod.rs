@@ -4,6 +4,8 @@
 //! * [`colonize`]: space colonization from a root at the petiole, Open (a tree) or Closed (a
 //!   source associates with every node in its relative neighbourhood and dies when all have
 //!   reached it, which joins veins into real loops), accelerated by uniform grids.
+//! * [`primary`]: the species' primary veins (pinnate, palmate, dichotomous) that colonization
+//!   starts from instead of the petiole alone.
 //! * [`spline`]: arcuate / pinnate veins as quadratic splines from the midrib to the edge.
 //!
 //! Both give a [`VeinGraph`]: nodes with a parent (a tree rooted at the petiole) plus loop
@@ -15,6 +17,7 @@
 pub mod auxins;
 pub mod colonize;
 pub mod grid;
+pub mod primary;
 pub mod spline;
 
 use crate::leaf::margin::Outline;
@@ -203,7 +206,8 @@ pub fn build(p: &TreeParams, outline: &Outline, mask: &Mask) -> Veins {
                 closed: p.leaf_venation == LeafVenation::Closed,
             };
             let sources = auxins::place(&outline.points, area, mask, count, settings.kill, &mut rng);
-            colonize::grow(&settings, mask, &sources, &mut rng)
+            let seed = primary::build(p, outline, mask);
+            colonize::grow_from(&settings, mask, &sources, &seed, &mut rng)
         }
         LeafVenation::Spline => Veins { graph: spline::build(p, outline, mask), auxins: Vec::new() },
     };
