@@ -86,6 +86,8 @@ test('embedding and command-line sections, reachable from the contents', async (
   await expect(embedding).toContainText('/embed.html?v=1&seed=7');
   await expect(embedding).toContainText('<sylva-tree preset="quaking_aspen" seed="7"');
   await expect(embedding).toContainText('/sylva-tree.js"></script>');
+  // The button the page names is the toolbar's (it once said "Embed").
+  await expect(embedding).toContainText("The app's Copy embed code button (toolbar)");
   const attributes = page.getByTestId('docs-element-attributes');
   for (const name of ['preset', 'seed', 'params', 'autorotate', 'background']) {
     await expect(attributes.locator('code', { hasText: new RegExp(`^${name}$`) })).toHaveCount(1);

@@ -180,8 +180,8 @@ export function DocsPage({ model, version, pageHref }: Props) {
           <p>
             <code>embed.html</code> takes the same query as a share link and shows only the tree,
             with orbit controls (drag to turn, wheel to zoom) and an <em>Open in Sylva</em> link.
-            The app&apos;s <strong>Embed</strong> button copies this snippet for the current tree.
-            It is a static page: any static host of the build serves it.
+            The app&apos;s <strong>Copy embed code</strong> button (toolbar) copies this snippet for
+            the current tree. It is a static page: any static host of the build serves it.
           </p>
           <Code>{`<iframe src="${embedExample}"\n        width="480" height="360" title="Sylva tree" loading="lazy" style="border:0"></iframe>`}</Code>
           <table className="docs-options" data-testid="docs-embed-options">
