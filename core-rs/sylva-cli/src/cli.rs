@@ -120,15 +120,23 @@ pub struct TreeArgs {
     /// Random seed, the same as `--set seed=N`
     #[arg(long, value_name = "N")]
     pub seed: Option<String>,
-    /// Set one parameter (repeatable; applied in order, over the preset)
-    #[arg(long = "set", value_name = "id=value", value_parser = key_value)]
-    pub set: Vec<(String, String)>,
+    /// The `--set` values.
+    #[command(flatten)]
+    pub set: Sets,
     /// Growth volume primitives: a JSON array of spheres, boxes and cylinders (docs/formats.md)
     #[arg(long, value_name = "FILE.json")]
     pub volumes: Option<String>,
     /// `--seed` and `--set` in the order they were given (filled in by `main`).
     #[arg(skip)]
-    pub sets: Vec<(String, String)>,
+    pub in_order: Vec<(String, String)>,
+}
+
+/// `--set id=value`, repeatable (`generate`, `bench`, `leaf`, `bench-leaf`).
+#[derive(Args, Debug)]
+pub struct Sets {
+    /// Set one parameter (repeatable; applied in order, over the preset)
+    #[arg(long = "set", value_name = "id=value", value_parser = key_value)]
+    pub set: Vec<(String, String)>,
 }
 
 /// How an export is written (`generate --out`, `bench --glb`).
@@ -193,9 +201,9 @@ pub struct LeafArgs {
     /// Start from this leaf preset instead of the defaults
     #[arg(long, value_name = "NAME")]
     pub preset: Option<String>,
-    /// Set one parameter (repeatable; applied in order, over the preset)
-    #[arg(long = "set", value_name = "id=value", value_parser = key_value)]
-    pub set: Vec<(String, String)>,
+    /// The `--set` values.
+    #[command(flatten)]
+    pub set: Sets,
     /// Write the SVG drawing to FILE
     #[arg(long, value_name = "FILE")]
     pub svg: Option<String>,
@@ -213,9 +221,9 @@ pub struct BenchLeafArgs {
     /// A leaf preset to time (repeatable; default: oak and maple)
     #[arg(long, value_name = "NAME")]
     pub preset: Vec<String>,
-    /// Set one parameter (repeatable; applied in order, over the preset)
-    #[arg(long = "set", value_name = "id=value", value_parser = key_value)]
-    pub set: Vec<(String, String)>,
+    /// The `--set` values.
+    #[command(flatten)]
+    pub set: Sets,
     /// Number of timed runs
     #[arg(long, value_name = "N", value_parser = runs, default_value_t = 30)]
     pub runs: usize,

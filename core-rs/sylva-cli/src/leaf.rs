@@ -32,7 +32,7 @@ fn params(preset: Option<&str>, sets: &[(String, String)]) -> Result<TreeParams,
 
 /// `sylva leaf`: the leaf as JSON, and its SVG drawing with `--svg`.
 pub fn leaf(a: &LeafArgs) -> Result<String, String> {
-    let p = params(a.preset.as_deref(), &a.set)?;
+    let p = params(a.preset.as_deref(), &a.set.set)?;
     let l = leaf::generate(&p).map_err(|e| e.to_string())?;
     if let Some(path) = &a.svg {
         let opts = svg::SvgOptions { triangulation: a.triangulation, step: a.step, ..svg::SvgOptions::default() };
@@ -45,7 +45,7 @@ pub fn leaf(a: &LeafArgs) -> Result<String, String> {
 pub fn bench(o: &BenchLeafArgs) -> Result<String, String> {
     let names: Vec<String> = if o.preset.is_empty() { vec!["oak".into(), "maple".into()] } else { o.preset.clone() };
     let runs = o.runs.max(1);
-    let mut sets = o.set.clone();
+    let mut sets = o.set.set.clone();
     if !sets.iter().any(|(k, _)| k == "leaf_vein_density") {
         sets.push(("leaf_vein_density".into(), "20000".into()));
     }

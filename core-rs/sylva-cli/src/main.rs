@@ -46,8 +46,8 @@ fn run(args: &[String]) -> Result<String, String> {
     // `--seed` and `--set seed=...` apply in the order given, like every `--set`.
     if let Some((_, m)) = matches.subcommand() {
         match &mut cli.command {
-            Some(Command::Generate(a)) => a.tree.sets = ordered_sets(m),
-            Some(Command::Bench(a)) => a.tree.sets = ordered_sets(m),
+            Some(Command::Generate(a)) => a.tree.in_order = ordered_sets(m),
+            Some(Command::Bench(a)) => a.tree.in_order = ordered_sets(m),
             _ => {}
         }
     }
@@ -124,7 +124,7 @@ fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
             .map_err(|e| e.to_string())?,
         None => TreeParams::default(),
     };
-    for (k, v) in &a.sets {
+    for (k, v) in &a.in_order {
         params.set(k, parse_value(k, v)?).map_err(|e| e.to_string())?;
     }
     if let Some(path) = &a.volumes {
