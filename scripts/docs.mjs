@@ -1,24 +1,21 @@
-// `npm run docs`: regenerates the README's parameter reference from the registry
-// (`sylva params --markdown`). A Rust test fails when the README is stale.
+// `npm run docs`: regenerates the references that come from the code. A Rust test
+// (core-rs/sylva-cli/tests/docs.rs) fails when a file differs from what the CLI prints.
+//   docs/parameters.md      `sylva params --markdown`   (the parameter registry)
+//   docs/cli.md             `sylva cli-reference`       (the CLI's clap declarations)
+//   web/src/docs/cli.json   `sylva cli-reference --json` (the docs page's Command line section)
 import { execFileSync } from 'node:child_process';
-import { readFileSync, writeFileSync } from 'node:fs';
+import { writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
+import { nativeCli } from './native-cli.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
-const table = execFileSync(
-  'cargo',
-  ['run', '--quiet', '--release', '-p', 'sylva-cli', '--', 'params', '--markdown'],
-  {
-    cwd: root,
-    encoding: 'utf8',
-  },
-).trim();
-const path = `${root}/README.md`;
-const readme = readFileSync(path, 'utf8');
-const start = '<!-- params:start -->';
-const end = '<!-- params:end -->';
-const a = readme.indexOf(start);
-const b = readme.indexOf(end);
-if (a < 0 || b < a) throw new Error('README.md lacks the params:start/params:end markers');
-writeFileSync(path, `${readme.slice(0, a + start.length)}\n${table}\n${readme.slice(b)}`);
-console.log('README.md parameter reference updated');
+const sylva = nativeCli();
+const outputs = [
+  ['docs/parameters.md', ['params', '--markdown']],
+  ['docs/cli.md', ['cli-reference']],
+  ['web/src/docs/cli.json', ['cli-reference', '--json']],
+];
+for (const [file, args] of outputs) {
+  writeFileSync(`${root}/${file}`, execFileSync(sylva, args, { encoding: 'utf8' }));
+  console.log(`${file} written (sylva ${args.join(' ')})`);
+}

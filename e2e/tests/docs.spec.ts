@@ -17,6 +17,14 @@ interface Spec {
   options?: string[];
 }
 
+/** The generated CLI reference, read from its file, independent of the page. */
+function cliReference(): {
+  commands: { name: string; synopsis: string; options: { flag: string }[]; examples: string[] }[];
+} {
+  const file = fileURLToPath(new URL('../../web/src/docs/cli.json', import.meta.url));
+  return JSON.parse(readFileSync(file, 'utf8')) as ReturnType<typeof cliReference>;
+}
+
 /** The registry straight from the wasm core, independent of the page. */
 function registry(): Spec[] {
   const wasm = fileURLToPath(new URL('../../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url));
@@ -78,6 +86,8 @@ test('embedding and command-line sections, reachable from the contents', async (
   await expect(embedding).toContainText('/embed.html?v=1&seed=7');
   await expect(embedding).toContainText('<sylva-tree preset="quaking_aspen" seed="7"');
   await expect(embedding).toContainText('/sylva-tree.js"></script>');
+  // The button the page names is the toolbar's (it once said "Embed").
+  await expect(embedding).toContainText("The app's Copy embed code button (toolbar)");
   const attributes = page.getByTestId('docs-element-attributes');
   for (const name of ['preset', 'seed', 'params', 'autorotate', 'background']) {
     await expect(attributes.locator('code', { hasText: new RegExp(`^${name}$`) })).toHaveCount(1);
@@ -86,18 +96,31 @@ test('embedding and command-line sections, reachable from the contents', async (
   await expect(options).toContainText('autorotate');
   await expect(options).toContainText('transparent');
 
+  // The CLI section comes from the generated reference (`sylva cli-reference --json`, checked
+  // against the binary by a Rust test): every command, synopsis, option and example is shown.
   const cli = page.getByTestId('docs-cli-commands');
+  const reference = cliReference();
+  expect(reference.commands.map((c) => c.name)).toEqual(
+    expect.arrayContaining(['generate', 'leaf', 'bench-leaf']),
+  );
+  await expect(cli.locator('[data-command]')).toHaveCount(reference.commands.length);
+  for (const c of reference.commands) {
+    const command = cli.locator(`[data-command="${c.name}"]`);
+    await expect(command).toContainText(c.synopsis);
+    for (const o of c.options) await expect(command).toContainText(o.flag);
+    for (const e of c.examples) await expect(command).toContainText(e);
+  }
   for (const usage of [
-    'sylva generate [--preset NAME] [--seed N] [--set id=value]...',
-    'sylva params [--markdown]',
-    'sylva presets',
+    'sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json]',
+    '[--no-tangents]',
     'sylva envelope --shape NAME [--samples N]',
-    'sylva bench [--preset NAME]',
     'sylva leaf [--preset NAME]',
     'sylva bench-leaf',
   ]) {
     await expect(cli).toContainText(usage);
   }
+  await page.getByRole('link', { name: 'sylva bench-leaf' }).click();
+  await expect(cli.locator('[data-command="bench-leaf"]')).toBeInViewport();
   await page.getByRole('link', { name: 'Command line' }).click();
   await expect(page.getByTestId('docs-cli')).toBeInViewport();
   await expect(page.getByTestId('docs-back')).toHaveAttribute('href', 'index.html');

@@ -122,6 +122,8 @@ test('Copy embed code and the docs link', async ({ page, context, baseURL }) => 
   await page.goto(`/?${QUERY}`);
   await waitForTree(page);
   await expect(page.getByTestId('docs-link')).toHaveAttribute('href', 'docs.html');
+  // The docs (docs.html, docs/embedding.md) name the button by this label.
+  await expect(page.getByTestId('copy-embed')).toHaveText('Copy embed code');
   await page.getByTestId('copy-embed').click();
   const dialog = page.getByTestId('embed-dialog');
   await expect(dialog).toBeVisible();

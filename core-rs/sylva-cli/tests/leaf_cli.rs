@@ -93,3 +93,24 @@ fn bench_leaf_reports_medians_with_5000_sources() {
     assert_eq!(code, 0);
     assert!(out.contains("oak (Open)") && out.contains("maple (Closed)"), "{out}");
 }
+
+#[test]
+fn leaf_presets_lists_the_species_and_leaf_obj_writes_the_blade() {
+    let (code, out, err) = sylva(&["leaf-presets"]);
+    assert_eq!(code, 0, "{err}");
+    let names: Vec<String> =
+        json(&out).as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap().to_string()).collect();
+    for species in ["oak", "maple", "birch", "aspen", "willow", "ginkgo", "pine", "fir"] {
+        assert!(names.iter().any(|n| n == species), "{species} missing from {names:?}");
+    }
+    let dir = std::env::temp_dir().join(format!("sylva-leaf-obj-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let obj = dir.join("oak.obj");
+    let (code, _, err) = sylva(&["leaf", "--preset", "oak", "--obj", obj.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&obj).unwrap();
+    let vertices = text.lines().filter(|l| l.starts_with("v ")).count();
+    let faces = text.lines().filter(|l| l.starts_with("f ")).count();
+    assert!(vertices > 50 && faces > 50, "{vertices} vertices, {faces} faces");
+    std::fs::remove_dir_all(&dir).ok();
+}

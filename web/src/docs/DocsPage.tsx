@@ -1,8 +1,11 @@
 /**
  * The docs page: the parameter reference (from the registry, like the panel), presets, share
- * links, embedding, export and the command line. All text is rendered as text.
+ * links, embedding, export and the command line (from the CLI's generated reference). All text
+ * is rendered as text.
  */
 import { useEffect, type ReactNode } from 'react';
+import { CLI_REFERENCE } from './cli';
+import { CliSection } from './CliSection';
 import type { DocsModel } from './model';
 
 interface Props {
@@ -28,47 +31,6 @@ function Section(props: { id: string; title: string; children: ReactNode }) {
     </section>
   );
 }
-
-/** The real `sylva` commands (core-rs/sylva-cli/src/main.rs and leaf.rs). */
-const CLI_COMMANDS: { usage: string; what: string; example: string }[] = [
-  {
-    usage:
-      'sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] [--out FILE.glb|FILE.obj] [--leaves instanced|baked|none] [--no-textures] [--no-wind] [--report skeleton|mesh]',
-    what: 'Generates one tree and prints one JSON object: vertices, triangles, stems, the content hash (the same as the app shows) and milliseconds per stage. --out writes glTF 2.0 binary (.glb: bark and leaf meshes, PBR materials, embedded textures, vertex colours, wind attributes) or Wavefront OBJ (.obj plus NAME.mtl and NAME_*.png textures next to it, leaves baked). --leaves: instanced (GLB default, EXT_mesh_gpu_instancing), baked into one mesh, or none; --no-textures and --no-wind leave those out. --report skeleton adds every stem, --report mesh the mesh topology; --volumes reads growth volume primitives from a JSON file.',
-    example: 'sylva generate --preset quaking_aspen --seed 7 --set levels=3 --out aspen.glb',
-  },
-  {
-    usage: 'sylva params [--markdown]',
-    what: 'The parameter registry as JSON (the same data as this page), or as a Markdown table.',
-    example: 'sylva params --markdown > parameters.md',
-  },
-  {
-    usage: 'sylva presets',
-    what: 'The tree presets as JSON (only the values that differ from the defaults).',
-    example: 'sylva presets',
-  },
-  {
-    usage: 'sylva envelope --shape NAME [--samples N]',
-    what: 'The crown envelope [[r, ShapeRatio(r)], ...] of one crown shape (N from 2 to 100000, default 101).',
-    example: 'sylva envelope --shape flame --samples 11',
-  },
-  {
-    usage: 'sylva bench [--preset NAME] [--seed N] [--set id=value]... [--runs N] [--json] [--glb]',
-    what: 'Median native generation time over N runs (default 30) after a warm-up; --glb also times the GLB export.',
-    example: 'sylva bench --preset fir --runs 50 --json',
-  },
-  {
-    usage:
-      'sylva leaf [--preset NAME] [--set id=value]... [--svg FILE] [--step N] [--triangulation]',
-    what: 'One leaf (leaf presets: oak, maple, birch, willow, pine) as JSON: outline, triangles, auxins, vein nodes; --svg writes the drawing after growth step N, --triangulation adds the triangles.',
-    example: 'sylva leaf --preset maple --svg maple.svg',
-  },
-  {
-    usage: 'sylva bench-leaf [--preset NAME] [--set id=value]... [--runs N] [--json]',
-    what: 'Median leaf generation time per stage (without --preset: Oak and Maple at the maximum vein density).',
-    example: 'sylva bench-leaf --json',
-  },
-];
 
 /** The documentation page. */
 export function DocsPage({ model, version, pageHref }: Props) {
@@ -116,6 +78,13 @@ export function DocsPage({ model, version, pageHref }: Props) {
           </li>
           <li>
             <a href="#cli">Command line</a>
+            <ul>
+              {CLI_REFERENCE.commands.map((command) => (
+                <li key={command.name}>
+                  <a href={`#cli-${command.name}`}>sylva {command.name}</a>
+                </li>
+              ))}
+            </ul>
           </li>
         </ul>
       </nav>
@@ -211,8 +180,8 @@ export function DocsPage({ model, version, pageHref }: Props) {
           <p>
             <code>embed.html</code> takes the same query as a share link and shows only the tree,
             with orbit controls (drag to turn, wheel to zoom) and an <em>Open in Sylva</em> link.
-            The app&apos;s <strong>Embed</strong> button copies this snippet for the current tree.
-            It is a static page: any static host of the build serves it.
+            The app&apos;s <strong>Copy embed code</strong> button (toolbar) copies this snippet for
+            the current tree. It is a static page: any static host of the build serves it.
           </p>
           <Code>{`<iframe src="${embedExample}"\n        width="480" height="360" title="Sylva tree" loading="lazy" style="border:0"></iframe>`}</Code>
           <table className="docs-options" data-testid="docs-embed-options">
@@ -385,36 +354,7 @@ export function DocsPage({ model, version, pageHref }: Props) {
         </Section>
 
         <Section id="cli" title="Command line">
-          <p>
-            The native <code>sylva</code> binary gives the same trees as the browser (the same
-            content hash). Build and run it from the repository with{' '}
-            <code>cargo run --release -p sylva-cli -- COMMAND ...</code>.<code> --set</code> takes
-            numbers, <code>true</code>/<code>false</code>, or an option by name (
-            <code>--set shape=inverse-conical</code>). Invalid parameters, unknown options and
-            budget overruns print <code>error: ...</code> and exit with status 2.
-          </p>
-          <table className="docs-cli" data-testid="docs-cli-commands">
-            <thead>
-              <tr>
-                <th scope="col">Command</th>
-                <th scope="col">What it does</th>
-              </tr>
-            </thead>
-            <tbody>
-              {CLI_COMMANDS.map((c) => (
-                <tr key={c.usage}>
-                  <td>
-                    <code>{c.usage}</code>
-                    <div className="docs-example">
-                      e.g. <code>{c.example}</code>
-                    </div>
-                  </td>
-                  <td>{c.what}</td>
-                </tr>
-              ))}
-            </tbody>
-          </table>
-          <Code>{`cargo run --release -p sylva-cli -- generate --preset fir --seed 7 --set l1_branches=80 --out fir.glb\n# {"vertices":...,"triangles":...,"stems":...,"hash":"...","ms":{...},"total_ms":...}\n\ncargo run --release -p sylva-cli -- generate --preset fir --seed 7 --out fir.obj   # fir.obj, fir.mtl, fir_*.png`}</Code>
+          <CliSection />
         </Section>
       </main>
     </div>
