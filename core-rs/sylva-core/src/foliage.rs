@@ -140,8 +140,33 @@ pub fn face_up(t: Vec3) -> Vec3 {
 
 /// `v` rotated by `angle` (radians) about the unit `axis` (Rodrigues, portable math).
 fn rotate(v: Vec3, axis: Vec3, angle: f32) -> Vec3 {
-    let (s, c) = (math::sin(angle), math::cos(angle));
+    rotate_sc(v, axis, [math::sin(angle), math::cos(angle)])
+}
+
+/// [`rotate`] by the angle whose sine and cosine are `sc`.
+fn rotate_sc(v: Vec3, axis: Vec3, [s, c]: [f32; 2]) -> Vec3 {
     v * c + axis.cross(v) * s + axis * axis.dot(v) * (1.0 - c)
+}
+
+/// Sine and cosine of the golden-angle turn of leaf `k` (`GOLDEN_ANGLE · k` degrees), for every
+/// `k < n`. The same for every tree, so computed once and kept (grown when a tree has more
+/// leaves): two software trigonometric calls per leaf were a fifth of the foliage stage.
+fn golden_turns(n: usize) -> Arc<Vec<[f32; 2]>> {
+    static TURNS: Mutex<Option<Arc<Vec<[f32; 2]>>>> = Mutex::new(None);
+    let mut slot = TURNS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(t) = slot.as_ref().filter(|t| t.len() >= n) {
+        return Arc::clone(t);
+    }
+    let have = slot.as_ref().map_or(0, |t| t.len());
+    let mut turns: Vec<[f32; 2]> = slot.as_ref().map_or_else(Vec::new, |t| t.to_vec());
+    turns.reserve(n.max(2 * have) - have);
+    for k in have..n.max(2 * have) {
+        let a = math::rad(GOLDEN_ANGLE * k as f32);
+        turns.push([math::sin(a), math::cos(a)]);
+    }
+    let turns = Arc::new(turns);
+    *slot = Some(Arc::clone(&turns));
+    turns
 }
 
 /// Where leaves sit along one stem: `(stem index, first t, last t, count)`.
@@ -181,12 +206,12 @@ fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
 
 /// Per-leaf frame: position, direction (midrib) and front (`curve` reads `stem`'s centre curve); `angle` is the cosine and sine of
 /// the Foliage Angle (the same for every leaf, so computed once).
-fn leaf_frame(stem: &Stem, curve: &mut StemPoints, t: f32, k: usize, angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
+fn leaf_frame(stem: &Stem, curve: &mut StemPoints, t: f32, turn: [f32; 2], angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
     let (pos, tangent) = curve.sample(t);
     let side0 = math::unit_or(stem.base_normal - tangent * tangent.dot(stem.base_normal), || {
         math::unit_or(tangent.cross(Vec3::Y), || tangent.cross(Vec3::X).normalize())
     });
-    let side = rotate(side0, tangent, math::rad(GOLDEN_ANGLE * k as f32));
+    let side = rotate_sc(side0, tangent, turn);
     let dir = math::unit_or(tangent * angle.0 + side * angle.1, || tangent);
     (pos, dir, side)
 }
@@ -227,6 +252,7 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
     let bias = math::pow(2.0, -2.0 * p.foliage_distribution);
     let a = math::rad(p.foliage_angle);
     let angle = (math::cos(a), math::sin(a));
+    let turns = golden_turns(spans.iter().map(|s| s.3).sum());
     let mut k = 0usize;
     for &(si, t0, t1, count) in &spans {
         let stem = &skeleton.stems[si];
@@ -242,9 +268,10 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
                 }
                 u += (clump_t - u) * p.foliage_clumping;
             }
-            let u = math::pow(u.clamp(0.0, 1.0), bias);
+            // pow(u, 1) is u exactly: skip the call for an even distribution.
+            let u = if bias == 1.0 { u.clamp(0.0, 1.0) } else { math::pow(u.clamp(0.0, 1.0), bias) };
             let t = t0 + (t1 - t0) * u;
-            let (pos, dir, side) = leaf_frame(stem, &mut curve, t, k, angle);
+            let (pos, dir, side) = leaf_frame(stem, &mut curve, t, turns[k], angle);
             k += 1;
             let dirs: &[Vec3] = if p.foliage_twigs3 {
                 &[
