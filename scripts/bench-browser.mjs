@@ -151,7 +151,16 @@ function step(page, id, value) {
           'sylva:applied',
           (e) => {
             clearTimeout(timer);
-            resolve({ ms: e.detail.at - t0, preview: e.detail.preview });
+            const d = e.detail;
+            resolve({
+              ms: d.at - t0,
+              preview: d.preview,
+              // Where the time went: the core's stages in the worker, input to the message on
+              // the main thread, and the viewer setting the arrays up.
+              parts: d.received
+                ? [d.workerMs, d.received - t0, d.at - d.received, handled - t0]
+                : null,
+            });
           },
           { once: true },
         );
@@ -165,6 +174,9 @@ function step(page, id, value) {
             new Event(el instanceof HTMLSelectElement ? 'change' : 'input', { bubbles: true }),
           );
         }
+        // The app's input handling (its React render included) ends here or in a microtask.
+        let handled = performance.now();
+        queueMicrotask(() => (handled = performance.now()));
       }),
     [id, value],
   );
@@ -197,10 +209,10 @@ function dragValues(spec, value) {
     const n = spec.max + 1;
     return Array.from({ length: STEPS }, (_, i) => (value + i + 1) % n);
   }
-  // A drag across a fifth of the range and back, one slider step or more at a time.
-  const span = (spec.max - spec.min) / 5;
-  const delta = Math.max(spec.step, span / (STEPS / 2));
-  const dir = value + span <= spec.max ? 1 : -1;
+  // Ten moves one way and ten back, each about a pixel of a 250 px slider (at least one step):
+  // a steady drag, one input event per move.
+  const delta = Math.max(spec.step, (spec.max - spec.min) / 250);
+  const dir = value + (delta * STEPS) / 2 <= spec.max ? 1 : -1;
   return Array.from({ length: STEPS }, (_, i) => {
     const k = i < STEPS / 2 ? i + 1 : STEPS - i - 1;
     const v = value + dir * k * delta;
@@ -258,11 +270,21 @@ async function drag(browser, url) {
     }, id);
     if (!spec) throw new Error(`no control for ${id}`);
     const times = [];
-    for (const v of dragValues(spec, spec.value)) times.push((await step(page, id, v)).ms);
+    const parts = [];
+    for (const v of dragValues(spec, spec.value)) {
+      const r = await step(page, id, v);
+      times.push(r.ms);
+      if (r.parts) parts.push(r.parts);
+    }
     frames.push(await probe());
     per[id] = round(median(times));
-    if (process.env.SYLVA_BENCH_VERBOSE)
-      console.error(`bench: ${id} ${times.map((t) => t.toFixed(1)).join(' ')}`);
+    if (process.env.SYLVA_BENCH_VERBOSE) {
+      const m = (k) => median(parts.map((p) => p[k]))?.toFixed(1);
+      console.error(
+        `bench: ${id} ${times.map((t) => t.toFixed(1)).join(' ')}\n` +
+          `  medians: input handling ${m(3)}, core ${m(0)}, input to message ${m(1)}, viewer ${m(2)} ms`,
+      );
+    }
     all.push(...times);
     // A viewer-only control regenerates nothing: there is nothing to settle.
     if (id !== 'show_preview') {

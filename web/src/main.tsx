@@ -1,13 +1,14 @@
-/** Entry point: mounts the React app. */
-import { StrictMode } from 'react';
-import { createRoot } from 'react-dom/client';
-import { App } from './app/App';
+/**
+ * Entry point: starts the generator worker first (its wasm downloads and compiles while the
+ * app's code loads), then mounts the React app.
+ */
+import { prestartGenerator } from './createWorker';
 import './styles.css';
 
-const root = document.getElementById('root');
-if (!root) throw new Error('missing #root');
-createRoot(root).render(
-  <StrictMode>
-    <App />
-  </StrictMode>,
-);
+prestartGenerator();
+
+void import('./boot').then(({ boot }) => {
+  const root = document.getElementById('root');
+  if (!root) throw new Error('missing #root');
+  boot(root);
+});

@@ -1,7 +1,7 @@
 /** React hook wiring the scheduler to the viewer (mesh via refs) and to small React state. */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
-import { createModuleWorker } from '../createWorker';
+import { createGeneratorWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { GenerationScheduler } from '../worker/scheduler';
@@ -62,7 +62,7 @@ export function useGenerator(
 
   useEffect(() => {
     let announced = false;
-    const scheduler = new GenerationScheduler(createModuleWorker, {
+    const scheduler = new GenerationScheduler(createGeneratorWorker, {
       onReady: (info, restartCount) => {
         setRestarts(restartCount);
         if (!announced) {
@@ -75,6 +75,7 @@ export function useGenerator(
         }
       },
       onResult: (result) => {
+        const received = performance.now();
         const frame =
           !hadResultRef.current ||
           (frameFromIdRef.current > 0 && result.id >= frameFromIdRef.current);
@@ -92,7 +93,12 @@ export function useGenerator(
         const applied = { id: result.id, at: built, requestedAt: requestedAt ?? null, preview };
         log.push(applied);
         if (log.length > TREE_LOG) log.splice(0, log.length - TREE_LOG);
-        emitDebug('applied', { kind: 'tree', ...applied });
+        emitDebug('applied', {
+          kind: 'tree',
+          ...applied,
+          received,
+          workerMs: result.meta.total_ms,
+        });
         // The upload and draw happen on the next animation frame (never a synchronous draw
         // here: that would block the main thread while a slider is dragged).
         const roundTripMs = requestedAt === undefined ? null : built - requestedAt;

@@ -4,7 +4,7 @@
  */
 import type { TreeBuffers, WasmApi } from '../core/types';
 import { mergeUpdate } from '../viewer/treeState';
-import { createHandler } from '../worker/handler';
+import { createHandler, type HandlerOptions } from '../worker/handler';
 import type { ResultResponse, WorkerRequest, WorkerResponse } from '../worker/protocol';
 import { loadWasm } from './realWasm';
 
@@ -26,18 +26,19 @@ export interface Harness {
   tree: () => TreeBuffers;
 }
 
-/** A handler over `wasm` (the real module by default) that posts hashes synchronously. */
-export function harness(wasm: WasmApi = loadWasm()): Harness {
+/**
+ * A handler over `wasm` (the real module by default) that posts hashes synchronously;
+ * `options` as for `createHandler` (the default `defer` runs the task at once).
+ */
+export function harness(wasm: WasmApi = loadWasm(), options: HandlerOptions = {}): Harness {
   const sent: Sent[] = [];
-  const handle = createHandler(
-    wasm,
-    (message, transfer) => sent.push({ message, transfer }),
-    undefined,
-    (task) => {
+  const handle = createHandler(wasm, (message, transfer) => sent.push({ message, transfer }), {
+    defer: (task) => {
       task();
       return () => undefined;
     },
-  );
+    ...options,
+  });
   const results = (): ResultResponse[] =>
     sent.flatMap((s) => (s.message.type === 'result' ? [s.message] : []));
   return {

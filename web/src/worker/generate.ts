@@ -5,7 +5,14 @@
  * No Worker globals: the scheduling of the hash is injected, so this is tested in Node.
  */
 import { parseMeta } from '../core/parse';
-import type { BarkTextureBuffers, TreeMeta, TreeUpdate, WasmApi, WasmSession } from '../core/types';
+import type {
+  BarkTextureBuffers,
+  Params,
+  TreeMeta,
+  TreeUpdate,
+  WasmApi,
+  WasmSession,
+} from '../core/types';
 import { volumeToCore } from '../core/volumes';
 import type { GenerateRequest, WorkerResponse } from './protocol';
 
@@ -84,6 +91,8 @@ export class SessionGenerator {
   /** Leaf shape whose texture the main thread has ('' = none). */
   private sentLeafHash = '';
   private barkSent = false;
+  /** Whether a result went out: the first one carries every array, whatever changed. */
+  private sentAny = false;
   /** Result whose hash is still to be posted, and the cancel of its scheduled task. */
   private hashOwed: number | null = null;
   private cancelHash: (() => void) | null = null;
@@ -142,6 +151,14 @@ export class SessionGenerator {
     }
   }
 
+  /**
+   * Generates `params` into the session without posting anything (a warm-up): the first
+   * request then reruns only what differs, and still gets every array.
+   */
+  prime(params: Params): void {
+    this.session.update(JSON.stringify(params), -1);
+  }
+
   /** Forgets the cached stages (the next request generates cold). */
   clear(): void {
     this.cancelHash?.();
@@ -161,13 +178,9 @@ export class SessionGenerator {
   /** The arrays `meta.changes` names, copied out of the module (one copy each). */
   private collect(meta: TreeMeta): TreeUpdate {
     const s = this.session;
-    const changes = meta.changes ?? {
-      skeleton: true,
-      bark: true,
-      placements: true,
-      leaf_mesh: true,
-      leaf: true,
-    };
+    const all = { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true };
+    const changes = this.sentAny ? (meta.changes ?? all) : all;
+    this.sentAny = true;
     const update: TreeUpdate = { meta };
     if (changes.bark) {
       update.bark = {

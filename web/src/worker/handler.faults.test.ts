@@ -187,15 +187,13 @@ describe('worker handler fault handling', () => {
     const sent: WorkerResponse[] = [];
     let clock = 0;
     let reads = 0;
-    const handle = createHandler(
-      wasm,
-      (message) => sent.push(message),
-      () => {
+    const handle = createHandler(wasm, (message) => sent.push(message), {
+      now: () => {
         reads++;
         clock += 10;
         return clock;
       },
-    );
+    });
     handle({ type: 'debug-hang', ms: 1_000 });
     expect(sent).toEqual([{ type: 'idle' }]);
     expect(clock).toBeGreaterThanOrEqual(1_010);

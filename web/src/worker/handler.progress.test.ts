@@ -10,7 +10,7 @@ function run(request: Parameters<ReturnType<typeof createHandler>>[0]) {
     task();
     return () => undefined;
   };
-  createHandler(loadWasm(), (message) => sent.push(message), undefined, now)(request);
+  createHandler(loadWasm(), (message) => sent.push(message), { defer: now })(request);
   return sent;
 }
 

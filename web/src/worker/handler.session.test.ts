@@ -87,16 +87,13 @@ describe('session generation in the worker', () => {
   it('a drag gets a preview without a hash; the settle brings the full tree and its hash', () => {
     const sent: WorkerResponse[] = [];
     // Budget 0: every bark is over it, so a drag is always answered with a preview.
-    const handle = createHandler(
-      loadWasm(),
-      (m) => sent.push(m),
-      undefined,
-      (task) => {
+    const handle = createHandler(loadWasm(), (m) => sent.push(m), {
+      defer: (task) => {
         task();
         return () => undefined;
       },
-      0,
-    );
+      previewBudgetMs: 0,
+    });
     handle({ type: 'generate', id: 1, params: BASE });
     handle({ type: 'generate', id: 2, params: { ...BASE, l1_length: 0.35 }, preview: true });
     const preview = sent.at(-1);
@@ -118,15 +115,12 @@ describe('session generation in the worker', () => {
   it('the hash waits for the deferred task, a newer request takes its place, an error pays it', () => {
     const sent: WorkerResponse[] = [];
     const tasks: (() => void)[] = [];
-    const handle = createHandler(
-      loadWasm(),
-      (m) => sent.push(m),
-      undefined,
-      (task) => {
+    const handle = createHandler(loadWasm(), (m) => sent.push(m), {
+      defer: (task) => {
         tasks.push(task);
         return () => tasks.splice(tasks.indexOf(task), 1);
       },
-    );
+    });
     handle({ type: 'generate', id: 1, params: BASE });
     expect(sent.map((m) => m.type)).toEqual(['result']);
     // A newer request before the hash ran: the first tree's hash is never computed.
@@ -151,5 +145,33 @@ describe('session generation in the worker', () => {
     expect(b.foliage?.positions).toBe(a.foliage?.positions);
     expect(b.foliage?.matrices).not.toBe(a.foliage?.matrices);
     expect(b.foliage?.texture).toBeNull();
+  });
+
+  it('a primed session answers the first request with every array, and only once generated', () => {
+    const h = harness(loadWasm(), { prime: BASE });
+    h.handle({ type: 'generate', id: 1, params: BASE });
+    const first = h.lastResult();
+    expect(parts(first)).toEqual([
+      'bark',
+      'envelope',
+      'markers',
+      'instances',
+      'leafMesh',
+      'leafTexture',
+    ]);
+    expect(first.barkTextures).toBeDefined();
+    // Nothing was regenerated for it: the primed tree is the requested one.
+    expect(first.meta.changes).toEqual({
+      skeleton: false,
+      bark: false,
+      placements: false,
+      leaf_mesh: false,
+      leaf: false,
+    });
+    expect(h.tree().meta.hash).toBe(coldHash(BASE));
+    // A different first tree after a warm-up is still right.
+    const other = harness(loadWasm(), { prime: BASE });
+    other.handle({ type: 'generate', id: 1, params: { ...BASE, seed: 8 } });
+    expect(other.tree().meta.hash).toBe(coldHash({ ...BASE, seed: 8 }));
   });
 });

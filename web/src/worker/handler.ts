@@ -1,6 +1,6 @@
 /** Worker-side request handling over an initialised wasm API (no Worker globals; testable in Node). */
 import { parseLeafInspection, parsePresets, parseRegistry, toSylvaError } from '../core/parse';
-import type { WasmApi } from '../core/types';
+import type { Params, WasmApi } from '../core/types';
 import { lodsResponse } from '../lod/lodHandler';
 import { exportFormatsOf, exportTree } from '../export/exportHandler';
 import {
@@ -72,6 +72,22 @@ function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
   post({ type: 'leaf', id: request.id, ...parseLeafInspection(text) }, []);
 }
 
+/** Settings of [`createHandler`]. */
+export interface HandlerOptions {
+  /** Clock of the debug hang (default `performance.now`). */
+  now?: () => number;
+  /** How a result's hash is scheduled after it (default: a zero-delay timer). */
+  defer?: Defer;
+  /** Bark time above which a drag gets a preview (ms; default [`PREVIEW_BUDGET_MS`]). */
+  previewBudgetMs?: number;
+  /**
+   * Generates these parameters before the first request (the worker does it for the default
+   * tree while the page loads): the wasm code is compiled and warm, and a first request for
+   * the same tree is answered without generating it again.
+   */
+  prime?: Params;
+}
+
 /**
  * Creates the request handler: a typed error answers the request and the worker stays usable;
  * a trap is fatal, and after it every request is answered with `fatal`.
@@ -79,22 +95,29 @@ function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
 export function createHandler(
   wasm: WasmApi,
   post: Post,
-  now: () => number = () => performance.now(),
-  defer: Defer = deferToTimer,
-  previewBudgetMs: number = PREVIEW_BUDGET_MS,
+  options: HandlerOptions = {},
 ): (request: WorkerRequest) => void {
+  const now = options.now ?? (() => performance.now());
   let deadMessage: string | null = null;
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
     post({ type: 'fatal', message: deadMessage }, []);
   };
   const generator = new SessionGenerator(wasm, post, {
-    defer,
-    previewBudgetMs,
+    defer: options.defer ?? deferToTimer,
+    previewBudgetMs: options.previewBudgetMs ?? PREVIEW_BUDGET_MS,
     onDeferredThrow: (thrown) => {
       if (isTrap(thrown)) die(thrown);
     },
   });
+  if (options.prime) {
+    try {
+      generator.prime(options.prime);
+    } catch (thrown) {
+      // A failed warm-up changes nothing: the first request generates cold.
+      if (isTrap(thrown)) die(thrown);
+    }
+  }
 
   /** Runs one request; what it throws becomes the request's error, or kills the worker. */
   const run = (id: number | null, work: () => void): void => {

@@ -14,8 +14,12 @@ const post: Post = (message, transfer) => scope.postMessage(message, transfer);
 
 const handlerPromise = init()
   .then(() => {
+    // The default tree is generated before anyone asks (while the page loads three.js and
+    // React): the module's code is compiled and warm, and a first request for the default tree
+    // (a new visitor's) only copies the arrays out.
+    const handle = createHandler(wasm, post, { prime: {} });
     post(readyMessage(wasm), []);
-    return createHandler(wasm, post);
+    return handle;
   })
   .catch((thrown: unknown) => {
     const message = thrown instanceof Error ? thrown.message : String(thrown);
