@@ -5,6 +5,8 @@ interface Window {
     hang?(ms: number): void;
     setTimeLimit?(ms: number): void;
     geometries?(): number | null;
+    trees?(): { id: number; at: number; preview: boolean }[];
+    pauseRendering?(paused: boolean): void;
     growth?(): { markers: number; volumes: number; dragging: boolean };
   };
   /** Set by the tests' init scripts. */

@@ -103,7 +103,7 @@ async function treePixels(
         const y = Math.floor(p / width);
         if (y > cut) continue;
         set.add(Math.floor(y / 6) * cols + Math.floor((p % width) / 6));
-        for (let k = 0; k < 3; k++) sum[k] += a.data[p * 4 + k]!;
+        for (let k = 0; k < 3; k++) sum[k]! += a.data[p * 4 + k]!;
         count++;
       }
       return { blocks: [...set], mean: sum.map((v) => v / Math.max(count, 1)) };

@@ -180,11 +180,17 @@ export function App() {
   // tree follows the preview right away (the scheduler also settles after a short pause).
   useEffect(() => {
     const settle = () => generatorRef.current.settle();
+    // A range input's native `change` fires when its drag is released (React's onChange is `input`).
+    const onChangeEvent = (event: Event) => {
+      if (event.target instanceof HTMLInputElement && event.target.type === 'range') settle();
+    };
     window.addEventListener('pointerup', settle);
     window.addEventListener('keyup', settle);
+    window.addEventListener('change', onChangeEvent);
     return () => {
       window.removeEventListener('pointerup', settle);
       window.removeEventListener('keyup', settle);
+      window.removeEventListener('change', onChangeEvent);
     };
   }, []);
 
