@@ -85,6 +85,8 @@ pub struct Generated {
     pub foliage: foliage::Foliage,
     /// The tree holes cut into the bark (where, how big, found by which method).
     pub holes: Vec<mesh::holes::Hole>,
+    /// The bark pattern ([`mesh::bark`]): the exporters bake its textures.
+    pub bark: mesh::bark::BarkType,
 }
 
 impl Generated {
@@ -111,6 +113,7 @@ impl Generated {
             "leaves": self.foliage.count(),
             "leaf_hash": format!("{:016x}", self.foliage.leaf_hash()),
             "leaf_texture": self.foliage.texture().map(|t| [t.width, t.height]),
+            "bark_type": self.bark as u8,
         })
         .to_string()
     }
@@ -153,7 +156,7 @@ pub fn generate_with_progress(
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
     let t_leaves = clock.now_ms();
-    let hash = foliage.hash_into(mesh.content_hash());
+    let hash = mesh::bark::hash_into(params.bark_type, foliage.hash_into(mesh.content_hash()));
     let bounds = mesh.bounds();
     let t3 = clock.now_ms();
     let stats = Stats {
@@ -166,5 +169,16 @@ pub fn generate_with_progress(
         total_ms: t3 - t0,
     };
     let envelope = crown::preview_profile(&skeleton, params, ENVELOPE_SAMPLES);
-    Ok(Generated { mesh, skeleton, bounds, hash, stats, envelope, markers, foliage, holes: cut })
+    Ok(Generated {
+        mesh,
+        skeleton,
+        bounds,
+        hash,
+        stats,
+        envelope,
+        markers,
+        foliage,
+        holes: cut,
+        bark: params.bark_type,
+    })
 }

@@ -41,6 +41,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Black Tupelo",
         description: "Weber & Penn's Black Tupelo: Tapered Cylindrical, four levels, wavy twigs.",
         values: &[
+            ("bark_type", 0.0),
             ("shape", 4.0),
             ("levels", 4.0),
             ("scale", 23.0),
@@ -95,6 +96,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Weeping Willow",
         description: "Weber & Penn's Weeping Willow (paper values; Levels 3, see README): split trunk, hanging branches, pruned crown.",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 3.0),
             ("levels", 3.0),
             ("scale", 15.0),
@@ -174,6 +176,7 @@ pub const PRESETS: &[Preset] = &[
         label: "CA Black Oak",
         description: "Weber & Penn's California Black Oak: Hemispherical, forked trunk, twisting branches.",
         values: &[
+            ("bark_type", 0.0),
             ("shape", 2.0),
             ("levels", 3.0),
             ("scale", 10.0),
@@ -251,6 +254,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Fir (Conical)",
         description: "A conifer: Conical crown, a straight leader and many short whorled branches.",
         values: &[
+            ("bark_type", 1.0),
             ("shape", 0.0),
             ("levels", 3.0),
             ("scale", 18.0),
@@ -296,6 +300,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Oak (Spherical)",
         description: "A broad oak: Spherical crown, sturdy trunk, long crooked limbs.",
         values: &[
+            ("bark_type", 0.0),
             ("shape", 1.0),
             ("levels", 3.0),
             ("scale", 12.0),
@@ -346,6 +351,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Cypress (Flame)",
         description: "A columnar cypress: Flame crown, widest near its base, sharp tip.",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 5.0),
             ("levels", 3.0),
             ("scale", 16.0),
@@ -392,6 +398,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Umbrella Tree (Hemispherical)",
         description: "An umbrella tree: a tall bare trunk under a wide flat-topped dome.",
         values: &[
+            ("bark_type", 1.0),
             ("shape", 2.0),
             ("levels", 3.0),
             ("scale", 9.0),
@@ -442,6 +449,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Weeping Tree (Inverse Conical)",
         description: "A weeping tree: Inverse Conical crown and negative Attraction Up, as the guide suggests.",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 6.0),
             ("levels", 3.0),
             ("scale", 10.0),
@@ -488,6 +496,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Broadleaf",
         description: "Space colonization in an ellipsoid crown: a round broadleaf.",
         values: &[
+            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 3000.0),
             ("crown_base", 2.5),
@@ -527,6 +536,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Hedgerow",
         description: "Seven trunks in a row sharing one long crown: a hedgerow.",
         values: &[
+            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 6000.0),
             ("start_points", 7.0),
@@ -546,6 +556,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Beside a Wall",
         description: "A tree 1.5 m from a wall: the wall shades the markers near it and the crown leans away.",
         values: &[
+            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 3000.0),
             ("wall", 1.0),

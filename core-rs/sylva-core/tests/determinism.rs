@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "e7d19e9bb4466827"),
-    ("quaking_aspen", "ff80a5db3ea2da5b"),
-    ("black_tupelo", "8afa194cab056338"),
-    ("weeping_willow", "31a9726d507dbbfc"),
-    ("ca_black_oak", "a22c26af66b60024"),
-    ("fir", "5327545399bb634b"),
-    ("oak", "728fbafa9153ebf2"),
-    ("cypress", "fb3f643013029ed8"),
-    ("umbrella", "10d26da62b6b2cf7"),
-    ("weeping", "23bdca4475358959"),
-    ("grown_broadleaf", "b407898ad46f3ff8"),
-    ("grown_shrub", "201cf4b3a01a9792"),
-    ("grown_hedgerow", "5380c8c008b93283"),
-    ("grown_beside_wall", "f8bea739e2b5f4f7"),
-    ("grown_bushy", "1b358ec0246268f3"),
+    ("default", "db98a79477e6f6df"),
+    ("quaking_aspen", "3e742c8a80d5053b"),
+    ("black_tupelo", "d85c3547be6b9828"),
+    ("weeping_willow", "2ca96ec046ca724d"),
+    ("ca_black_oak", "9305e00a55663d2c"),
+    ("fir", "5b37940d1525b6be"),
+    ("oak", "9226a9c5ed15ec36"),
+    ("cypress", "a35618b17f4fee21"),
+    ("umbrella", "74bd475c8c396602"),
+    ("weeping", "3d080c53ab1c63ee"),
+    ("grown_broadleaf", "c40eaee7b08db268"),
+    ("grown_shrub", "3fcb5d3a08ab89b0"),
+    ("grown_hedgerow", "f107a14dae6cd499"),
+    ("grown_beside_wall", "adeb1e5b09533fb5"),
+    ("grown_bushy", "126a817e98545183"),
 ];
 
 #[test]

@@ -5,7 +5,7 @@
 //! report it and start a fresh instance.
 
 use std::sync::Mutex;
-use sylva_core::{params::TreeParams, presets, Clock, Generated};
+use sylva_core::{mesh::bark, params::TreeParams, presets, Clock, Generated};
 use wasm_bindgen::prelude::*;
 
 static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
@@ -64,16 +64,19 @@ pub fn presets_json() -> String {
     presets::presets_json()
 }
 
-/// The procedural bark colour map (RGBA8, `size`² texels, rows bottom to top).
+/// The procedural bark maps of bark type `kind` (the `bark_type` parameter's index), `size`²
+/// texels each, rows bottom to top, one after the other: colour (sRGB RGBA8), normal (RGB =
+/// tangent-space normal, A = height) and occlusion-roughness-metal (R, G, B).
 #[wasm_bindgen]
-pub fn bark_color(size: usize) -> Vec<u8> {
-    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).0.rgba
+pub fn bark_maps(kind: u32, size: usize) -> Vec<u8> {
+    let m = bark::bake(bark::BarkType::from_index(kind as usize), size.clamp(16, 1024));
+    [m.color.rgba, m.normal.rgba, m.orm.rgba].concat()
 }
 
-/// The procedural bark normal map (RGB = tangent-space normal, A = height; RGBA8, `size`²).
+/// How bark type `kind` is laid on a stem (`sylva_core::mesh::bark::BarkStyle`) as JSON.
 #[wasm_bindgen]
-pub fn bark_normal(size: usize) -> Vec<u8> {
-    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).1.rgba
+pub fn bark_style_json(kind: u32) -> String {
+    bark::style_json(bark::BarkType::from_index(kind as usize))
 }
 
 /// A generated tree. Each getter returns a fresh typed-array copy whose buffer the worker can

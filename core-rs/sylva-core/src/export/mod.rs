@@ -32,6 +32,7 @@ use quant::LANES;
 
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
+use crate::mesh::bark::BarkType;
 use crate::mesh::TreeMesh;
 use crate::Generated;
 use glam::{Mat3, Vec3};
@@ -391,6 +392,8 @@ pub struct TexturePngs {
     pub color: Vec<u8>,
     /// The tangent-space normal map as a PNG file (RGBA8, A = height).
     pub normal: Vec<u8>,
+    /// Bark only: glTF's packed occlusion (R) + roughness (G) + metalness (B) map as a PNG file.
+    pub orm: Option<Vec<u8>>,
 }
 
 type PngCache = Mutex<Option<(u64, Arc<TexturePngs>)>>;
@@ -414,17 +417,18 @@ fn cached(cache: &PngCache, key: u64, make: impl FnOnce() -> TexturePngs) -> Arc
     v
 }
 
-/// The baked bark textures ([`crate::mesh::bark::bake`], seed 1, as the viewer uses) as PNGs,
+/// The baked bark textures of `kind` ([`crate::mesh::bark::bake`], as the viewer uses) as PNGs,
 /// `size` texels square.
-pub fn bark_pngs(size: u32) -> Arc<TexturePngs> {
-    cached(&BARK_PNGS, u64::from(size), || {
-        let (c, n) = crate::mesh::bark::bake(size as usize, 1);
-        let s = c.size as u32;
+pub fn bark_pngs(kind: BarkType, size: u32) -> Arc<TexturePngs> {
+    cached(&BARK_PNGS, u64::from(size) | (kind as u64) << 32, || {
+        let m = crate::mesh::bark::bake(kind, size as usize);
+        let s = m.color.size as u32;
         TexturePngs {
             width: s,
             height: s,
-            color: png::encode_rgba(s, s, &c.rgba),
-            normal: png::encode_rgba(s, s, &n.rgba),
+            color: png::encode_rgba(s, s, &m.color.rgba),
+            normal: png::encode_rgba(s, s, &m.normal.rgba),
+            orm: Some(png::encode_rgba(s, s, &m.orm.rgba)),
         }
     })
 }
@@ -438,6 +442,7 @@ pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
         height: t.height,
         color: png::encode_rgba(t.width, t.height, &t.color),
         normal: png::encode_rgba(t.width, t.height, &t.normal),
+        orm: None,
     }))
 }
 
