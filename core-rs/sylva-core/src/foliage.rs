@@ -268,5 +268,7 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
             }
         }
     }
+    // Inner leaves see less sky: the crown-depth term multiplies into the tints.
+    crate::crown_shade::darken(&matrices, &mut colors);
     Ok(Foliage { mesh, matrices, colors, leaf: Some(leaf) })
 }

@@ -18,6 +18,7 @@
 
 pub mod clock;
 pub mod crown;
+pub mod crown_shade;
 pub mod error;
 pub mod export;
 pub mod foliage;
@@ -155,6 +156,7 @@ pub fn generate_with_progress(
     let holes = cut.len();
     let t2 = clock.now_ms();
     let foliage = foliage::build(&skeleton, params)?;
+    mesh.shade = mesh::shade::occlusion(&mesh, &cut, &foliage.matrices, params.hole_size);
     let t_leaves = clock.now_ms();
     let hash = mesh::bark::hash_into(params.bark_type, foliage.hash_into(mesh.content_hash()));
     let bounds = mesh.bounds();

@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "db98a79477e6f6df"),
-    ("quaking_aspen", "3e742c8a80d5053b"),
-    ("black_tupelo", "d85c3547be6b9828"),
-    ("weeping_willow", "2ca96ec046ca724d"),
-    ("ca_black_oak", "9305e00a55663d2c"),
-    ("fir", "5b37940d1525b6be"),
-    ("oak", "9226a9c5ed15ec36"),
-    ("cypress", "a35618b17f4fee21"),
-    ("umbrella", "74bd475c8c396602"),
-    ("weeping", "3d080c53ab1c63ee"),
-    ("grown_broadleaf", "c40eaee7b08db268"),
-    ("grown_shrub", "3fcb5d3a08ab89b0"),
-    ("grown_hedgerow", "f107a14dae6cd499"),
-    ("grown_beside_wall", "adeb1e5b09533fb5"),
-    ("grown_bushy", "126a817e98545183"),
+    ("default", "0f519a01ed6ae542"),
+    ("quaking_aspen", "1d5d018be98dc89a"),
+    ("black_tupelo", "ee848675035e756d"),
+    ("weeping_willow", "ec357ffae960c21c"),
+    ("ca_black_oak", "27f3bb70b71aa089"),
+    ("fir", "157328651c5181e6"),
+    ("oak", "84c9e46f0016bd2c"),
+    ("cypress", "a9c340745147facd"),
+    ("umbrella", "36b7d2a82798da6d"),
+    ("weeping", "8eb43928a82fc8e5"),
+    ("grown_broadleaf", "a725b3c584701a0f"),
+    ("grown_shrub", "c6d7085ea588fca0"),
+    ("grown_hedgerow", "1a489bbca0ef0469"),
+    ("grown_beside_wall", "fafc2a5e6ed10071"),
+    ("grown_bushy", "d9d5d0641d449b58"),
 ];
 
 #[test]

@@ -109,6 +109,11 @@ impl GeneratedTree {
     pub fn wind(&self) -> Vec<f32> {
         self.0.mesh.wind.clone()
     }
+    /// Bark occlusion, one byte per vertex (0 = no light, 255 = open sky; crown depth and tree
+    /// holes, see `sylva_core::mesh::shade`), or empty.
+    pub fn shade(&self) -> Vec<u8> {
+        self.0.mesh.shade.clone()
+    }
     /// Growth mode: the markers sampled in the crown (`x, y, z` per marker; empty otherwise).
     pub fn markers(&self) -> Vec<f32> {
         self.0.markers.iter().flat_map(|m| m.to_array()).collect()

@@ -148,7 +148,8 @@ pub fn to_glb(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
 /// at the foot of the tree is darker and a little greener (soil splash, moss), young bark
 /// higher up and on thin stems lighter and greyer. With wind data the "age" is the stem's
 /// stiffness (local radius relative to the trunk base); without it, the height above the
-/// ground relative to the tree's height. The tint is a function of two numbers in 0..1
+/// ground relative to the tree's height; the bark occlusion ([`TreeMesh::shade`]) multiplies it.
+/// The tint is a function of two numbers in 0..1
 /// (youth, nearness to the ground), tabulated at [`TINT_STEPS`] steps each: the export pays
 /// one table look-up per vertex.
 pub fn bark_colors(mesh: &TreeMesh) -> Vec<u8> {
@@ -222,6 +223,14 @@ impl BarkTint {
         } else {
             for (c, y) in out.chunks_exact_mut(4).zip(ys) {
                 c.copy_from_slice(&self.table[step(y * self.y_young) * TINT_STEPS + step(steps - y * self.y_ground)]);
+            }
+        }
+        // The bark occlusion (crown depth, cavities: `mesh::shade`) darkens the tint.
+        if mesh.shade.len() == mesh.vertex_count() {
+            for (c, &s) in out.chunks_exact_mut(4).zip(&mesh.shade[first..first + k]) {
+                for x in &mut c[..3] {
+                    *x = ((u16::from(*x) * u16::from(s) + 127) / 255) as u8;
+                }
             }
         }
     }
@@ -332,6 +341,7 @@ pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
         groups: Vec::new(),
         wind: Vec::new(),
         rings: Vec::new(),
+        shade: Vec::new(),
     };
     let mut colors = Vec::with_capacity(total * 4);
     let mut tan = Vec::with_capacity(if with_tangents { total * 4 } else { 0 });
@@ -513,11 +523,16 @@ mod tests {
             groups: Vec::new(),
             wind: Vec::new(),
             rings: Vec::new(),
+            shade: Vec::new(),
         };
         let c = bark_colors(&mesh);
         assert_eq!(c.len(), 12);
         let lum = |i: usize| c[4 * i] as u32 + c[4 * i + 1] as u32 + c[4 * i + 2] as u32;
         assert!(lum(0) < lum(1) && lum(1) < lum(2), "{c:?}");
         assert!(c.chunks_exact(4).all(|p| p[3] == 255));
+        // The bark occlusion darkens the tint: a vertex in the dark gets a quarter of it.
+        let shaded = bark_colors(&TreeMesh { shade: vec![255, 64, 255], ..mesh });
+        assert_eq!((shaded[0], shaded[8]), (c[0], c[8]));
+        assert!((i32::from(shaded[4]) - i32::from(c[4]) / 4).abs() <= 1, "{} vs {}", shaded[4], c[4]);
     }
 }
