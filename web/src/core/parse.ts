@@ -146,6 +146,7 @@ export function parseMeta(text: string): TreeMeta {
     leaf_texture: Array.isArray(o.leaf_texture)
       ? [Number(o.leaf_texture[0]), Number(o.leaf_texture[1])]
       : null,
+    bark_type: typeof o.bark_type === 'number' ? o.bark_type : 0,
   };
 }
 

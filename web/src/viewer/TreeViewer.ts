@@ -1,10 +1,8 @@
 /** The three.js scene: renderer, orbit camera, lights, ground and the tree mesh (render on demand). */
 import {
   Color,
-  DirectionalLight,
   DoubleSide,
   Fog,
-  HemisphereLight,
   LineBasicMaterial,
   LineSegments,
   Mesh,
@@ -21,6 +19,8 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { TreeBuffers } from '../core/types';
 import { BarkTextures } from './barkMaterial';
+import { applyBarkLook, createBarkLookUniforms } from './barkLook';
+import { SceneLights, applyLeafTranslucency } from './lighting';
 import { Foliage } from './Foliage';
 import { WindController } from './wind';
 import { hashPixels } from './windDebug';
@@ -49,7 +49,8 @@ export class TreeViewer {
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(40, 1, 0.05, 1000);
   private readonly controls: OrbitControls;
-  private readonly sun = new DirectionalLight('#fff6e5', 2.4);
+  private readonly lights: SceneLights;
+  private readonly barkLook = createBarkLookUniforms();
   private readonly ground: Mesh<CircleGeometry, MeshStandardMaterial>;
   private readonly bark = new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 });
   private readonly leaves = new MeshStandardMaterial({
@@ -67,7 +68,7 @@ export class TreeViewer {
   private readonly foliage = new Foliage(this.scene);
   /** Wind animation: shared uniforms, clock and settings (see wind.ts). */
   readonly wind = new WindController(() => this.requestRender());
-  private readonly barkTextures = new BarkTextures(this.bark);
+  private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
   private frameRequested = false;
   /** Called with every new tree (the growth overlay reads its markers). */
   private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
@@ -88,13 +89,8 @@ export class TreeViewer {
 
     this.scene.background = new Color(BACKGROUND_COLOR);
     this.scene.fog = this.fog;
-    this.scene.add(new HemisphereLight('#e8f1ff', '#6b5a45', 1.4));
-    this.sun.castShadow = true;
-    this.sun.shadow.mapSize.set(2048, 2048);
-    this.sun.shadow.radius = 4;
-    this.sun.shadow.bias = -0.0005;
-    this.sun.shadow.normalBias = 0.02;
-    this.scene.add(this.sun, this.sun.target);
+    // Sky light, sun and soft shadows: one definition for every scene (lighting.ts).
+    this.lights = new SceneLights(this.scene, this.renderer, { shadows: true });
 
     this.ground = new Mesh(
       new CircleGeometry(1, 96),
@@ -116,6 +112,8 @@ export class TreeViewer {
     this.wind.apply(this.bark, 'bark');
     this.wind.apply(this.leaves, 'bark');
     this.wind.apply(this.foliage.material, 'leaves');
+    applyBarkLook(this.bark, this.barkLook);
+    applyLeafTranslucency(this.foliage.material);
     this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
@@ -224,6 +222,7 @@ export class TreeViewer {
     this.envelope.material.dispose();
     this.wind.dispose();
     this.barkTextures.dispose();
+    this.lights.dispose();
     this.bark.dispose();
     this.leaves.dispose();
     this.ground.geometry.dispose();
@@ -236,19 +235,7 @@ export class TreeViewer {
   private fitStage(sphere: Sphere): void {
     const r = Math.max(sphere.radius, 0.01);
     this.ground.scale.setScalar(r * 12);
-    const target = new Vector3(sphere.center.x, 0, sphere.center.z);
-    this.sun.target.position.copy(target);
-    this.sun.position
-      .copy(sphere.center)
-      .add(new Vector3(0.5, 1, 0.35).normalize().multiplyScalar(r * 3));
-    const cam = this.sun.shadow.camera;
-    cam.left = -r * 1.3;
-    cam.right = r * 1.3;
-    cam.top = r * 1.3;
-    cam.bottom = -r * 1.3;
-    cam.near = r * 0.05;
-    cam.far = r * 6;
-    cam.updateProjectionMatrix();
+    this.lights.fit(sphere);
   }
 
   /** Places the camera so the bounding sphere fills the view. */

@@ -1,6 +1,7 @@
 /** Builds a three.js BufferGeometry straight from the worker's transferred typed arrays. */
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3 } from 'three';
 import type { TreeBuffers } from '../core/types';
+import { attachBarkAttributes } from './barkLook';
 import { attachWindAttributes } from './wind';
 
 /** Material slot of each mesh group in the material array [bark, leaves]. */
@@ -15,6 +16,8 @@ export function buildTreeGeometry(tree: TreeBuffers): BufferGeometry {
   geometry.setIndex(new BufferAttribute(tree.indices, 1));
   // The core's wind data as `windPivot` + `windParams` (wrapped, not copied), when it has any.
   attachWindAttributes(geometry, tree.wind);
+  // The bark look's stem radius (a view of the wind data) and occlusion.
+  attachBarkAttributes(geometry, tree.shade);
   for (const group of tree.meta.groups) {
     geometry.addGroup(group.start, group.count, MATERIAL_INDEX[group.material]);
   }

@@ -20,8 +20,32 @@ describe('wind data from the core', () => {
 
   it('bark maps need both getters', () => {
     const wasm = loadWasm();
-    const partial = { ...wasm, bark_normal: undefined } as WasmApi;
+    const partial = { ...wasm, bark_style_json: undefined } as WasmApi;
     expect(barkOf(partial)).toBeUndefined();
+  });
+
+  it('bark maps go out again when the bark type changes, with the shade each time', () => {
+    const sent: { message: WorkerResponse; transfer: Transferable[] }[] = [];
+    const handle = createHandler(loadWasm(), (message, transfer) =>
+      sent.push({ message, transfer }),
+    );
+    for (const [id, bark_type] of [
+      [1, 0],
+      [2, 0],
+      [3, 3],
+      [4, 3],
+    ] as const) {
+      handle({ type: 'generate', id, params: { bark_type, leaves: 2 } });
+    }
+    const results = sent.filter((s) => s.message.type === 'result');
+    const r = results.map((x) => x.message as ResultResponse);
+    expect(r.map((x) => x.bark?.kind)).toEqual([0, undefined, 3, undefined]);
+    expect(r[2]?.bark?.color).not.toEqual(r[0]?.bark?.color);
+    expect(results[2]?.transfer).toContain(r[2]?.bark?.orm.buffer);
+    for (const [i, x] of r.entries()) {
+      expect(x.shade).toHaveLength(x.positions.length / 3);
+      expect(results[i]?.transfer).toContain(x.shade?.buffer);
+    }
   });
 
   it('the first result carries the bark maps and the wind buffer, transferred', () => {

@@ -92,18 +92,29 @@ export function foliageOf(tree: WasmTree, meta: TreeMeta, sentHash: string): Fol
 /** Edge length of the baked bark textures (texels). */
 export const BARK_TEXTURE_SIZE = 256;
 
-/** The core's bark maps, or undefined when this wasm build has none. */
-export function barkOf(wasm: WasmApi): BarkTextureBuffers | undefined {
-  if (typeof wasm.bark_color !== 'function' || typeof wasm.bark_normal !== 'function') {
+/** The core's maps of bark type `kind`, or undefined when this wasm build has none. */
+export function barkOf(wasm: WasmApi, kind = 0): BarkTextureBuffers | undefined {
+  if (typeof wasm.bark_maps !== 'function' || typeof wasm.bark_style_json !== 'function') {
     return undefined;
   }
-  const color = wasm.bark_color(BARK_TEXTURE_SIZE);
-  const normal = wasm.bark_normal(BARK_TEXTURE_SIZE);
-  const size = Math.round(Math.sqrt(color.length / 4));
-  if (size < 1 || size * size * 4 !== color.length || normal.length !== color.length) {
-    return undefined;
-  }
-  return { size, color, normal };
+  const maps = wasm.bark_maps(kind, BARK_TEXTURE_SIZE);
+  const size = Math.round(Math.sqrt(maps.length / 12));
+  if (size < 1 || size * size * 12 !== maps.length) return undefined;
+  const n = size * size * 4;
+  // Three copies, so that each map's buffer can be transferred on its own.
+  const [color, normal, orm] = [0, 1, 2].map((k) => maps.slice(k * n, (k + 1) * n)) as [
+    Uint8Array,
+    Uint8Array,
+    Uint8Array,
+  ];
+  const style = JSON.parse(wasm.bark_style_json(kind)) as BarkTextureBuffers['style'];
+  return { size, kind, color, normal, orm, style };
+}
+
+/** The bark occlusion (one byte per vertex), empty when the core has none or it does not fit. */
+export function shadeOf(tree: WasmTree, vertices: number): Uint8Array {
+  const shade = tree.shade?.();
+  return shade instanceof Uint8Array && shade.length === vertices ? shade : new Uint8Array(0);
 }
 
 /**
@@ -162,8 +173,8 @@ export function createHandler(
   let deadMessage: string | null = null;
   // The leaf texture is sent once per leaf shape: the hash of the last one sent.
   let sentLeafHash = '';
-  // The bark textures go out once, with the first result (they never change).
-  let barkSent = false;
+  // The bark textures go out with the first result and again when the bark type changes.
+  let barkSent: number | null = null;
 
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
@@ -245,8 +256,10 @@ export function createHandler(
       const foliage = foliageOf(tree, meta, sentLeafHash);
       sentLeafHash = foliage.leafHash;
       const wind = windOf(tree, positions.length / 3);
-      const bark = barkSent ? undefined : barkOf(wasm);
-      barkSent = true;
+      const kind = meta.bark_type ?? 0;
+      const bark = barkSent === kind ? undefined : barkOf(wasm, kind);
+      barkSent = kind;
+      const shade = shadeOf(tree, positions.length / 3);
       post(
         {
           type: 'result',
@@ -260,12 +273,14 @@ export function createHandler(
           meta,
           foliage,
           wind,
+          shade,
           ...(bark ? { bark } : {}),
         },
         [
           ...foliageTransfer(foliage),
           wind.buffer,
-          ...(bark ? [bark.color.buffer, bark.normal.buffer] : []),
+          ...(bark ? [bark.color.buffer, bark.normal.buffer, bark.orm.buffer] : []),
+          shade.buffer,
           markers.buffer,
           positions.buffer,
           normals.buffer,

@@ -1,0 +1,15 @@
+// Bark look (barkLook.ts): girth-scaled tiling blended between two power-of-two repeats (both
+// integers, so the seam at u = 1 still meets u = 0), young bark, occlusion.
+uniform vec3 uBarkYoung;
+varying vec3 vBark;
+
+vec4 barkSample(sampler2D t, vec2 uv) {
+  float level = floor(vBark.x);
+  float w = vBark.x - level;
+  float n = exp2(level);
+  vec2 dx = dFdx(uv);
+  vec2 dy = dFdy(uv);
+  vec4 a = textureGrad(t, uv * n, dx * n, dy * n);
+  vec4 b = textureGrad(t, uv * (2.0 * n), dx * (2.0 * n), dy * (2.0 * n));
+  return mix(a, b, w);
+}
