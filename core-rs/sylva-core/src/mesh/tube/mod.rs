@@ -324,8 +324,11 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
                 loops,
             };
             let ok = if j.fork {
-                let rows = fork::rows(j, &stems[j.parent as usize], q);
-                start.is_some() && fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris)
+                let rows = fork::row_choices(j, &stems[j.parent as usize], q);
+                start.is_some()
+                    && rows
+                        .into_iter()
+                        .any(|rows| fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris))
             } else {
                 weld::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch)
             };
