@@ -3,11 +3,11 @@
 // the app itself measures (stats overlay): request -> geometry built on the main thread
 // (generation in the worker + transfer + BufferGeometry), and the GPU upload + draw after it.
 // Exports `benchBrowser()`; run directly it prints the result.
-import { spawn } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
+import { serve, stop } from './preview-server.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const CHROMIUM = chromiumPath();
@@ -16,28 +16,6 @@ const median = (xs) => {
   const m = s.length >> 1;
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 };
-
-async function serve(port) {
-  const server = spawn(
-    'npm',
-    ['run', 'preview', '-w', 'web', '--', '--port', String(port), '--strictPort'],
-    {
-      cwd: root,
-      stdio: ['ignore', 'pipe', 'pipe'],
-    },
-  );
-  const url = `http://127.0.0.1:${port}/`;
-  for (let i = 0; i < 100; i++) {
-    try {
-      if ((await fetch(url)).ok) return { server, url };
-    } catch {
-      // not up yet
-    }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  server.kill();
-  throw new Error('vite preview did not start');
-}
 
 /** Median round trip of `runs` regenerations of the default tree; null when no browser. */
 export async function benchBrowser(runs = 25) {
@@ -98,7 +76,7 @@ export async function benchBrowser(runs = 25) {
     return { runs, vertices, round_trip_median_ms: median(trips), draw_median_ms: median(draws) };
   } finally {
     await browser.close();
-    server.kill();
+    stop(server);
   }
 }
 

@@ -12,6 +12,7 @@
  *   shader blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere
  *   light + sun, the viewer's lights), so the impostor follows the scene's lighting.
  */
+import type { Vector3 } from 'three';
 import {
   Color,
   DoubleSide,
@@ -28,7 +29,6 @@ import {
   UniformsLib,
   UniformsUtils,
   UnsignedByteType,
-  Vector3,
   Vector4,
   WebGLRenderTarget,
   type BufferGeometry,

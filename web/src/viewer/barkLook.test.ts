@@ -1,11 +1,6 @@
 /** The bark look: shader patch, attributes from the wind buffer and the core's shade. */
-import {
-  BufferGeometry,
-  BufferAttribute,
-  InterleavedBufferAttribute,
-  MeshStandardMaterial,
-  ShaderLib,
-} from 'three';
+import type { InterleavedBufferAttribute } from 'three';
+import { BufferGeometry, BufferAttribute, MeshStandardMaterial, ShaderLib } from 'three';
 import { describe, expect, it } from 'vitest';
 import {
   FALLBACK_RADIUS,

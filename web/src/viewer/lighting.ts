@@ -30,13 +30,13 @@ import skyVert from './shaders/sky.vert.glsl?raw';
 export const SUN_DIRECTION = new Vector3(0.5, 1, 0.35).normalize();
 /** Sun colour and intensity. */
 export const SUN_COLOR = '#fff3dc';
-export const SUN_INTENSITY = 2.2;
+export const SUN_INTENSITY = 2.6;
 /** Sky colours (linear): zenith, horizon and ground bounce. */
-export const SKY_ZENITH = new Color(0.33, 0.5, 0.8);
-export const SKY_HORIZON = new Color(0.75, 0.8, 0.85);
-export const SKY_GROUND = new Color(0.2, 0.17, 0.13);
+export const SKY_ZENITH = new Color(0.42, 0.53, 0.7);
+export const SKY_HORIZON = new Color(0.8, 0.8, 0.78);
+export const SKY_GROUND = new Color(0.22, 0.18, 0.13);
 /** Strength of the sky's image-based light. */
-export const ENVIRONMENT_INTENSITY = 0.9;
+export const ENVIRONMENT_INTENSITY = 0.75;
 /** How much sunlight a leaf lets through (0..1). */
 export const LEAF_TRANSLUCENCY = 0.45;
 /** Shadow map edge (texels) and blur radius: soft, affordable on software WebGL. */

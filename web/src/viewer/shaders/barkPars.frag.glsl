@@ -5,7 +5,8 @@ varying vec3 vBark;
 
 vec4 barkSample(sampler2D t, vec2 uv) {
   float level = floor(vBark.x);
-  float w = vBark.x - level;
+  // A short cross-fade: most of a stem shows one scale, not two patterns at once.
+  float w = smoothstep(0.3, 0.7, vBark.x - level);
   float n = exp2(level);
   vec2 dx = dFdx(uv);
   vec2 dy = dFdy(uv);
