@@ -4,6 +4,7 @@
 
 pub mod bark;
 pub mod fork;
+pub mod fork_rows;
 pub mod holes;
 pub mod shade;
 pub mod topology;
