@@ -17,7 +17,7 @@
 //! * **Side patches** (the ramiform's twig-like patches). Row `S` of the original is claimed
 //!   (not emitted). `S`'s outer half is joined to `Jo`'s outer half, and `S`'s inner half to the
 //!   clone's `Jc` columns `a..a+n/2` (the clone's outer half, facing the same way), each by
-//!   [`rows`] rows of quads: per column a cubic Bezier from `S` (leaving along the original's
+//!   [`super::fork_rows::rows`] rows of quads: per column a cubic Bezier from `S` (leaving along the original's
 //!   axis, so the trunk below flows on without a kink; toward the front and back of the
 //!   clone's patch leaning with the clone) to the ring (arriving along its branch's axis),
 //!   handles 0.4 of the chord, loops at even parameters, normals across the loops.
@@ -512,10 +512,11 @@ fn quad_tris(out: &MeshBuilder, tris: &mut Vec<u32>, [p, q, r, s]: [u32; 4]) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn fork(t_lo: f32, t_hi: f32) -> Junction {
+    /// A fork junction on stem 0 from `t_lo` to `t_hi` (shared with `fork_rows`' tests).
+    pub(crate) fn fork(t_lo: f32, t_hi: f32) -> Junction {
         Junction { parent: 0, t_start: 0.2, t_lo, t_hi, foot: 0.1, phi: 0.0, beta: PI, fork: true }
     }
 

@@ -34,12 +34,8 @@ pub(crate) const MAX_ROWS: usize = 10;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::PI;
+    use crate::mesh::fork::tests::fork;
     use glam::Vec3;
-
-    fn fork(t_lo: f32, t_hi: f32) -> Junction {
-        Junction { parent: 0, t_start: 0.2, t_lo, t_hi, foot: 0.1, phi: 0.0, beta: PI, fork: true }
-    }
 
     #[test]
     fn short_forks_get_enough_rows_to_bend_smoothly() {

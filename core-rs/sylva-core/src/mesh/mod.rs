@@ -175,7 +175,7 @@ impl TreeMesh {
             h.words(&self.wind, f32::to_bits);
         }
         if !self.shade.is_empty() {
-            h.words(&self.shade, |b| u32::from(b));
+            h.words(&self.shade, u32::from);
         }
         for g in &self.groups {
             h.words(&[g.material as u32, g.start, g.count], |w| w);
