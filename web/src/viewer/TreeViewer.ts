@@ -6,6 +6,7 @@ import {
   LineBasicMaterial,
   LineSegments,
   Mesh,
+  MeshLambertMaterial,
   MeshStandardMaterial,
   CircleGeometry,
   PCFShadowMap,
@@ -51,7 +52,7 @@ export class TreeViewer {
   private readonly controls: OrbitControls;
   private readonly lights: SceneLights;
   private readonly barkLook = createBarkLookUniforms();
-  private readonly ground: Mesh<CircleGeometry, MeshStandardMaterial>;
+  private readonly ground: Mesh<CircleGeometry, MeshLambertMaterial>;
   private readonly bark = new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 });
   private readonly leaves = new MeshStandardMaterial({
     color: LEAF_COLOR,
@@ -94,7 +95,8 @@ export class TreeViewer {
 
     this.ground = new Mesh(
       new CircleGeometry(1, 96),
-      new MeshStandardMaterial({ color: GROUND_COLOR, roughness: 1 }),
+      // Lambert: the ground fills most of the view; the sky's image-based light is for the tree.
+      new MeshLambertMaterial({ color: GROUND_COLOR }),
     );
     this.ground.rotation.x = -Math.PI / 2;
     this.ground.receiveShadow = true;

@@ -21,8 +21,8 @@ describe('bark material', () => {
     const normal = material.normalMap as DataTexture;
     expect(map.image.data).toBe(bark.color); // wrapped, not copied
     expect(normal.image.data).toBe(bark.normal);
-    // Occlusion-roughness-metal: one map for both slots; the type's style reaches the bark look.
-    expect(material.roughnessMap).toBe(material.aoMap);
+    // Occlusion-roughness-metal: the roughness slot (G); the type's style reaches the bark look.
+    expect(material.aoMap).toBeNull();
     expect((material.roughnessMap as DataTexture).image.data).toBe(bark.orm);
     expect(textures.kind).toBe(1);
     expect(look.uBarkTile.value).toBeCloseTo(bark.style.tile_at_1m);

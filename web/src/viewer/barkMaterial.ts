@@ -82,8 +82,9 @@ export class BarkTextures {
     this.orm = bakedTexture(bark.orm, bark.size, false);
     this.material.map = this.color;
     this.material.normalMap = this.normal;
+    // Roughness from the ORM map's G; its occlusion (R) stays for the exports: one fetch less
+    // per bark fragment on software WebGL.
     this.material.roughnessMap = this.orm;
-    this.material.aoMap = this.orm;
     this.material.roughness = 1;
     const relief = BARK_NORMAL_SCALE * bark.style.relief;
     this.material.normalScale = new Vector2(relief, relief);
@@ -102,7 +103,6 @@ export class BarkTextures {
       this.material.map = null;
       this.material.normalMap = null;
       this.material.roughnessMap = null;
-      this.material.aoMap = null;
       this.material.roughness = 0.92;
       this.material.color.set(BARK_FLAT_COLOR);
       this.material.needsUpdate = true;

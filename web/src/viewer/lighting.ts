@@ -37,6 +37,8 @@ export const SKY_HORIZON = new Color(0.8, 0.8, 0.78);
 export const SKY_GROUND = new Color(0.22, 0.18, 0.13);
 /** Strength of the sky's image-based light. */
 export const ENVIRONMENT_INTENSITY = 0.75;
+/** Face size (texels) of the prefiltered sky. */
+export const ENVIRONMENT_SIZE = 64;
 /** How much sunlight a leaf lets through (0..1). */
 export const LEAF_TRANSLUCENCY = 0.45;
 /** Shadow map edge (texels) and blur radius: soft, affordable on software WebGL. */
@@ -67,7 +69,8 @@ export function skyEnvironment(renderer: WebGLRenderer): Texture {
   const material = skyMaterial();
   scene.add(new Mesh(geometry, material));
   const pmrem = new PMREMGenerator(renderer);
-  const target = pmrem.fromScene(scene, 0, 0.1, 100);
+  // A smooth gradient needs no detail: 64² faces bake quickly on software WebGL.
+  const target = pmrem.fromScene(scene, 0, 0.1, 100, { size: ENVIRONMENT_SIZE });
   pmrem.dispose();
   geometry.dispose();
   material.dispose();
