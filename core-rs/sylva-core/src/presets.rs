@@ -33,6 +33,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Quaking Aspen",
         description: "Weber & Penn's Quaking Aspen: Tend Flame crown, slender and upright.",
         values: &[
+            ("bark_type", 2.0),
             ("shape", 7.0),
         ],
     },
@@ -41,7 +42,6 @@ pub const PRESETS: &[Preset] = &[
         label: "Black Tupelo",
         description: "Weber & Penn's Black Tupelo: Tapered Cylindrical, four levels, wavy twigs.",
         values: &[
-            ("bark_type", 0.0),
             ("shape", 4.0),
             ("levels", 4.0),
             ("scale", 23.0),
@@ -176,7 +176,6 @@ pub const PRESETS: &[Preset] = &[
         label: "CA Black Oak",
         description: "Weber & Penn's California Black Oak: Hemispherical, forked trunk, twisting branches.",
         values: &[
-            ("bark_type", 0.0),
             ("shape", 2.0),
             ("levels", 3.0),
             ("scale", 10.0),
@@ -300,7 +299,6 @@ pub const PRESETS: &[Preset] = &[
         label: "Oak (Spherical)",
         description: "A broad oak: Spherical crown, sturdy trunk, long crooked limbs.",
         values: &[
-            ("bark_type", 0.0),
             ("shape", 1.0),
             ("levels", 3.0),
             ("scale", 12.0),
@@ -496,7 +494,6 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Broadleaf",
         description: "Space colonization in an ellipsoid crown: a round broadleaf.",
         values: &[
-            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 3000.0),
             ("crown_base", 2.5),
@@ -515,6 +512,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Shrub",
         description: "Space colonization from several stems low to the ground: a shrub.",
         values: &[
+            ("bark_type", 2.0),
             ("growth_mode", 1.0),
             ("markers", 2500.0),
             ("crown_base", 0.1),
@@ -536,7 +534,6 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Hedgerow",
         description: "Seven trunks in a row sharing one long crown: a hedgerow.",
         values: &[
-            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 6000.0),
             ("start_points", 7.0),
@@ -556,7 +553,6 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Beside a Wall",
         description: "A tree 1.5 m from a wall: the wall shades the markers near it and the crown leans away.",
         values: &[
-            ("bark_type", 0.0),
             ("growth_mode", 1.0),
             ("markers", 3000.0),
             ("wall", 1.0),
@@ -578,6 +574,7 @@ pub const PRESETS: &[Preset] = &[
         label: "Grown: Bushy (reference)",
         description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5, 3,000 extra markers per 1,000 iterations.",
         values: &[
+            ("bark_type", 2.0),
             ("growth_mode", 1.0),
             ("markers", 400.0),
             ("internode", 0.5),

@@ -6,7 +6,7 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "0f519a01ed6ae542"),
+    ("default", "0f519801ed6ae1dc"),
     ("quaking_aspen", "1d5d018be98dc89a"),
     ("black_tupelo", "ee848675035e756d"),
     ("weeping_willow", "534b3559fddb59ee"),
