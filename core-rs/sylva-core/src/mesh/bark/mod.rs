@@ -79,7 +79,7 @@ impl BarkType {
         match self {
             // Oak: ridges ~4 cm apart on a 1 m girth (6 per tile); young shoots olive grey.
             BarkType::Furrowed => {
-                BarkStyle { tile_at_1m: 0.24, young_radius: 0.03, young_rgb: [0.25, 0.22, 0.15], relief: 1.6 }
+                BarkStyle { tile_at_1m: 0.24, young_radius: 0.03, young_rgb: [0.24, 0.17, 0.09], relief: 1.6 }
             }
             // Pine / fir: plates ~8 cm wide on a 1 m girth; young twigs orange brown.
             BarkType::Plated => {

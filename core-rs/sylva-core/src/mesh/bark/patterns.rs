@@ -63,8 +63,8 @@ fn furrowed(u: f32, v: f32, seed: u32) -> Sample {
     let fine = fbm(u, v, 32, 6, seed + 13);
     let height = (0.72 * ridge * (1.0 - 0.75 * crack) + 0.28 * fine * ridge).clamp(0.0, 1.0);
     let tone = fbm(u, v, 4, 6, seed + 15);
-    let top = scale3(mix3([0.16, 0.15, 0.13], [0.3, 0.28, 0.24], tone), 0.8 + 0.4 * fine);
-    let rgb = mix3([0.035, 0.028, 0.022], top, smoothstep(0.05, 0.6, height));
+    let top = scale3(mix3([0.17, 0.12, 0.08], [0.3, 0.21, 0.13], tone), 0.8 + 0.4 * fine);
+    let rgb = mix3([0.035, 0.025, 0.018], top, smoothstep(0.05, 0.6, height));
     Sample { height, rgb, rough: 0.97 - 0.12 * height }
 }
 
