@@ -11,5 +11,8 @@ export default [
     languageOptions: { ecmaVersion: 2023, sourceType: 'module', globals: { ...globals.node } },
   },
   // Its callbacks run in the page (Playwright's evaluate / waitForFunction).
-  { files: ['scripts/bench-browser.mjs'], languageOptions: { globals: { ...globals.browser } } },
+  {
+    files: ['scripts/bench-browser.mjs', 'scripts/gallery/*.mjs'],
+    languageOptions: { globals: { ...globals.browser } },
+  },
 ];

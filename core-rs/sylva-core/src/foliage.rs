@@ -297,6 +297,8 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
             }
         }
     }
+    // Inner leaves see less sky: the crown-depth term multiplies into the tints.
+    crate::crown_shade::darken(&matrices, &mut colors);
     Ok(Foliage { matrices, colors, ..bare })
 }
 

@@ -22,6 +22,7 @@
 
 pub mod clock;
 pub mod crown;
+pub mod crown_shade;
 pub mod error;
 pub mod export;
 pub mod foliage;
@@ -90,6 +91,8 @@ pub struct Generated {
     pub foliage: foliage::Foliage,
     /// The tree holes cut into the bark (where, how big, found by which method).
     pub holes: Vec<mesh::holes::Hole>,
+    /// The bark pattern ([`mesh::bark`]): the exporters bake its textures.
+    pub bark: mesh::bark::BarkType,
 }
 
 impl Generated {
@@ -102,6 +105,7 @@ impl Generated {
     pub fn meta_json(&self) -> String {
         let mut meta =
             tree_meta(&self.mesh, &self.foliage, &self.bounds, &self.envelope, self.stats.stems, self.stats.holes);
+        meta["bark_type"] = serde_json::json!(self.bark as u8);
         meta["hash"] = serde_json::json!(self.hash_hex());
         let stage_ms: serde_json::Map<String, serde_json::Value> =
             self.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();

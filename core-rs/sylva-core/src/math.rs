@@ -19,6 +19,11 @@ pub fn cos(x: f32) -> f32 {
 pub fn pow(x: f32, y: f32) -> f32 {
     libm::powf(x, y)
 }
+/// `e` to the power `x`.
+#[inline]
+pub fn exp(x: f32) -> f32 {
+    libm::expf(x)
+}
 /// Arc cosine with the argument clamped to [-1, 1].
 #[inline]
 pub fn acos(x: f32) -> f32 {

@@ -38,6 +38,7 @@ pub const PRESETS: &[Preset] = &[
         description: "Weber & Penn's Quaking Aspen: Tend Flame crown, slender and upright.",
         leaf: "aspen",
         values: &[
+            ("bark_type", 2.0),
             ("shape", 7.0),
         ],
     },
@@ -102,6 +103,7 @@ pub const PRESETS: &[Preset] = &[
         description: "Weber & Penn's Weeping Willow (paper values; Levels 3, see README): split trunk, hanging branches, pruned crown.",
         leaf: "willow",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 3.0),
             ("levels", 3.0),
             ("scale", 15.0),
@@ -260,6 +262,7 @@ pub const PRESETS: &[Preset] = &[
         description: "A conifer: Conical crown, a straight leader and many short whorled branches.",
         leaf: "fir",
         values: &[
+            ("bark_type", 1.0),
             ("shape", 0.0),
             ("levels", 3.0),
             ("scale", 18.0),
@@ -361,6 +364,7 @@ pub const PRESETS: &[Preset] = &[
         description: "A columnar cypress: Flame crown, widest near its base, sharp tip.",
         leaf: "fir",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 5.0),
             ("levels", 3.0),
             ("scale", 16.0),
@@ -412,6 +416,7 @@ pub const PRESETS: &[Preset] = &[
         description: "An umbrella tree: a tall bare trunk under a wide flat-topped dome.",
         leaf: "maple",
         values: &[
+            ("bark_type", 1.0),
             ("shape", 2.0),
             ("levels", 3.0),
             ("scale", 9.0),
@@ -463,6 +468,7 @@ pub const PRESETS: &[Preset] = &[
         description: "A weeping tree: Inverse Conical crown and negative Attraction Up, as the guide suggests.",
         leaf: "birch",
         values: &[
+            ("bark_type", 3.0),
             ("shape", 6.0),
             ("levels", 3.0),
             ("scale", 10.0),
@@ -529,6 +535,7 @@ pub const PRESETS: &[Preset] = &[
         description: "Space colonization from several stems low to the ground: a shrub.",
         leaf: "birch",
         values: &[
+            ("bark_type", 2.0),
             ("growth_mode", 1.0),
             ("markers", 2500.0),
             ("crown_base", 0.1),
@@ -593,6 +600,7 @@ pub const PRESETS: &[Preset] = &[
         description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5, 3,000 extra markers per 1,000 iterations.",
         leaf: "oak",
         values: &[
+            ("bark_type", 2.0),
             ("growth_mode", 1.0),
             ("markers", 400.0),
             ("internode", 0.5),

@@ -63,12 +63,14 @@ pub struct Changes {
     pub leaf_mesh: bool,
     /// The leaf shape (texture) differs.
     pub leaf: bool,
+    /// The bark's occlusion ([`TreeMesh::shade`]) was computed again (new bark or new leaves).
+    pub shade: bool,
 }
 
 impl Changes {
     /// Whether anything at all changed.
     pub fn any(&self) -> bool {
-        self.skeleton || self.bark || self.placements || self.leaf_mesh || self.leaf
+        self.skeleton || self.bark || self.placements || self.leaf_mesh || self.leaf || self.shade
     }
 }
 
@@ -150,9 +152,11 @@ impl Current {
         meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });
         meta["total_ms"] = serde_json::json!(t.skeleton + t.mesh + t.foliage);
         meta["preview"] = serde_json::json!(b.preview);
+        meta["bark_type"] = serde_json::json!(self.params.bark_type as u8);
         meta["from"] = serde_json::json!(self.from);
         meta["changes"] = serde_json::json!({
             "skeleton": c.skeleton, "bark": c.bark, "placements": c.placements, "leaf_mesh": c.leaf_mesh, "leaf": c.leaf,
+            "shade": c.shade,
         });
         meta.to_string()
     }
@@ -165,6 +169,8 @@ struct Fresh {
     bark: Option<Bark>,
     placements: Option<Foliage>,
     leaf: Option<LeafMesh>,
+    /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
+    shade: Option<Vec<u8>>,
     changes: Changes,
     times: StageTimes,
     from: Stage,
@@ -175,7 +181,7 @@ type LeafMesh = (TreeMesh, Option<std::sync::Arc<crate::leaf::Leaf>>);
 impl Fresh {
     /// The new current tree: fresh stages, the rest moved (not copied) out of `prev`.
     fn assemble(self, prev: Option<Current>) -> Current {
-        let (skeleton, bark, foliage) = match prev {
+        let (skeleton, mut bark, foliage) = match prev {
             Some(c) => (self.skeleton.unwrap_or(c.skeleton), self.bark.unwrap_or(c.bark), {
                 let mut f = self.placements.unwrap_or(c.foliage);
                 if let Some((mesh, leaf)) = self.leaf {
@@ -193,6 +199,10 @@ impl Fresh {
                 )
             }
         };
+        if let Some(shade) = self.shade {
+            bark.mesh.shade = shade;
+            bark.hash = None;
+        }
         Current {
             params: self.params,
             skeleton,
@@ -306,12 +316,24 @@ impl Session {
         }
 
         let placements = (from <= Stage::Foliage).then(|| foliage::place(&skel.skeleton, p)).transpose()?;
-        let count = placements.as_ref().or(prev.map(|c| &c.foliage)).map_or(0, Foliage::count);
-        let leaf = (from <= Stage::Leaf).then(|| foliage::leaf_mesh(count, p)).transpose()?;
+        let placed = placements.as_ref().or(prev.map(|c| &c.foliage)).expect("a first update places the leaves");
+        let leaf = (from <= Stage::Leaf).then(|| foliage::leaf_mesh(placed.count(), p)).transpose()?;
+        // The bark's occlusion reads the bark, its holes and the leaves: again when any changed
+        // (a preview bark goes without it).
+        let shade = if bark.is_none() && placements.is_none() {
+            None
+        } else {
+            let b = bark.as_ref().or(prev.map(|c| &c.bark)).expect("a first update sweeps the bark");
+            Some(if b.preview {
+                Vec::new()
+            } else {
+                mesh::shade::occlusion(&b.mesh, &b.holes, &placed.matrices, p.hole_size)
+            })
+        };
         times.foliage = clock.now_ms() - t2;
 
         let changes = match prev {
-            None => Changes { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true },
+            None => Changes { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true, shade: true },
             Some(c) => Changes {
                 skeleton: skeleton.is_some(),
                 bark: bark.is_some(),
@@ -320,9 +342,10 @@ impl Session {
                     .is_some_and(|f| f.matrices != c.foliage.matrices || f.colors != c.foliage.colors),
                 leaf_mesh: leaf.as_ref().is_some_and(|(m, _)| *m != c.foliage.mesh),
                 leaf: leaf.as_ref().is_some_and(|(_, l)| l.as_ref().map_or(0, |l| l.hash) != c.foliage.leaf_hash()),
+                shade: shade.as_ref().is_some_and(|s| *s != c.bark.mesh.shade),
             },
         };
-        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, changes, times, from })
+        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, shade, changes, times, from })
     }
 
     /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),
@@ -334,7 +357,7 @@ impl Session {
             return None;
         }
         let bark = *c.bark.hash.get_or_insert_with(|| c.bark.mesh.content_hash());
-        Some(c.foliage.hash_into(bark))
+        Some(mesh::bark::hash_into(c.params.bark_type, c.foliage.hash_into(bark)))
     }
 
     /// Moves the current full tree out as a [`Generated`] without copying its buffers.
@@ -363,6 +386,7 @@ impl Session {
             markers: c.skeleton.markers,
             foliage: c.foliage,
             holes: c.bark.holes,
+            bark: c.params.bark_type,
         })
     }
 }

@@ -6,21 +6,21 @@
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("default", "41088e503ac19c21"),
-    ("quaking_aspen", "91b0baa6c862f71d"),
-    ("black_tupelo", "f425d6d44ba6afca"),
-    ("weeping_willow", "cb43ff9204212537"),
-    ("ca_black_oak", "21a59d820a353756"),
-    ("fir", "fd19447ede149177"),
-    ("oak", "c26a650d6393dd09"),
-    ("cypress", "00c3a2dc3c8d2663"),
-    ("umbrella", "808b3529e27a0ea8"),
-    ("weeping", "59ed23a398c41c55"),
-    ("grown_broadleaf", "c52199d4c9015def"),
-    ("grown_shrub", "cb51bb7fe018aa5f"),
-    ("grown_hedgerow", "7f0eedd7a6e0491c"),
-    ("grown_beside_wall", "14f2dd9b4794a6f4"),
-    ("grown_bushy", "0f48cd8e2545c527"),
+    ("default", "30fa5813df2c837f"),
+    ("quaking_aspen", "14b7394c730bf1b2"),
+    ("black_tupelo", "f152a72d17b516b1"),
+    ("weeping_willow", "f8611f674b7856e0"),
+    ("ca_black_oak", "d202f9e41dc65371"),
+    ("fir", "414fc8ea0ccfea14"),
+    ("oak", "5cadaab2158209f5"),
+    ("cypress", "8908eb916eb1c43a"),
+    ("umbrella", "b490dcf7ac471bdc"),
+    ("weeping", "9891ddcdce600f43"),
+    ("grown_broadleaf", "654350748d87a769"),
+    ("grown_shrub", "20a9699eda785e36"),
+    ("grown_hedgerow", "123af699956d67df"),
+    ("grown_beside_wall", "4c09e556bb781e66"),
+    ("grown_bushy", "d5d09bc05200261e"),
 ];
 
 #[test]

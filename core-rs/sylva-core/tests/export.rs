@@ -235,7 +235,11 @@ fn glb_container_layout_and_counts() {
     assert_eq!(mats[0]["pbrMetallicRoughness"]["metallicFactor"], 0.0);
     assert_eq!(mats[1]["alphaMode"], "MASK");
     assert_eq!(mats[1]["doubleSided"], true);
-    assert_eq!(j["images"].as_array().unwrap().len(), 4);
+    // Bark colour, normal and occlusion-roughness-metal (one texture for both slots), leaf colour, normal.
+    assert_eq!(j["images"].as_array().unwrap().len(), 5);
+    let orm = &mats[0]["pbrMetallicRoughness"]["metallicRoughnessTexture"]["index"];
+    assert_eq!(orm, &mats[0]["occlusionTexture"]["index"]);
+    assert_eq!(j["textures"][orm.as_u64().unwrap() as usize]["name"], "bark_orm");
     for img in j["images"].as_array().unwrap() {
         let v = &j["bufferViews"][img["bufferView"].as_u64().unwrap() as usize];
         assert_eq!(img["mimeType"], "image/png");
@@ -478,7 +482,31 @@ fn bare_tree_exports_without_leaves() {
     glb.check_layout();
     assert!(glb.node("leaves").is_none());
     assert_eq!(glb.json["extensionsUsed"], serde_json::json!(["KHR_mesh_quantization"]));
-    assert_eq!(glb.json["images"].as_array().unwrap().len(), 2);
+    assert_eq!(glb.json["images"].as_array().unwrap().len(), 3);
+}
+
+#[test]
+fn bark_type_changes_the_exported_textures_and_the_hash() {
+    let mut p = TreeParams::default();
+    p.leaves = 0;
+    let opts = ExportOptions::from_json(r#"{"bark_texture_size":32}"#).unwrap();
+    let mut seen = Vec::new();
+    for &kind in sylva_core::mesh::bark::BarkType::ALL {
+        p.bark_type = kind;
+        let g = generate(&p).unwrap();
+        let glb = parse(&export::to_glb(&g, &opts));
+        let img = &glb.json["images"][0];
+        let v = &glb.json["bufferViews"][img["bufferView"].as_u64().unwrap() as usize];
+        let (at, len) = (v["byteOffset"].as_u64().unwrap() as usize, v["byteLength"].as_u64().unwrap() as usize);
+        let color = glb.bin[at..at + len].to_vec();
+        let obj_png = export::obj::texture_png(&g, &opts, 0).unwrap();
+        for (h, c, o) in &seen {
+            assert_ne!(*h, g.hash, "{kind:?}: same hash");
+            assert_ne!(c, &color, "{kind:?}: same GLB colour map");
+            assert_ne!(o, &obj_png, "{kind:?}: same OBJ colour map");
+        }
+        seen.push((g.hash, color, obj_png));
+    }
 }
 
 #[test]

@@ -116,7 +116,12 @@ fn foliage_is_deterministic_and_seeded_and_counts() {
     let bare = generate(&TreeParams { leaves: 0, ..p.clone() }).unwrap();
     assert_eq!(bare.foliage.count(), 0);
     assert_ne!(bare.hash, a.hash);
-    assert_eq!(bare.mesh, a.mesh, "leaves never change the bark");
+    // Leaves never change the bark's geometry, only its shade: the crown darkens the bark inside it.
+    let unshaded = |m: &sylva_core::TreeMesh| sylva_core::TreeMesh { shade: Vec::new(), ..m.clone() };
+    assert_eq!(unshaded(&bare.mesh), unshaded(&a.mesh), "leaves never change the bark");
+    assert!(bare.mesh.shade.iter().all(|&s| s == 255), "no leaves, no crown shade");
+    let darkest = a.mesh.shade.iter().min().copied();
+    assert!(darkest.is_some_and(|s| s < 230), "the crown shades some bark: darkest {darkest:?}");
     // Twigs of three: three leaves per site.
     let three = generate(&TreeParams { foliage_twigs3: true, ..p.clone() }).unwrap();
     assert_eq!(three.foliage.count(), 3 * a.foliage.count());

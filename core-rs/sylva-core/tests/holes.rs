@@ -397,3 +397,53 @@ fn a_weld_fallback_on_a_densified_stem_stays_within_the_budget() {
         Err(e) => panic!("{e:?}"),
     }
 }
+
+/// The close-up hole (`hole_count=3, hole_size=0.7, hole_depth=0.8`) and the default
+/// hole size and depth: the rim rolls out above the bark and the cavity is dark, darker with
+/// depth, while the bark around the opening stays lit.
+#[test]
+fn holes_read_as_holes_dark_inside_with_a_rolled_rim() {
+    for (size, depth) in [(0.7, 0.8), (0.35, 0.5)] {
+        let p = TreeParams { hole_size: size, hole_depth: depth, ..thick(3) };
+        let g = generate(&p).unwrap();
+        assert!(!g.holes.is_empty(), "{size} {depth}: no hole");
+        assert_mesh_invariants(&g, "holes read as holes");
+        let m = &g.mesh;
+        for h in &g.holes {
+            // Vertices near the hole: how far above (+) or below (-) the opening plane, how far
+            // from its axis, and their shade.
+            let near: Vec<(f32, f32, u8)> = (0..m.vertex_count())
+                .filter_map(|v| {
+                    let rel = pos(m, v) - h.centre;
+                    let up = rel.dot(h.normal);
+                    let lateral = (rel - h.normal * up).length();
+                    (lateral < 1.6 * h.radius && rel.length() < 2.0 * h.radius).then_some((up, lateral, m.shade[v]))
+                })
+                .collect();
+            // The lip: some vertex within the opening's width stands out above the bark's plane.
+            let lip = near.iter().filter(|n| n.1 < 1.05 * h.radius).map(|n| n.0).fold(f32::MIN, f32::max);
+            assert!(lip > 0.03 * h.radius, "{size}: no rolled rim ({lip} vs radius {})", h.radius);
+            let mean = |s: &[f32]| s.iter().sum::<f32>() / s.len().max(1) as f32;
+            // Inside the opening, sorted from the shallowest to the deepest.
+            let mut inside: Vec<(f32, f32)> = near
+                .iter()
+                .filter(|n| n.1 < 0.9 * h.radius && n.0 < -0.05 * h.depth)
+                .map(|n| (n.0, f32::from(n.2)))
+                .collect();
+            inside.sort_by(|a, b| b.0.total_cmp(&a.0));
+            assert!(inside.len() >= 4, "{size}: {} vertices inside", inside.len());
+            let shades: Vec<f32> = inside.iter().map(|v| v.1).collect();
+            let (shallow, deep) = (mean(&shades[..shades.len() / 2]), mean(&shades[shades.len() / 2..]));
+            let rim: Vec<f32> = near
+                .iter()
+                .filter(|n| n.0 > -0.02 * h.radius && n.1 > 0.9 * h.radius)
+                .map(|n| f32::from(n.2))
+                .collect();
+            let rim = mean(&rim);
+            assert!(
+                deep < 0.35 * rim && deep < shallow && shallow < 0.9 * rim,
+                "{size}: deep {deep} shallow {shallow} rim {rim}"
+            );
+        }
+    }
+}

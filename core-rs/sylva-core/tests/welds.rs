@@ -296,3 +296,17 @@ fn shallow_splits_fork_into_a_smooth_y() {
     assert_eq!(g.stats.welds.forks, 0);
     assert_eq!(count_components(&g), stems.len());
 }
+
+/// Issue #17: CA Black Oak's trunk splits in three at its base, the second clone forking one
+/// step up, where its branch has already drawn away; its side patches bent in two or three
+/// rows of quads (a knee). With more rows the forks stay forks, closed and edge-manifold.
+#[test]
+fn shifted_forks_stay_forks_and_manifold() {
+    let mut p = sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap();
+    for (id, v) in [("levels", 1.0), ("leaves", 0.0), ("hole_count", 0.0)] {
+        p.set(id, v).unwrap();
+    }
+    let g = generate(&p).unwrap();
+    assert!(g.stats.welds.forks >= 2, "{:?}", g.stats.welds);
+    assert_mesh_invariants(&g, "ca_black_oak trunk forks");
+}

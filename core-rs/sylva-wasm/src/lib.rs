@@ -5,7 +5,7 @@
 //! report it and start a fresh instance.
 
 use std::sync::Mutex;
-use sylva_core::{params::TreeParams, presets, Clock, Generated};
+use sylva_core::{mesh::bark, params::TreeParams, presets, Clock, Generated};
 use wasm_bindgen::prelude::*;
 
 static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
@@ -64,16 +64,19 @@ pub fn presets_json() -> String {
     presets::presets_json()
 }
 
-/// The procedural bark colour map (RGBA8, `size`² texels, rows bottom to top).
+/// The procedural bark maps of bark type `kind` (the `bark_type` parameter's index), `size`²
+/// texels each, rows bottom to top, one after the other: colour (sRGB RGBA8), normal (RGB =
+/// tangent-space normal, A = height) and occlusion-roughness-metal (R, G, B).
 #[wasm_bindgen]
-pub fn bark_color(size: usize) -> Vec<u8> {
-    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).0.rgba
+pub fn bark_maps(kind: u32, size: usize) -> Vec<u8> {
+    let m = bark::bake(bark::BarkType::from_index(kind as usize), size.clamp(16, 1024));
+    [m.color.rgba, m.normal.rgba, m.orm.rgba].concat()
 }
 
-/// The procedural bark normal map (RGB = tangent-space normal, A = height; RGBA8, `size`²).
+/// How bark type `kind` is laid on a stem (`sylva_core::mesh::bark::BarkStyle`) as JSON.
 #[wasm_bindgen]
-pub fn bark_normal(size: usize) -> Vec<u8> {
-    sylva_core::mesh::bark::bake(size.clamp(16, 1024), 1).1.rgba
+pub fn bark_style_json(kind: u32) -> String {
+    bark::style_json(bark::BarkType::from_index(kind as usize))
 }
 
 /// A generated tree. Each getter returns a fresh typed-array copy whose buffer the worker can
@@ -105,6 +108,11 @@ impl GeneratedTree {
     /// from the root in m; radius = local stem radius in m). See `sylva_core::TreeMesh::wind`.
     pub fn wind(&self) -> Vec<f32> {
         self.0.mesh.wind.clone()
+    }
+    /// Bark occlusion, one byte per vertex (0 = no light, 255 = open sky; crown depth and tree
+    /// holes, see `sylva_core::mesh::shade`), or empty.
+    pub fn shade(&self) -> Vec<u8> {
+        self.0.mesh.shade.clone()
     }
     /// Growth mode: the markers sampled in the crown (`x, y, z` per marker; empty otherwise).
     pub fn markers(&self) -> Vec<f32> {
@@ -443,6 +451,10 @@ impl Session {
     /// Bark wind attributes, 8 floats per vertex ([`GeneratedTree::wind`]).
     pub fn wind(&self) -> Result<js_sys::Float32Array, JsValue> {
         Ok(self.current()?.bark.mesh.wind.as_slice().into())
+    }
+    /// Bark occlusion, one byte per vertex ([`GeneratedTree::shade`]), or empty (a preview).
+    pub fn shade(&self) -> Result<js_sys::Uint8Array, JsValue> {
+        Ok(self.current()?.bark.mesh.shade.as_slice().into())
     }
     /// Growth mode: the markers (`x, y, z` each).
     pub fn markers(&self) -> Result<js_sys::Float32Array, JsValue> {

@@ -16,6 +16,7 @@ import { Viewport } from '../ui/Viewport';
 import { WindControls } from '../ui/WindControls';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
+import { lookFrom } from '../viewer/cameraView';
 import { emitDebug, installDebugHook } from './debugHook';
 import { historyShortcut, ParamsHistory } from './history';
 import { browserStorage, loadInitialParams, ParamsSync } from './persistence';
@@ -81,12 +82,7 @@ export function App() {
         probeFrame: () => viewerRef.current?.probeFrame() ?? null,
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
-          if (!host) return;
-          host.orbit.minDistance = Math.min(host.orbit.minDistance, 0.05);
-          host.camera.position.set(...from);
-          host.orbit.target.set(...to);
-          host.orbit.update();
-          host.requestRender();
+          if (host) lookFrom(host, from, to);
         },
       }),
     [],

@@ -147,6 +147,7 @@ function parseChanges(value: unknown): TreeChanges {
     placements: flag('placements'),
     leaf_mesh: flag('leaf_mesh'),
     leaf: flag('leaf'),
+    ...(typeof o.shade === 'boolean' ? { shade: o.shade } : {}),
   };
 }
 
@@ -174,6 +175,7 @@ export function parseMeta(text: string): TreeMeta {
     leaf_texture: Array.isArray(o.leaf_texture)
       ? [Number(o.leaf_texture[0]), Number(o.leaf_texture[1])]
       : null,
+    bark_type: typeof o.bark_type === 'number' ? o.bark_type : 0,
   };
 }
 

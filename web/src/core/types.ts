@@ -74,6 +74,8 @@ export interface TreeChanges {
   placements: boolean;
   leaf_mesh: boolean;
   leaf: boolean;
+  /** The bark's occlusion was computed again (absent from older cores). */
+  shade?: boolean;
 }
 
 /** Parsed `meta_json()` of a generated tree. */
@@ -97,6 +99,8 @@ export interface TreeMeta {
   leaf_hash?: string;
   /** Size of the baked leaf texture `[width, height]`, null when bare. */
   leaf_texture?: [number, number] | null;
+  /** The `bark_type` parameter's index: which bark maps the tree wears. */
+  bark_type?: number;
 }
 
 /** The leaf texture (RGBA8, row 0 = v 0), sent only when the leaf shape changed. */
@@ -156,8 +160,10 @@ export interface TreeUpdate {
   leafMesh?: LeafMeshBuffers;
   /** The leaf texture (a new leaf shape). */
   leafTexture?: LeafTextureBuffers;
-  /** The baked bark maps (the first answer of a worker). */
+  /** The baked bark maps (a worker's first answer, and when the bark type changes). */
   barkTextures?: BarkTextureBuffers;
+  /** Bark occlusion, one byte per vertex (with a new bark or new leaves; empty: a preview). */
+  shade?: Uint8Array;
 }
 
 /** The mesh buffers of a generated tree plus its metadata. */
@@ -178,17 +184,36 @@ export interface TreeBuffers {
    * `TreeMesh.wind`); absent or empty when the core has none (the viewer falls back).
    */
   wind?: Float32Array;
-  /** The baked bark textures, sent with the first result of a worker only. */
+  /** The baked bark textures, sent with a worker's first result and when the bark type changes. */
   bark?: BarkTextureBuffers;
+  /** Bark occlusion, one byte per vertex (0 dark .. 255 open sky; `TreeMesh.shade`); may be empty. */
+  shade?: Uint8Array;
 }
 
-/** The core's procedural bark maps (`bark_color` / `bark_normal`): RGBA8, `size`², row 0 = v 0. */
+/** How a bark type lies on a stem (`sylva_core::mesh::bark::BarkStyle`). */
+export interface BarkStyle {
+  /** Tile width (m) on a stem of 1 m girth; `tile_at_1m * sqrt(girth)` on others. */
+  tile_at_1m: number;
+  /** Below this stem radius (m) the bark is young: smooth, of `young_rgb`. */
+  young_radius: number;
+  /** Linear RGB of young bark. */
+  young_rgb: [number, number, number];
+  /** Strength of the normal map on old bark. */
+  relief: number;
+}
+
+/** The core's procedural bark maps (`bark_maps`): RGBA8, `size`², row 0 = v 0. */
 export interface BarkTextureBuffers {
   size: number;
+  /** The `bark_type` index these maps are. */
+  kind: number;
   /** Colour (sRGB). */
   color: Uint8Array;
   /** Tangent-space normal (RGB = xyz·0.5 + 0.5) and height (A). */
   normal: Uint8Array;
+  /** Occlusion (R), roughness (G), metalness (B). */
+  orm: Uint8Array;
+  style: BarkStyle;
 }
 
 /** Shape of a user volume primitive (growth mode). */
@@ -232,6 +257,8 @@ export interface WasmTree {
   leaf_matrices?(): Float32Array;
   leaf_colors?(): Float32Array;
   leaf_texture?(): Uint8Array;
+  /** Bark occlusion (one byte per vertex); optional: test fakes lack it. */
+  shade?(): Uint8Array;
   /** Wind data (8 floats per vertex); optional: older cores and test fakes lack it. */
   wind?(): Float32Array;
   /**
@@ -277,6 +304,8 @@ export interface WasmSession {
   leaf_matrices(): Float32Array;
   leaf_colors(): Float32Array;
   leaf_texture(): Uint8Array;
+  /** Bark occlusion, one byte per vertex (empty for a preview). */
+  shade(): Uint8Array;
   free(): void;
 }
 
@@ -294,9 +323,13 @@ export interface WasmApi {
   debug_panic(): void;
   leaf_inspect?(paramsJson: string, step: number, triangulation: boolean): string;
   leaf_presets_json?(): string;
-  /** The procedural bark maps (RGBA8, `size`²; optional so that fakes may leave them out). */
-  bark_color?(size: number): Uint8Array;
-  bark_normal?(size: number): Uint8Array;
+  /**
+   * The procedural bark maps of bark type `kind`: colour, normal, occlusion-roughness-metal
+   * (RGBA8, `size`² each, one after the other; optional so that fakes may leave them out).
+   */
+  bark_maps?(kind: number, size: number): Uint8Array;
+  /** How bark type `kind` lies on a stem, as JSON (`BarkStyle`). */
+  bark_style_json?(kind: number): string;
 }
 
 /** The inspector's view of one leaf (`leaf_inspect()`). */

@@ -6,13 +6,21 @@ import { createModuleWorker } from '../createWorker';
 import { decodeQuery, decodeVolumes, VOLUMES_KEY } from '../url/codec';
 import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
 import { TreeEmbed, type EmbedState } from './TreeEmbed';
+import { cameraOf, lookFrom } from '../viewer/cameraView';
 import './status.css';
 import './embed.css';
 
 /** What tests and the console can read of the embed page. */
 declare global {
   interface Window {
-    __sylvaEmbed?: { state(): EmbedState; rotating(): boolean; azimuth(): number };
+    __sylvaEmbed?: {
+      state(): EmbedState;
+      rotating(): boolean;
+      azimuth(): number;
+      /** Camera at `from` looking at `to` (m), and where it is now (the gallery's close-ups). */
+      view(from: [number, number, number], to: [number, number, number]): void;
+      camera(): { position: number[]; target: number[] };
+    };
   }
 }
 
@@ -49,6 +57,8 @@ function start(): void {
     state: () => embed.current,
     rotating: () => embed.rotating,
     azimuth: () => embed.viewer.overlayHost().orbit.getAzimuthalAngle(),
+    view: (from, to) => lookFrom(embed.viewer.overlayHost(), from, to),
+    camera: () => cameraOf(embed.viewer.overlayHost()),
   };
   window.addEventListener('pagehide', (event) => {
     if (!event.persisted) embed.dispose();

@@ -8,14 +8,13 @@
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
 import type { Sphere, InstancedMesh } from 'three';
+import { SceneLights } from '../viewer/lighting';
 import {
   Color,
-  DirectionalLight,
   DoubleSide,
   DynamicDrawUsage,
   Fog,
   Frustum,
-  HemisphereLight,
   InstancedBufferAttribute,
   Matrix4,
   Mesh,
@@ -126,6 +125,7 @@ export class ForestScene {
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(40, 1, 0.5, 4000);
   private readonly controls: OrbitControls;
+  private readonly lights: SceneLights;
   private readonly ground: Mesh<PlaneGeometry, MeshStandardMaterial>;
   private readonly varieties: Variety[] = [];
   private meshes: InstancedMesh[][] = [];
@@ -157,10 +157,8 @@ export class ForestScene {
     container.appendChild(this.renderer.domElement);
     this.scene.background = new Color(SKY);
     this.scene.fog = new Fog(SKY, 150, 900);
-    this.scene.add(new HemisphereLight('#e8f1ff', '#6b5a45', 1.4));
-    const sun = new DirectionalLight('#fff6e5', 2.4);
-    sun.position.set(0.5, 1, 0.35);
-    this.scene.add(sun);
+    // The viewer's sky light and sun (lighting.ts), without shadows over a forest.
+    this.lights = new SceneLights(this.scene, this.renderer, { shadows: false });
     this.ground = new Mesh(
       new PlaneGeometry(1, 1),
       new MeshStandardMaterial({ color: GROUND, roughness: 1 }),
@@ -278,6 +276,7 @@ export class ForestScene {
     for (const v of this.varieties) for (const d of v.disposables) d.dispose();
     this.ground.geometry.dispose();
     this.ground.material.dispose();
+    this.lights.dispose();
     this.renderer.dispose();
     this.renderer.domElement.remove();
   }

@@ -12,6 +12,7 @@
  *   shader blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere
  *   light + sun, the viewer's lights), so the impostor follows the scene's lighting.
  */
+import type { Vector3 } from 'three';
 import {
   Color,
   DoubleSide,
@@ -28,7 +29,6 @@ import {
   UniformsLib,
   UniformsUtils,
   UnsignedByteType,
-  Vector3,
   Vector4,
   WebGLRenderTarget,
   type BufferGeometry,
@@ -36,6 +36,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
+import { impostorLights, type ImpostorLights } from '../viewer/lighting';
 import { frameDirection, viewBasis } from './hemiOct';
 import { wrapInstances } from '../viewer/instances';
 
@@ -368,22 +369,9 @@ void main() {
 #include <fog_fragment>
 }`;
 
-/** Lights the impostor uses (linear colours × intensity, sun direction toward the sun). */
-export interface ImpostorLights {
-  sunDir: Vector3;
-  sunColor: Color;
-  sky: Color;
-  ground: Color;
-}
-
-/** The viewer's lights: HemisphereLight('#e8f1ff', '#6b5a45', 1.4), sun '#fff6e5' × 2.4. */
+/** The viewer's lights as the impostor's sky + ground + sun model (one definition: lighting.ts). */
 export function viewerLights(): ImpostorLights {
-  return {
-    sunDir: new Vector3(0.5, 1, 0.35).normalize(),
-    sunColor: new Color('#fff6e5').multiplyScalar(2.4),
-    sky: new Color('#e8f1ff').multiplyScalar(1.4),
-    ground: new Color('#6b5a45').multiplyScalar(1.4),
-  };
+  return impostorLights();
 }
 
 /** The impostor's material (works on a Mesh and on an InstancedMesh of the impostor quad). */

@@ -1,13 +1,12 @@
 /** The three.js scene: renderer, orbit camera, lights, ground and the tree mesh (render on demand). */
 import {
   Color,
-  DirectionalLight,
   DoubleSide,
   Fog,
-  HemisphereLight,
   LineBasicMaterial,
   LineSegments,
   Mesh,
+  MeshLambertMaterial,
   MeshStandardMaterial,
   CircleGeometry,
   PCFShadowMap,
@@ -21,10 +20,17 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
 import { BarkTextures } from './barkMaterial';
+import { applyBarkLook, createBarkLookUniforms } from './barkLook';
+import { SceneLights, applyLeafTranslucency } from './lighting';
 import { Foliage } from './Foliage';
 import { WindController } from './wind';
 import { hashPixels } from './windDebug';
-import { buildEnvelopeGeometry, buildTreeGeometry, updateTreeGeometry } from './geometry';
+import {
+  buildEnvelopeGeometry,
+  buildTreeGeometry,
+  updateShade,
+  updateTreeGeometry,
+} from './geometry';
 import { mergeUpdate, updateOf } from './treeState';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
@@ -52,8 +58,9 @@ export class TreeViewer {
   private readonly scene = new Scene();
   private readonly camera = new PerspectiveCamera(40, 1, 0.05, 1000);
   private readonly controls: OrbitControls;
-  private readonly sun = new DirectionalLight('#fff6e5', 2.4);
-  private readonly ground: Mesh<CircleGeometry, MeshStandardMaterial>;
+  private readonly lights: SceneLights;
+  private readonly barkLook = createBarkLookUniforms();
+  private readonly ground: Mesh<CircleGeometry, MeshLambertMaterial>;
   private readonly bark = new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 });
   private readonly leaves = new MeshStandardMaterial({
     color: LEAF_COLOR,
@@ -70,7 +77,7 @@ export class TreeViewer {
   private readonly foliage = new Foliage(this.scene);
   /** Wind animation: shared uniforms, clock and settings (see wind.ts). */
   readonly wind = new WindController(() => this.requestRender());
-  private readonly barkTextures = new BarkTextures(this.bark);
+  private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
   private frameRequested = false;
   /**
    * Benchmarks only: no frame is drawn while false (trees still arrive and are set up), so a
@@ -99,17 +106,13 @@ export class TreeViewer {
 
     this.scene.background = new Color(BACKGROUND_COLOR);
     this.scene.fog = this.fog;
-    this.scene.add(new HemisphereLight('#e8f1ff', '#6b5a45', 1.4));
-    this.sun.castShadow = true;
-    this.sun.shadow.mapSize.set(2048, 2048);
-    this.sun.shadow.radius = 4;
-    this.sun.shadow.bias = -0.0005;
-    this.sun.shadow.normalBias = 0.02;
-    this.scene.add(this.sun, this.sun.target);
+    // Sky light, sun and soft shadows: one definition for every scene (lighting.ts).
+    this.lights = new SceneLights(this.scene, this.renderer, { shadows: true });
 
     this.ground = new Mesh(
       new CircleGeometry(1, 96),
-      new MeshStandardMaterial({ color: GROUND_COLOR, roughness: 1 }),
+      // Lambert: the ground fills most of the view; the sky's image-based light is for the tree.
+      new MeshLambertMaterial({ color: GROUND_COLOR }),
     );
     this.ground.rotation.x = -Math.PI / 2;
     this.ground.receiveShadow = true;
@@ -127,6 +130,8 @@ export class TreeViewer {
     this.wind.apply(this.bark, 'bark');
     this.wind.apply(this.leaves, 'bark');
     this.wind.apply(this.foliage.material, 'leaves');
+    applyBarkLook(this.bark, this.barkLook);
+    applyLeafTranslucency(this.foliage.material);
     this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
@@ -149,6 +154,7 @@ export class TreeViewer {
     const buffers = mergeUpdate(this.current, update);
     this.current = buffers;
     if (update.bark) this.setBark(update.bark, buffers);
+    if (update.shade && this.tree) updateShade(this.tree.geometry, update.shade);
     if (update.envelope) {
       this.envelope.geometry.dispose();
       this.envelope.geometry = buildEnvelopeGeometry(update.envelope);
@@ -266,6 +272,7 @@ export class TreeViewer {
     this.envelope.material.dispose();
     this.wind.dispose();
     this.barkTextures.dispose();
+    this.lights.dispose();
     this.bark.dispose();
     this.leaves.dispose();
     this.ground.geometry.dispose();
@@ -278,19 +285,7 @@ export class TreeViewer {
   private fitStage(sphere: Sphere): void {
     const r = Math.max(sphere.radius, 0.01);
     this.ground.scale.setScalar(r * 12);
-    const target = new Vector3(sphere.center.x, 0, sphere.center.z);
-    this.sun.target.position.copy(target);
-    this.sun.position
-      .copy(sphere.center)
-      .add(new Vector3(0.5, 1, 0.35).normalize().multiplyScalar(r * 3));
-    const cam = this.sun.shadow.camera;
-    cam.left = -r * 1.3;
-    cam.right = r * 1.3;
-    cam.top = r * 1.3;
-    cam.bottom = -r * 1.3;
-    cam.near = r * 0.05;
-    cam.far = r * 6;
-    cam.updateProjectionMatrix();
+    this.lights.fit(sphere);
   }
 
   /** Places the camera so the bounding sphere fills the view. */

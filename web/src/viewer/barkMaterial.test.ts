@@ -3,14 +3,17 @@ import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
 import { barkOf } from '../worker/generate';
 import { BARK_FLAT_COLOR, BARK_REPEAT, BarkTextures, createBarkMaterial } from './barkMaterial';
+import { createBarkLookUniforms } from './barkLook';
 
 describe('bark material', () => {
   it('uses the core-baked maps: sRGB colour, linear normal map, repeating, mipmapped', () => {
-    const bark = barkOf(loadWasm());
-    if (!bark) throw new Error('this wasm build has no bark_color / bark_normal');
+    const bark = barkOf(loadWasm(), 1);
+    if (!bark) throw new Error('this wasm build has no bark_maps');
     expect(bark.size).toBe(256);
+    expect(bark.kind).toBe(1);
     const material = createBarkMaterial();
-    const textures = new BarkTextures(material);
+    const look = createBarkLookUniforms();
+    const textures = new BarkTextures(material, look);
     expect(textures.size).toBeNull();
     textures.set(bark);
     expect(textures.size).toEqual({ width: 256, height: 256 });
@@ -18,6 +21,12 @@ describe('bark material', () => {
     const normal = material.normalMap as DataTexture;
     expect(map.image.data).toBe(bark.color); // wrapped, not copied
     expect(normal.image.data).toBe(bark.normal);
+    // Occlusion-roughness-metal: the roughness slot (G); the type's style reaches the bark look.
+    expect(material.aoMap).toBeNull();
+    expect((material.roughnessMap as DataTexture).image.data).toBe(bark.orm);
+    expect(textures.kind).toBe(1);
+    expect(look.uBarkTile.value).toBeCloseTo(bark.style.tile_at_1m);
+    expect(look.uBarkYoungRadius.value).toBeCloseTo(bark.style.young_radius);
     expect(map.colorSpace).toBe(SRGBColorSpace);
     expect(normal.colorSpace).toBe(NoColorSpace);
     for (const t of [map, normal]) {
@@ -47,7 +56,16 @@ describe('bark material', () => {
   it('ignores buffers of the wrong size', () => {
     const material = createBarkMaterial();
     const textures = new BarkTextures(material);
-    textures.set({ size: 16, color: new Uint8Array(10), normal: new Uint8Array(16 * 16 * 4) });
+    const ok = new Uint8Array(16 * 16 * 4);
+    const style = {
+      tile_at_1m: 0.2,
+      young_radius: 0.02,
+      young_rgb: [0, 0, 0] as [number, number, number],
+      relief: 1,
+    };
+    textures.set({ size: 16, kind: 0, color: new Uint8Array(10), normal: ok, orm: ok, style });
+    expect(material.map).toBeNull();
+    textures.set({ size: 16, kind: 0, color: ok, normal: ok, orm: new Uint8Array(3), style });
     expect(material.map).toBeNull();
     expect(textures.size).toBeNull();
   });

@@ -6,6 +6,7 @@
 import type { InterleavedBufferAttribute } from 'three';
 import { Box3, BufferAttribute, BufferGeometry, Sphere, Vector3, type TypedArray } from 'three';
 import type { BarkBuffers, TreeBuffers, TreeMeta } from '../core/types';
+import { attachBarkAttributes, shadeBytes } from './barkLook';
 import { attachWindAttributes } from './wind';
 
 /** Material slot of each mesh group in the material array [bark, leaves]. */
@@ -20,6 +21,8 @@ export function buildTreeGeometry(tree: TreeBuffers): BufferGeometry {
   geometry.setIndex(new BufferAttribute(tree.indices, 1));
   // The core's wind data as `windPivot` + `windParams` (wrapped, not copied), when it has any.
   attachWindAttributes(geometry, tree.wind);
+  // The bark look's stem radius (a view of the wind data) and occlusion.
+  attachBarkAttributes(geometry, tree.shade);
   setGroupsAndBounds(geometry, tree.meta);
   return geometry;
 }
@@ -82,9 +85,21 @@ export function updateTreeGeometry(
   swap(normal, bark.normals);
   swap(uv, bark.uvs);
   if (index) swap(index, bark.indices);
+  // The bark look's radius attribute is a view of the same wind buffer: it follows.
   if (wind) swap(wind, bark.wind);
   setGroupsAndBounds(geometry, meta);
   return true;
+}
+
+/**
+ * Puts a new bark occlusion into `geometry`'s `barkShade` attribute in place (one byte per
+ * vertex; empty or the wrong size means open sky everywhere).
+ */
+export function updateShade(geometry: BufferGeometry, shade: Uint8Array): void {
+  const attribute = geometry.getAttribute('barkShade') as BufferAttribute | undefined;
+  const bytes = shadeBytes(shade, geometry.getAttribute('position').count);
+  if (attribute && fits(attribute, bytes)) swap(attribute, bytes);
+  else geometry.setAttribute('barkShade', new BufferAttribute(bytes, 1, true));
 }
 
 /** Wraps the core's envelope line segments (x, y, z pairs) for a LineSegments object. */

@@ -30,6 +30,7 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
       : {}),
     ...(f?.texture ? { leafTexture: f.texture } : {}),
     ...(tree.bark ? { barkTextures: tree.bark } : {}),
+    shade: tree.shade ?? new Uint8Array(0),
   };
 }
 
@@ -59,6 +60,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
   const wind = update.bark ? update.bark.wind : current?.wind;
   const markers = update.markers ?? current?.markers;
   const textures = update.barkTextures ?? current?.bark;
+  const shade = update.shade ?? current?.shade;
   return {
     positions: bark.positions,
     normals: bark.normals,
@@ -70,5 +72,6 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     ...(wind ? { wind } : {}),
     ...(markers ? { markers } : {}),
     ...(textures ? { bark: textures } : {}),
+    ...(shade ? { shade } : {}),
   };
 }

@@ -18,8 +18,33 @@ describe('wind data from the core', () => {
 
   it('bark maps need both getters', () => {
     const wasm = loadWasm();
-    const partial = { ...wasm, bark_normal: undefined } as WasmApi;
+    const partial = { ...wasm, bark_style_json: undefined } as WasmApi;
     expect(barkOf(partial)).toBeUndefined();
+  });
+
+  it('bark maps go out again when the bark type changes; the shade with every new bark', () => {
+    const h = harness();
+    for (const [id, bark_type] of [
+      [1, 0],
+      [2, 0],
+      [3, 3],
+      [4, 3],
+    ] as const) {
+      h.handle({ type: 'generate', id, params: { bark_type, leaves: 2 } });
+    }
+    const results = h.sent.filter((s) => s.message.type === 'result');
+    const r = h.results();
+    expect(r.map((x) => x.barkTextures?.kind)).toEqual([0, undefined, 3, undefined]);
+    expect(r[2]?.barkTextures?.color).not.toEqual(r[0]?.barkTextures?.color);
+    expect(results[2]?.transfer).toContain(r[2]?.barkTextures?.orm.buffer);
+    // A new bark brings its occlusion (one byte per vertex); an unchanged tree sends neither.
+    expect(r.map((x) => x.shade !== undefined)).toEqual([true, false, true, false]);
+    for (const [i, x] of r.entries()) {
+      if (!x.shade) continue;
+      expect(x.shade).toHaveLength(x.meta.vertices);
+      expect(results[i]?.transfer).toContain(x.shade.buffer);
+    }
+    expect(h.tree().shade).toHaveLength(h.tree().meta.vertices);
   });
 
   it('the first result carries the bark maps and the wind buffer, transferred', () => {

@@ -38,18 +38,23 @@ export const PREVIEW_BUDGET_MS = 4;
 /** Edge length of the baked bark textures (texels). */
 export const BARK_TEXTURE_SIZE = 256;
 
-/** The core's bark maps, or undefined when this wasm build has none. */
-export function barkOf(wasm: WasmApi): BarkTextureBuffers | undefined {
-  if (typeof wasm.bark_color !== 'function' || typeof wasm.bark_normal !== 'function') {
+/** The core's maps of bark type `kind`, or undefined when this wasm build has none. */
+export function barkOf(wasm: WasmApi, kind = 0): BarkTextureBuffers | undefined {
+  if (typeof wasm.bark_maps !== 'function' || typeof wasm.bark_style_json !== 'function') {
     return undefined;
   }
-  const color = wasm.bark_color(BARK_TEXTURE_SIZE);
-  const normal = wasm.bark_normal(BARK_TEXTURE_SIZE);
-  const size = Math.round(Math.sqrt(color.length / 4));
-  if (size < 1 || size * size * 4 !== color.length || normal.length !== color.length) {
-    return undefined;
-  }
-  return { size, color, normal };
+  const maps = wasm.bark_maps(kind, BARK_TEXTURE_SIZE);
+  const size = Math.round(Math.sqrt(maps.length / 12));
+  if (size < 1 || size * size * 12 !== maps.length) return undefined;
+  const n = size * size * 4;
+  // Three copies, so that each map's buffer can be transferred on its own.
+  const [color, normal, orm] = [0, 1, 2].map((k) => maps.slice(k * n, (k + 1) * n)) as [
+    Uint8Array,
+    Uint8Array,
+    Uint8Array,
+  ];
+  const style = JSON.parse(wasm.bark_style_json(kind)) as BarkTextureBuffers['style'];
+  return { size, kind, color, normal, orm, style };
 }
 
 /**
@@ -71,7 +76,11 @@ export function transferOf(update: TreeUpdate): Transferable[] {
   const l = update.leafMesh;
   if (l) views.push(l.positions, l.normals, l.uvs, l.indices);
   if (update.leafTexture) views.push(update.leafTexture.rgba);
-  if (update.barkTextures) views.push(update.barkTextures.color, update.barkTextures.normal);
+  if (update.barkTextures) {
+    const t = update.barkTextures;
+    views.push(t.color, t.normal, t.orm);
+  }
+  if (update.shade) views.push(update.shade);
   return [...new Set(views.map((v) => v.buffer as ArrayBuffer))];
 }
 
@@ -90,7 +99,8 @@ export class SessionGenerator {
   private readonly session: WasmSession;
   /** Leaf shape whose texture the main thread has ('' = none). */
   private sentLeafHash = '';
-  private barkSent = false;
+  /** The bark type whose maps the main thread has (null: none yet). */
+  private barkSent: number | null = null;
   /** Whether a result went out: the first one carries every array, whatever changed. */
   private sentAny = false;
   /** Result whose hash is still to be posted, and the cancel of its scheduled task. */
@@ -178,7 +188,14 @@ export class SessionGenerator {
   /** The arrays `meta.changes` names, copied out of the module (one copy each). */
   private collect(meta: TreeMeta): TreeUpdate {
     const s = this.session;
-    const all = { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true };
+    const all = {
+      skeleton: true,
+      bark: true,
+      placements: true,
+      leaf_mesh: true,
+      leaf: true,
+      shade: true,
+    };
     const changes = this.sentAny ? (meta.changes ?? all) : all;
     this.sentAny = true;
     const update: TreeUpdate = { meta };
@@ -214,11 +231,15 @@ export class SessionGenerator {
     }
     // A bare tree sent no texture: the next leafy tree must send one.
     this.sentLeafHash = leafHash;
-    if (!this.barkSent) {
-      this.barkSent = true;
-      const bark = barkOf(this.wasm);
+    // The bark maps go out with the first result and again when the bark type changes.
+    const kind = meta.bark_type ?? 0;
+    if (this.barkSent !== kind) {
+      this.barkSent = kind;
+      const bark = barkOf(this.wasm, kind);
       if (bark) update.barkTextures = bark;
     }
+    // The occlusion belongs to the bark it was computed for: sent with every new bark.
+    if (changes.bark || changes.shade) update.shade = s.shade();
     return update;
   }
 }

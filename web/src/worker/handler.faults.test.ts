@@ -54,6 +54,7 @@ function fakeWasm(options: FakeOptions) {
     leaf_matrices: f32,
     leaf_colors: f32,
     leaf_texture: () => new Uint8Array(0),
+    shade: () => new Uint8Array(0),
     free: () => undefined,
   };
   const wasm: WasmApi = {

@@ -21,9 +21,8 @@ function coldHash(params: Record<string, number>): string {
 
 /** Which arrays a result carries. */
 function parts(r: ResultResponse): string[] {
-  return (['bark', 'envelope', 'markers', 'instances', 'leafMesh', 'leafTexture'] as const).filter(
-    (k) => r[k] !== undefined,
-  );
+  const keys = ['bark', 'envelope', 'markers', 'instances', 'leafMesh', 'leafTexture', 'shade'];
+  return (keys as (keyof ResultResponse)[]).filter((k) => r[k] !== undefined);
 }
 
 describe('session generation in the worker', () => {
@@ -37,14 +36,16 @@ describe('session generation in the worker', () => {
       'instances',
       'leafMesh',
       'leafTexture',
+      'shade',
     ]);
     const edits: [Record<string, number>, string[]][] = [
-      [{ foliage_angle: 20 }, ['instances']],
+      // New leaves shade the bark differently: its occlusion comes along.
+      [{ foliage_angle: 20 }, ['instances', 'shade']],
       [{ foliage_angle: 20, leaf_margin: 1, leaf_teeth: 30 }, ['leafMesh', 'leafTexture']],
-      [{ foliage_angle: 20, leaf_margin: 1, leaf_teeth: 30, lobes: 3 }, ['bark']],
+      [{ foliage_angle: 20, leaf_margin: 1, leaf_teeth: 30, lobes: 3 }, ['bark', 'shade']],
       [
         { foliage_angle: 20, leaf_margin: 1, leaf_teeth: 30, lobes: 3, seed: 4 },
-        ['bark', 'envelope', 'markers', 'instances'],
+        ['bark', 'envelope', 'markers', 'instances', 'shade'],
       ],
     ];
     let id = 2;
@@ -56,12 +57,8 @@ describe('session generation in the worker', () => {
       expect(parts(result), JSON.stringify(edit)).toEqual(expected);
       // Transferred: exactly the buffers it carries.
       const sent = h.sent.find((s) => s.message === result);
-      expect(sent?.transfer.length).toBe(
-        parts(result).reduce(
-          (n, k) => n + (k === 'bark' ? 5 : k === 'instances' ? 2 : k === 'leafMesh' ? 4 : 1),
-          0,
-        ),
-      );
+      const buffers: Partial<Record<string, number>> = { bark: 5, instances: 2, leafMesh: 4 };
+      expect(sent?.transfer.length).toBe(parts(result).reduce((n, k) => n + (buffers[k] ?? 1), 0));
       expect(h.tree().meta.hash, JSON.stringify(edit)).toBe(coldHash(params));
       id++;
     }
@@ -80,6 +77,7 @@ describe('session generation in the worker', () => {
       placements: false,
       leaf_mesh: false,
       leaf: false,
+      shade: false,
     });
     expect(h.tree().meta.hash).toBe(hash);
   });
@@ -104,8 +102,10 @@ describe('session generation in the worker', () => {
     const full = sent.at(-2);
     if (full?.type !== 'result') throw new Error(JSON.stringify(full));
     expect(full.meta.preview).toBe(false);
-    // Only the bark is swept again: the skeleton and the leaves of the preview were full.
-    expect(parts(full)).toEqual(['bark']);
+    // Only the bark is swept again (with its occlusion, which a preview goes without): the
+    // skeleton and the leaves of the preview were full.
+    expect(parts(full)).toEqual(['bark', 'shade']);
+    expect(preview.shade).toHaveLength(0);
     expect(full.meta.vertices).toBeGreaterThan(preview.meta.vertices);
     const hashes = sent.filter((m) => m.type === 'hash');
     expect(hashes.map((m) => m.id)).toEqual([1, 3]);
@@ -158,6 +158,7 @@ describe('session generation in the worker', () => {
       'instances',
       'leafMesh',
       'leafTexture',
+      'shade',
     ]);
     expect(first.barkTextures).toBeDefined();
     // Nothing was regenerated for it: the primed tree is the requested one.
@@ -167,6 +168,7 @@ describe('session generation in the worker', () => {
       placements: false,
       leaf_mesh: false,
       leaf: false,
+      shade: false,
     });
     expect(h.tree().meta.hash).toBe(coldHash(BASE));
     // A different first tree after a warm-up is still right.

@@ -32,6 +32,7 @@ use quant::LANES;
 
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
+use crate::mesh::bark::BarkType;
 use crate::mesh::TreeMesh;
 use crate::Generated;
 use glam::{Mat3, Vec3};
@@ -147,7 +148,8 @@ pub fn to_glb(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
 /// at the foot of the tree is darker and a little greener (soil splash, moss), young bark
 /// higher up and on thin stems lighter and greyer. With wind data the "age" is the stem's
 /// stiffness (local radius relative to the trunk base); without it, the height above the
-/// ground relative to the tree's height. The tint is a function of two numbers in 0..1
+/// ground relative to the tree's height; the bark occlusion ([`TreeMesh::shade`]) multiplies it.
+/// The tint is a function of two numbers in 0..1
 /// (youth, nearness to the ground), tabulated at [`TINT_STEPS`] steps each: the export pays
 /// one table look-up per vertex.
 pub fn bark_colors(mesh: &TreeMesh) -> Vec<u8> {
@@ -221,6 +223,14 @@ impl BarkTint {
         } else {
             for (c, y) in out.chunks_exact_mut(4).zip(ys) {
                 c.copy_from_slice(&self.table[step(y * self.y_young) * TINT_STEPS + step(steps - y * self.y_ground)]);
+            }
+        }
+        // The bark occlusion (crown depth, cavities: `mesh::shade`) darkens the tint.
+        if mesh.shade.len() == mesh.vertex_count() {
+            for (c, &s) in out.chunks_exact_mut(4).zip(&mesh.shade[first..first + k]) {
+                for x in &mut c[..3] {
+                    *x = ((u16::from(*x) * u16::from(s) + 127) / 255) as u8;
+                }
             }
         }
     }
@@ -331,6 +341,7 @@ pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
         groups: Vec::new(),
         wind: Vec::new(),
         rings: Vec::new(),
+        shade: Vec::new(),
     };
     let mut colors = Vec::with_capacity(total * 4);
     let mut tan = Vec::with_capacity(if with_tangents { total * 4 } else { 0 });
@@ -391,6 +402,8 @@ pub struct TexturePngs {
     pub color: Vec<u8>,
     /// The tangent-space normal map as a PNG file (RGBA8, A = height).
     pub normal: Vec<u8>,
+    /// Bark only: glTF's packed occlusion (R) + roughness (G) + metalness (B) map as a PNG file.
+    pub orm: Option<Vec<u8>>,
 }
 
 type PngCache = Mutex<Option<(u64, Arc<TexturePngs>)>>;
@@ -414,17 +427,18 @@ fn cached(cache: &PngCache, key: u64, make: impl FnOnce() -> TexturePngs) -> Arc
     v
 }
 
-/// The baked bark textures ([`crate::mesh::bark::bake`], seed 1, as the viewer uses) as PNGs,
+/// The baked bark textures of `kind` ([`crate::mesh::bark::bake`], as the viewer uses) as PNGs,
 /// `size` texels square.
-pub fn bark_pngs(size: u32) -> Arc<TexturePngs> {
-    cached(&BARK_PNGS, u64::from(size), || {
-        let (c, n) = crate::mesh::bark::bake(size as usize, 1);
-        let s = c.size as u32;
+pub fn bark_pngs(kind: BarkType, size: u32) -> Arc<TexturePngs> {
+    cached(&BARK_PNGS, u64::from(size) | (kind as u64) << 32, || {
+        let m = crate::mesh::bark::bake(kind, size as usize);
+        let s = m.color.size as u32;
         TexturePngs {
             width: s,
             height: s,
-            color: png::encode_rgba(s, s, &c.rgba),
-            normal: png::encode_rgba(s, s, &n.rgba),
+            color: png::encode_rgba(s, s, &m.color.rgba),
+            normal: png::encode_rgba(s, s, &m.normal.rgba),
+            orm: Some(png::encode_rgba(s, s, &m.orm.rgba)),
         }
     })
 }
@@ -438,6 +452,7 @@ pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
         height: t.height,
         color: png::encode_rgba(t.width, t.height, &t.color),
         normal: png::encode_rgba(t.width, t.height, &t.normal),
+        orm: None,
     }))
 }
 
@@ -508,11 +523,16 @@ mod tests {
             groups: Vec::new(),
             wind: Vec::new(),
             rings: Vec::new(),
+            shade: Vec::new(),
         };
         let c = bark_colors(&mesh);
         assert_eq!(c.len(), 12);
         let lum = |i: usize| c[4 * i] as u32 + c[4 * i + 1] as u32 + c[4 * i + 2] as u32;
         assert!(lum(0) < lum(1) && lum(1) < lum(2), "{c:?}");
         assert!(c.chunks_exact(4).all(|p| p[3] == 255));
+        // The bark occlusion darkens the tint: a vertex in the dark gets a quarter of it.
+        let shaded = bark_colors(&TreeMesh { shade: vec![255, 64, 255], ..mesh });
+        assert_eq!((shaded[0], shaded[8]), (c[0], c[8]));
+        assert!((i32::from(shaded[4]) - i32::from(c[4]) / 4).abs() <= 1, "{} vs {}", shaded[4], c[4]);
     }
 }

@@ -175,9 +175,9 @@ pub fn texture_png(g: &Generated, opts: &ExportOptions, index: usize) -> Option<
     let png = |w: u32, h: u32, rgba: &[u8]| super::png::encode_rgba(w, h, &flip_rows(rgba, w as usize));
     match tex {
         Tex::BarkColor | Tex::BarkNormal => {
-            let (c, n) = crate::mesh::bark::bake(opts.bark_texture_size as usize, 1);
-            let s = c.size as u32;
-            Some(png(s, s, if tex == Tex::BarkColor { &c.rgba } else { &n.rgba }))
+            let m = crate::mesh::bark::bake(g.bark, opts.bark_texture_size as usize);
+            let s = m.color.size as u32;
+            Some(png(s, s, if tex == Tex::BarkColor { &m.color.rgba } else { &m.normal.rgba }))
         }
         Tex::LeafColor | Tex::LeafNormal => {
             let t = g.foliage.texture()?;

@@ -17,7 +17,7 @@
 //! * **Side patches** (the ramiform's twig-like patches). Row `S` of the original is claimed
 //!   (not emitted). `S`'s outer half is joined to `Jo`'s outer half, and `S`'s inner half to the
 //!   clone's `Jc` columns `a..a+n/2` (the clone's outer half, facing the same way), each by
-//!   [`rows`] rows of quads: per column a cubic Bezier from `S` (leaving along the original's
+//!   [`super::fork_rows::rows`] rows of quads: per column a cubic Bezier from `S` (leaving along the original's
 //!   axis, so the trunk below flows on without a kink; toward the front and back of the
 //!   clone's patch leaning with the clone) to the ring (arriving along its branch's axis),
 //!   handles 0.4 of the chord, loops at even parameters, normals across the loops.
@@ -195,15 +195,8 @@ fn split_ring(j: &Junction, pm: &super::tube::StemMesh, ts: &[f32]) -> Option<us
     (rs + 1 < pts.len() && pts[rs] == j.t_lo && pts[rs + 1] == j.t_hi).then_some(rs)
 }
 
-/// Number of quad rows of each branch's collar: about one per 1.5 radii of the fork's length
-/// at quality 1, 2 to 6.
-pub(crate) fn rows(j: &Junction, original: &Stem, quality: f32) -> usize {
-    let len = (j.t_hi - j.t_lo) * original.length;
-    let r = original.radius_at(j.t_lo).max(1e-6);
-    ((quality * len / (1.5 * r)).ceil() as usize).clamp(2, 6)
-}
-
-/// Vertices [`join`] adds at most for a fork of `sides` sides with `rows` side-patch rows: two
+/// Vertices [`join`] adds at most for a fork of `sides` sides with `rows` side-patch rows
+/// ([`super::fork_rows`]): two
 /// side patches of `rows - 1` loops of `sides / 2 + 2` vertices (one a seam copy) and the
 /// crotch seam's inner vertices, twice.
 pub(crate) fn vertices(sides: u32, rows: usize) -> usize {
@@ -519,10 +512,11 @@ fn quad_tris(out: &MeshBuilder, tris: &mut Vec<u32>, [p, q, r, s]: [u32; 4]) {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn fork(t_lo: f32, t_hi: f32) -> Junction {
+    /// A fork junction on stem 0 from `t_lo` to `t_hi` (shared with `fork_rows`' tests).
+    pub(crate) fn fork(t_lo: f32, t_hi: f32) -> Junction {
         Junction { parent: 0, t_start: 0.2, t_lo, t_hi, foot: 0.1, phi: 0.0, beta: PI, fork: true }
     }
 

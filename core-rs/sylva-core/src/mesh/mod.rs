@@ -4,7 +4,9 @@
 
 pub mod bark;
 pub mod fork;
+pub mod fork_rows;
 pub mod holes;
+pub mod shade;
 pub mod topology;
 pub mod trunk;
 pub mod tube;
@@ -136,6 +138,9 @@ pub struct TreeMesh {
     /// clear it: it only lets the GLB writer take a ring vertex's tangent from its ring
     /// neighbours instead of accumulating it over triangles.
     pub rings: Vec<[u32; 2]>,
+    /// Bark occlusion, one byte per vertex (0 = no light, 255 = open sky; [`shade`]), or empty.
+    /// Viewers multiply the bark colour by it; part of [`TreeMesh::content_hash`].
+    pub shade: Vec<u8>,
 }
 
 /// Floats per vertex in [`TreeMesh::wind`].
@@ -168,6 +173,9 @@ impl TreeMesh {
         h.words(&self.indices, |i| i);
         if !self.wind.is_empty() {
             h.words(&self.wind, f32::to_bits);
+        }
+        if !self.shade.is_empty() {
+            h.words(&self.shade, u32::from);
         }
         for g in &self.groups {
             h.words(&[g.material as u32, g.start, g.count], |w| w);
@@ -282,6 +290,7 @@ impl MeshBuilder {
                 groups: Vec::new(),
                 wind: Vec::new(),
                 rings: Vec::new(),
+                shade: Vec::new(),
             },
             wind: false,
         }

@@ -137,7 +137,7 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let leaf_pngs = if opts.textures && has_leaves { super::leaf_pngs(f) } else { None };
     let instanced = has_leaves && opts.leaves == LeafMode::Instanced;
     let owned = Owned {
-        bark_pngs: (has_bark && opts.textures).then(|| super::bark_pngs(opts.bark_texture_size)),
+        bark_pngs: (has_bark && opts.textures).then(|| super::bark_pngs(g.bark, opts.bark_texture_size)),
         baked: (has_leaves && opts.leaves == LeafMode::Baked)
             .then(|| super::bake_leaves(f, tangents && leaf_pngs.is_some())),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
@@ -162,6 +162,13 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
             used_samplers[0] = true;
             let color = doc.texture(&p.color, "bark_color", 0);
             pbr.insert("baseColorTexture".into(), json!({"index": color}));
+            if let Some(orm) = &p.orm {
+                // One packed map: glTF reads roughness from G (metalness B = 0) and occlusion from R.
+                let orm = doc.texture(orm, "bark_orm", 0);
+                pbr.insert("metallicRoughnessTexture".into(), json!({"index": orm}));
+                pbr.insert("roughnessFactor".into(), json!(1.0));
+                mat.insert("occlusionTexture".into(), json!({"index": orm}));
+            }
             if normal_maps {
                 let normal = doc.texture(&p.normal, "bark_normal", 0);
                 mat.insert("normalTexture".into(), json!({"index": normal}));

@@ -1,5 +1,6 @@
 //! The cavity of one hole (the thesis, §4.3: the extrude and subdivide steps of the 3ds Max
-//! recipe): the boundary loop gets a chamfered ring (inset toward the loop's centre and bevelled
+//! recipe): the boundary loop gets a rolled callus lip (two rings raised [`LIP`] × the opening's
+//! half-size above the surface, curling over the edge), then a chamfered ring (inset toward the loop's centre and bevelled
 //! inward), and that rim is extruded inward along minus the surface normal into
 //! [`CAVITY_RINGS`] rings that narrow toward a closed bottom `hole_depth` × local radius below the
 //! surface; the cavity rings are then smoothed by a few Laplacian passes (the thesis' final
@@ -9,7 +10,7 @@
 
 use super::cut::Region;
 use super::patch::{nrm, pos};
-use super::{Hole, CAVITY_RINGS, CHAMFER, SMOOTH_PASSES};
+use super::{Hole, CAVITY_RINGS, CHAMFER, LIP, SMOOTH_PASSES};
 use crate::math::{unit_or, TAU};
 use crate::mesh::TreeMesh;
 use glam::Vec3;
@@ -51,20 +52,27 @@ pub(super) fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavi
     }
     let mean_q = q.iter().map(|v| v.length()).sum::<f32>() / m as f32;
     let bevel = (0.3 * CHAMFER * mean_q).min(0.5 * r.depth);
-    let rings = CAVITY_RINGS + 1; // the chamfer ring, then the cavity rings
+    let lip = LIP * mean_q;
+    // The callus roll: two rings rise above the rim and curl over it, then the chamfer ring
+    // tucks under it; the cavity rings follow.
+    let roll = [(0.94, -lip), (0.86, -0.6 * lip)];
+    let rings = CAVITY_RINGS + 1 + roll.len();
     let mut ring_pos: Vec<Vec<Vec3>> = (0..rings)
         .map(|k| {
-            let a = k as f32 / CAVITY_RINGS as f32;
+            if let Some(&(s, d)) = roll.get(k) {
+                return (0..m).map(|i| g + q[i] * s + n * (h[i] - d)).collect();
+            }
+            let a = (k - roll.len()) as f32 / CAVITY_RINGS as f32;
             let s = (1.0 - CHAMFER) * (1.0 - 0.35 * a * a);
             let d = bevel + (r.depth - bevel) * a;
             (0..m).map(|i| g + q[i] * s + n * (h[i] * (1.0 - a) + h_c * a - d)).collect()
         })
         .collect();
     let bottom = g + n * (h_c - r.depth);
-    // Laplacian smoothing of the cavity rings (the chamfer ring and the bottom stay).
+    // Laplacian smoothing of the cavity rings (the roll, the chamfer ring and the bottom stay).
     for _ in 0..SMOOTH_PASSES {
         let old = ring_pos.clone();
-        for k in 1..rings {
+        for k in roll.len() + 1..rings {
             for i in 0..m {
                 let below = if k + 1 < rings { old[k + 1][i] } else { bottom };
                 let avg = (old[k][(i + m - 1) % m] + old[k][(i + 1) % m] + old[k - 1][i] + below) * 0.25;

@@ -22,7 +22,7 @@
 //! around the candidate within the hole's ellipse (half-width `hole_size` × local radius, 1.5 times
 //! taller along the stem) are selected; the selection must be a topological disk (one boundary
 //! loop, Euler characteristic 1), else it shrinks and is tried again. Its faces are removed, the
-//! boundary loop gets a chamfered ring (inset toward the loop's centre and bevelled inward), and
+//! boundary loop gets a rolled callus lip and a chamfered ring (inset toward the loop's centre and bevelled inward), and
 //! that rim is extruded inward along minus the surface normal into [`CAVITY_RINGS`] rings that
 //! narrow toward a closed bottom `hole_depth` × local radius below the surface; the cavity rings
 //! are then smoothed by a few Laplacian passes (the thesis' final subdivision, which softens the
@@ -64,6 +64,9 @@ pub const CAVITY_RINGS: usize = 3;
 const ELONGATION: f32 = 1.5;
 /// Fraction of the way from the rim toward the loop's centre the chamfer ring is inset.
 const CHAMFER: f32 = 0.2;
+/// Height of the rolled callus lip around an opening, as a fraction of its half-size (the wound
+/// wood a tree grows over the edge of a cavity).
+const LIP: f32 = 0.12;
 /// Laplacian smoothing passes over the cavity rings.
 const SMOOTH_PASSES: usize = 4;
 

@@ -20,7 +20,7 @@ mod sweep;
 pub(crate) use rings::drop_close;
 pub use sweep::{stem_winds, StemWind};
 
-use super::{fork, holes, twig, weld, Material, MeshBuilder, TreeMesh};
+use super::{fork, fork_rows, holes, twig, weld, Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
 use crate::math::TAU;
 use crate::params::TreeParams;
@@ -241,7 +241,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
             }
             fork::keep_gaps(feet, &mut fallback, 0);
             let more = fallback.len().saturating_sub(plan.rings.len());
-            let fork = junctions[i].filter(|j| j.fork).map(|j| fork::rows(&j, &stems[j.parent as usize], q));
+            let fork = junctions[i].filter(|j| j.fork).map(|j| fork_rows::rows(&j, &stems[j.parent as usize], q));
             let joined = match fork {
                 Some(rows) => fork::vertices(sides[i], rows) as u64,
                 // The footprint loop twice, the collar loops, and up to a ring of copies across
@@ -324,8 +324,11 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
                 loops,
             };
             let ok = if j.fork {
-                let rows = fork::rows(j, &stems[j.parent as usize], q);
-                start.is_some() && fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris)
+                let rows = fork_rows::row_choices(j, &stems[j.parent as usize], q);
+                start.is_some()
+                    && rows
+                        .into_iter()
+                        .any(|rows| fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris))
             } else {
                 weld::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch)
             };

@@ -6,7 +6,7 @@ import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { freePort, serve } from './bench-browser.mjs';
+import { freePort, serve } from './preview-server.mjs';
 
 test('serve() stops the whole preview server: the port is closed and no process is left', async () => {
   const dir = mkdtempSync(join(tmpdir(), 'sylva-serve-'));

@@ -1,0 +1,210 @@
+//! Crown-depth shading: how much sky a point inside the crown still sees, an ambient-occlusion
+//! term computed from the leaves the skeleton carries. The WebGL maple notes (reference 003, the
+//! "sunny" tree) shade leaves from a height map of the crown above them; here the leaves are
+//! binned into a coarse voxel grid of leaf area, and for every cell the transmittance
+//! `exp(-k · leaf area per unit cross-section)` is averaged over [`SKY_DIRECTIONS`] rays to the
+//! upper hemisphere (swept layer by layer from the top, one pass per direction) (Beer–Lambert through the foliage, `k` = 0.5 for randomly oriented leaves).
+//! A leaf's brightness is `MIN_LIGHT + (1 - MIN_LIGHT) · sky`, read trilinearly at its base, so
+//! inner and lower leaves are darker than the outer shell; the bark uses the same field
+//! ([`crate::mesh::shade`]). Deterministic: plain arithmetic and the portable `math::exp`, in a
+//! fixed order.
+
+use glam::Vec3;
+
+/// Brightness of a leaf (or bark) that sees no sky at all.
+pub const MIN_LIGHT: f32 = 0.3;
+/// Extinction per unit leaf area index (randomly oriented leaves: 0.5).
+const EXTINCTION: f32 = 0.5;
+/// Largest number of cells along an axis.
+const MAX_CELLS: usize = 20;
+/// Rays per cell: the zenith, then rings at 60° and 30° elevation (unit vectors, up is +y).
+pub const SKY_DIRECTIONS: usize = 13;
+
+fn sky_directions() -> [Vec3; SKY_DIRECTIONS] {
+    let mut d = [Vec3::Y; SKY_DIRECTIONS];
+    // cos/sin of 60° and 30° elevation, six azimuths 60° apart (offset between the rings).
+    let rings = [(0.5f32, 0.866_025_4f32, 0.0f32), (0.866_025_4, 0.5, 0.5)];
+    let az: [(f32, f32); 12] = [
+        (1.0, 0.0),
+        (0.5, 0.866_025_4),
+        (-0.5, 0.866_025_4),
+        (-1.0, 0.0),
+        (-0.5, -0.866_025_4),
+        (0.5, -0.866_025_4),
+        (0.866_025_4, 0.5),
+        (0.0, 1.0),
+        (-0.866_025_4, 0.5),
+        (-0.866_025_4, -0.5),
+        (0.0, -1.0),
+        (0.866_025_4, -0.5),
+    ];
+    for (r, &(horizontal, up, off)) in rings.iter().enumerate() {
+        for k in 0..6 {
+            let (c, s) = az[k + if off > 0.0 { 6 } else { 0 }];
+            d[1 + r * 6 + k] = Vec3::new(c * horizontal, up, s * horizontal);
+        }
+    }
+    d
+}
+
+/// The crown's light field: sky visibility (0..1) at the centre of every cell.
+#[derive(Clone, Debug)]
+pub struct CrownLight {
+    min: Vec3,
+    cell: f32,
+    n: [usize; 3],
+    sky: Vec<f32>,
+}
+
+impl CrownLight {
+    /// The field of leaves given as 4×4 instance matrices (column-major, 16 floats each, leaf
+    /// `x` = width, `y` = length); `None` without leaves.
+    pub fn from_leaves(matrices: &[f32]) -> Option<CrownLight> {
+        let leaves: Vec<(Vec3, f32)> = matrices
+            .chunks_exact(16)
+            .map(|m| {
+                let (x, y) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]));
+                (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length())
+            })
+            .collect();
+        let first = leaves.first()?.0;
+        let (lo, hi) = leaves.iter().fold((first, first), |(lo, hi), &(p, _)| (lo.min(p), hi.max(p)));
+        let extent = (hi - lo).max_element().max(1e-3);
+        let cell = extent / (MAX_CELLS - 2) as f32;
+        // One empty cell of margin on every side, so rays leave through empty cells.
+        let min = lo - Vec3::splat(cell);
+        let n = [0, 1, 2].map(|a| (((hi[a] - lo[a]) / cell) as usize + 3).min(MAX_CELLS + 1));
+        let mut depth = vec![0.0f32; n[0] * n[1] * n[2]];
+        let index = |p: Vec3| -> usize {
+            let c = [0, 1, 2].map(|a| (((p[a] - min[a]) / cell) as usize).min(n[a] - 1));
+            (c[2] * n[1] + c[1]) * n[0] + c[0]
+        };
+        // Optical depth of one cell crossed along a ray of one cell length: k · area / cell².
+        let per_area = EXTINCTION / (cell * cell);
+        for &(p, area) in &leaves {
+            depth[index(p)] += area * per_area;
+        }
+        let mut sky = vec![0.0f32; depth.len()];
+        for d in sky_directions() {
+            accumulate_sky(&depth, n, d, &mut sky);
+        }
+        sky.iter_mut().for_each(|s| *s /= SKY_DIRECTIONS as f32);
+        Some(CrownLight { min, cell, n, sky })
+    }
+
+    /// Sky visibility at `p` (trilinear between cell centres; 1 outside the grid above, the
+    /// nearest cell's value beside and below it).
+    pub fn sky_at(&self, p: Vec3) -> f32 {
+        let f = (p - self.min) / self.cell - Vec3::splat(0.5);
+        let top = (self.n[1] - 1) as f32;
+        if f.y > top {
+            return 1.0;
+        }
+        let clampf = |x: f32, a: usize| x.clamp(0.0, (self.n[a] - 1) as f32);
+        let f = Vec3::new(clampf(f.x, 0), clampf(f.y, 1), clampf(f.z, 2));
+        let i0 = [f.x as usize, f.y as usize, f.z as usize];
+        let i1 = [0, 1, 2].map(|a| (i0[a] + 1).min(self.n[a] - 1));
+        let t = f - Vec3::new(i0[0] as f32, i0[1] as f32, i0[2] as f32);
+        let at = |x: usize, y: usize, z: usize| self.sky[(z * self.n[1] + y) * self.n[0] + x];
+        let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
+        let x00 = lerp(at(i0[0], i0[1], i0[2]), at(i1[0], i0[1], i0[2]), t.x);
+        let x10 = lerp(at(i0[0], i1[1], i0[2]), at(i1[0], i1[1], i0[2]), t.x);
+        let x01 = lerp(at(i0[0], i0[1], i1[2]), at(i1[0], i0[1], i1[2]), t.x);
+        let x11 = lerp(at(i0[0], i1[1], i1[2]), at(i1[0], i1[1], i1[2]), t.x);
+        lerp(lerp(x00, x10, t.y), lerp(x01, x11, t.y), t.z)
+    }
+
+    /// Brightness for sky visibility `sky`: [`MIN_LIGHT`] in full shade, 1 in the open.
+    pub fn light(sky: f32) -> f32 {
+        MIN_LIGHT + (1.0 - MIN_LIGHT) * sky
+    }
+}
+
+/// Adds `exp(-optical depth)` toward the sky along `d` (unit, `d.y > 0`) to every cell of
+/// `sky`. Layer by layer from the top: a ray leaving a cell climbs one layer per step of
+/// `d / d.y`, so the depth above a cell is its own half plus the depth above the point it
+/// reaches in the next layer up (bilinear between that layer's cells; empty outside the grid).
+fn accumulate_sky(depth: &[f32], n: [usize; 3], d: Vec3, sky: &mut [f32]) {
+    let step = d / d.y;
+    let len = step.length();
+    let (nx, ny, nz) = (n[0], n[1], n[2]);
+    let at = |y: usize, x: usize, z: usize| (z * ny + y) * nx + x;
+    // Optical depth from the centre of each cell of the layer above out of the grid.
+    let mut above = vec![0.0f32; nx * nz];
+    let mut here = vec![0.0f32; nx * nz];
+    for y in (0..ny).rev() {
+        for z in 0..nz {
+            for x in 0..nx {
+                let (fx, fz) = (x as f32 + step.x, z as f32 + step.z);
+                let up = if y + 1 < ny { bilinear(&above, nx, nz, fx, fz) } else { 0.0 };
+                let own = depth[at(y, x, z)] * len;
+                sky[at(y, x, z)] += crate::math::exp(-(0.5 * own + up));
+                here[z * nx + x] = own + up;
+            }
+        }
+        std::mem::swap(&mut above, &mut here);
+    }
+}
+
+/// `layer` (`nx × nz`) at fractional cell (fx, fz), 0 outside.
+fn bilinear(layer: &[f32], nx: usize, nz: usize, fx: f32, fz: f32) -> f32 {
+    let (x0, z0) = (fx.floor(), fz.floor());
+    let (tx, tz) = (fx - x0, fz - z0);
+    let get = |x: f32, z: f32| {
+        if x < 0.0 || z < 0.0 || x >= nx as f32 || z >= nz as f32 {
+            0.0
+        } else {
+            layer[z as usize * nx + x as usize]
+        }
+    };
+    let a = get(x0, z0) + (get(x0 + 1.0, z0) - get(x0, z0)) * tx;
+    let b = get(x0, z0 + 1.0) + (get(x0 + 1.0, z0 + 1.0) - get(x0, z0 + 1.0)) * tx;
+    a + (b - a) * tz
+}
+
+/// Multiplies each leaf's RGB tint (3 floats per leaf, matching `matrices`) by its crown light.
+pub fn darken(matrices: &[f32], colors: &mut [f32]) {
+    let Some(field) = CrownLight::from_leaves(matrices) else { return };
+    for (m, c) in matrices.chunks_exact(16).zip(colors.chunks_exact_mut(3)) {
+        let l = CrownLight::light(field.sky_at(Vec3::new(m[12], m[13], m[14]) + 0.5 * Vec3::new(m[4], m[5], m[6])));
+        c.iter_mut().for_each(|v| *v *= l);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn leaf_at(p: Vec3) -> [f32; 16] {
+        [0.1, 0.0, 0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 0.0, 0.1, 0.0, p.x, p.y, p.z, 1.0]
+    }
+
+    #[test]
+    fn inner_leaves_are_darker_than_outer_ones() {
+        // A ball of leaves, 1 m radius, on a lattice every 0.1 m.
+        let mut m = Vec::new();
+        for x in -10..=10 {
+            for y in -10..=10 {
+                for z in -10..=10 {
+                    let p = Vec3::new(x as f32, y as f32, z as f32) * 0.1;
+                    if p.length() <= 1.0 {
+                        m.extend_from_slice(&leaf_at(p + Vec3::Y * 3.0));
+                    }
+                }
+            }
+        }
+        let f = CrownLight::from_leaves(&m).unwrap();
+        let (centre, top, bottom, side) = (
+            f.sky_at(Vec3::new(0.0, 3.0, 0.0)),
+            f.sky_at(Vec3::new(0.0, 3.95, 0.0)),
+            f.sky_at(Vec3::new(0.0, 2.05, 0.0)),
+            f.sky_at(Vec3::new(0.95, 3.0, 0.0)),
+        );
+        assert!(centre < 0.5 * top && centre < side && bottom < top, "{centre} {top} {bottom} {side}");
+        assert!(f.sky_at(Vec3::new(0.0, 6.0, 0.0)) == 1.0 && (0.0..=1.0).contains(&centre));
+        let mut c = vec![1.0; m.len() / 16 * 3];
+        darken(&m, &mut c);
+        assert!(c.iter().all(|&v| (MIN_LIGHT..=1.0).contains(&v)));
+        assert!(c.iter().cloned().fold(1.0f32, f32::min) < 0.6, "the core of the ball is shaded");
+    }
+}

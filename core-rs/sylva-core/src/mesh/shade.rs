@@ -1,0 +1,57 @@
+//! Per-vertex bark occlusion ([`TreeMesh::shade`]): how much sky and light reach each bark
+//! vertex, 0 (none) to 255 (open sky). Two terms multiply:
+//!
+//! * **Crown depth**: the sky the vertex still sees through the foliage, from the same leaf-area
+//!   field that shades the leaves ([`crate::crown_shade`]), so the inner trunk and branches inside
+//!   the crown are darker than the outer twigs.
+//! * **Tree holes** (the thesis, §4.3): inside a cavity the light falls off with the depth below
+//!   the opening, so a hole reads as a dark opening; the depth is measured from the stem's own
+//!   curved surface (a cylinder of the local radius through the hole's rim), so the bark around
+//!   the opening stays lit.
+//!
+//! Viewers multiply the bark colour by it (the viewer as an attribute, the GLB through `COLOR_0`).
+
+use super::holes::Hole;
+use super::TreeMesh;
+use crate::crown_shade::CrownLight;
+use glam::Vec3;
+
+/// Light left at the bottom of a cavity.
+pub const CAVITY_FLOOR: f32 = 0.06;
+
+/// How much light the inside of `hole` lets reach `p` (1 outside the cavity). `stem_radius` is
+/// the local radius of the stem it is cut into.
+pub fn cavity_light(hole: &Hole, stem_radius: f32, p: Vec3) -> f32 {
+    let rel = p - hole.centre;
+    let below = -rel.dot(hole.normal);
+    let lateral = (rel + hole.normal * below).length();
+    if lateral > 1.6 * hole.radius || below <= 0.0 {
+        return 1.0;
+    }
+    // The stem's surface curves away from the opening's plane: depth below it, not the plane.
+    let x = lateral.min(stem_radius);
+    let surface = stem_radius - (stem_radius * stem_radius - x * x).sqrt();
+    let d = below - surface;
+    if d <= 0.0 {
+        return 1.0;
+    }
+    let t = (d / (0.4 * hole.depth.max(1e-6))).min(1.0);
+    1.0 - (1.0 - CAVITY_FLOOR) * t * t * (3.0 - 2.0 * t)
+}
+
+/// The occlusion of every vertex of `mesh` (see the module docs); `leaf_matrices` are the
+/// foliage's instance matrices, `hole_size` the parameter the holes were cut with.
+pub fn occlusion(mesh: &TreeMesh, holes: &[Hole], leaf_matrices: &[f32], hole_size: f32) -> Vec<u8> {
+    let crown = CrownLight::from_leaves(leaf_matrices);
+    mesh.positions
+        .chunks_exact(3)
+        .map(|p| {
+            let p = Vec3::new(p[0], p[1], p[2]);
+            let mut light = crown.as_ref().map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
+            for h in holes {
+                light *= cavity_light(h, h.radius / hole_size.max(1e-3), p);
+            }
+            (light.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+        })
+        .collect()
+}

@@ -1,0 +1,59 @@
+// `npm run gallery`: renders the look of every preset and close-ups of the details (bark types,
+// a fork, a branch collar, a tree hole, a leaf cluster) in the built app (web/dist, embed page,
+// headless Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under
+// 150 KB each) and writes docs/gallery.md. Each section is a module in scripts/gallery/ with
+// `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS.
+//
+// Usage: node scripts/gallery.mjs [--only SECTION_ID] [--presets a,b,c]
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
+import { serve } from './preview-server.mjs';
+import { galleryContext, markdown } from './gallery/context.mjs';
+import { closeupsSection } from './gallery/closeups.mjs';
+import { presetsSection } from './gallery/presets.mjs';
+
+/** The gallery's sections, in page order. */
+export const SECTIONS = [presetsSection, closeupsSection];
+
+const root = fileURLToPath(new URL('..', import.meta.url));
+const PORT = 4393;
+
+function argument(name) {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : undefined;
+}
+
+async function main() {
+  const only = argument('--only');
+  const presetFilter = argument('--presets')?.split(',');
+  const outDir = `${root}/docs/gallery`;
+  mkdirSync(outDir, { recursive: true });
+  const { url, stop } = await serve(PORT);
+  const browser = await chromium.launch({ executablePath: chromiumPath(), args: CHROMIUM_ARGS });
+  try {
+    const ctx = await galleryContext(browser, url, outDir, { presetFilter });
+    const done = [];
+    for (const section of SECTIONS) {
+      if (only && section.id !== only) continue;
+      const started = Date.now();
+      const shots = await section.shots(ctx);
+      console.log(
+        `${section.id}: ${shots.length} images in ${((Date.now() - started) / 1000).toFixed(0)} s`,
+      );
+      done.push({ section, shots });
+    }
+    if (!only && !presetFilter) writeFileSync(`${root}/docs/gallery.md`, markdown(done));
+  } finally {
+    await browser.close();
+    await stop();
+  }
+}
+
+if (process.argv[1] === fileURLToPath(import.meta.url)) {
+  main().catch((e) => {
+    console.error(e);
+    process.exit(1);
+  });
+}

@@ -1,0 +1,87 @@
+// Gallery section: close-ups at the distance a user inspects a tree from: the four bark types on
+// species trunks, a shifted fork, a branch collar, tree holes (the issue's and the default size)
+// and a leaf cluster. Camera positions come from the native CLI's reports of the same trees.
+import { imageTable } from './context.mjs';
+
+const BARKS = [
+  ['oak', 'Furrowed bark (Oak)'],
+  ['fir', 'Plated bark (Fir)'],
+  ['quaking_aspen', 'Smooth-banded bark (Quaking Aspen)'],
+  ['weeping_willow', 'Fibrous bark (Weeping Willow)'],
+];
+
+const add = (a, b, s = 1) => a.map((x, i) => x + b[i] * s);
+
+export const closeupsSection = {
+  id: 'closeups',
+  title: 'Close-ups',
+  intro:
+    'Bark types on species trunks at about a metre, a fork, a branch collar, tree holes and a leaf cluster, as a user sees them up close.',
+  layout: (shots) => imageTable(shots, 2),
+  async shots(ctx) {
+    const shots = [];
+    const shot = async (file, caption) => {
+      await ctx.shoot(file);
+      shots.push({ file, caption });
+    };
+    const preset = (name) => ctx.presets.find((p) => p.name === name).values;
+    for (const [name, caption] of BARKS) {
+      // A straight trunk (no random bend) so the camera knows where it is.
+      const values = { ...preset(name), l0_curve_v: 0 };
+      const r = ctx.report('skeleton', values).skeleton[0].radius;
+      await ctx.open(values);
+      await ctx.view([r * 4.5, 1.7, r * 2.5], [0, 1.4, 0]);
+      await shot(`bark-${name}.png`, caption);
+    }
+    // The shifted fork of the issue (CA Black Oak, trunk only): the trunk splits at its first joint.
+    const fork = { ...preset('ca_black_oak'), levels: 1, leaves: 0, l0_curve_v: 0 };
+    const split = ctx.report('skeleton', fork).skeleton.find((s) => s.split_clone);
+    const h = split ? split.base_height : 1.2;
+    await ctx.open(fork);
+    await ctx.view([1.6, h + 0.6, 1.9], [0, h + 0.3, 0]);
+    await shot('fork.png', 'Fork: CA Black Oak trunk splitting (levels=1, leaves off)');
+    // A branch collar on the default tree's straight trunk, at its lowest level-1 branch.
+    const collar = { l0_curve_v: 0, leaves: 0 };
+    const stems = ctx.report('skeleton', collar).skeleton;
+    const branch = stems
+      .filter((s) => s.level === 1)
+      .sort((a, b) => a.base_height - b.base_height)[0];
+    const r0 = stems[0].radius;
+    const at = branch ? branch.base_height : 5;
+    await ctx.open(collar);
+    await ctx.view([r0 * 9, at + r0 * 2, r0 * 6], [0, at, 0]);
+    await shot('collar.png', 'Branch collars on the default tree (leaves off)');
+    // Tree holes: the issue's (hole_count=3, hole_size=0.7, hole_depth=0.8) and the default size.
+    for (const [file, values, caption] of [
+      [
+        'hole.png',
+        { hole_count: 3, hole_size: 0.7, hole_depth: 0.8 },
+        'Tree hole (hole_count=3, hole_size=0.7, hole_depth=0.8)',
+      ],
+      [
+        'hole-default.png',
+        { hole_count: 3 },
+        'Tree hole at the default size and depth (hole_count=3)',
+      ],
+    ]) {
+      const holes = ctx.report('mesh', values).hole_list ?? [];
+      const hole =
+        holes.filter((x) => x.centre[1] > 0.5).sort((a, b) => b.radius - a.radius)[0] ?? holes[0];
+      if (!hole) continue;
+      await ctx.open(values);
+      const away = Math.max(hole.radius * 5, 0.7);
+      const eye = add(add(hole.centre, hole.normal, away), [0, 1, 0], away * 0.3);
+      await ctx.view(eye, hole.centre);
+      await shot(file, caption);
+    }
+    // A leaf cluster on the oak, from just outside the crown's shell.
+    const cam = await ctx.open(preset('oak'));
+    const [p, t] = [cam.position, cam.target];
+    await ctx.view(
+      add(t, add(p, t, -1), 0.42),
+      add(add(t, add(p, t, -1), 0.3), [0, 1, 0], 0.1 * t[1]),
+    );
+    await shot('leaves.png', 'A leaf cluster on the Oak: crown-depth shading, translucency');
+    return shots;
+  },
+};

@@ -1,0 +1,167 @@
+/**
+ * The one definition of Sylva's light, shared by the viewer (`TreeViewer`), the forest
+ * (`ForestScene`) and the impostor baker (`lod/impostor.ts`): a procedural sky (gradient plus sun
+ * glow, `shaders/sky.*.glsl`, no downloaded HDR) rendered once through three's PMREM into an
+ * image-based environment light, a sun with soft shadows fitted to the tree, and leaf
+ * translucency when the sun is behind a leaf (the WebGL maple notes' light-oriented leaves,
+ * reference 003, face the sky; seen from below against the sun they glow). The crown-depth term
+ * that darkens inner leaves and bark comes from the core (`crown_shade.rs`, `mesh::shade`).
+ */
+import {
+  BackSide,
+  Color,
+  DirectionalLight,
+  Mesh,
+  PMREMGenerator,
+  Scene,
+  ShaderMaterial,
+  SphereGeometry,
+  Vector3,
+  type Material,
+  type Sphere,
+  type Texture,
+  type WebGLRenderer,
+} from 'three';
+import leafTranslucency from './shaders/leafTranslucency.frag.glsl?raw';
+import skyFrag from './shaders/sky.frag.glsl?raw';
+import skyVert from './shaders/sky.vert.glsl?raw';
+
+/** Direction toward the sun (world, y up). */
+export const SUN_DIRECTION = new Vector3(0.5, 1, 0.35).normalize();
+/** Sun colour and intensity. */
+export const SUN_COLOR = '#fff3dc';
+export const SUN_INTENSITY = 2.6;
+/** Sky colours (linear): zenith, horizon and ground bounce. */
+export const SKY_ZENITH = new Color(0.42, 0.53, 0.7);
+export const SKY_HORIZON = new Color(0.8, 0.8, 0.78);
+export const SKY_GROUND = new Color(0.22, 0.18, 0.13);
+/** Strength of the sky's image-based light. */
+export const ENVIRONMENT_INTENSITY = 0.75;
+/** Face size (texels) of the prefiltered sky. */
+export const ENVIRONMENT_SIZE = 64;
+/** How much sunlight a leaf lets through (0..1). */
+export const LEAF_TRANSLUCENCY = 0.45;
+/** Shadow map edge (texels) and blur radius: soft, affordable on software WebGL. */
+export const SHADOW_MAP_SIZE = 1024;
+export const SHADOW_RADIUS = 6;
+
+/** The procedural sky's material (for the PMREM bake). */
+export function skyMaterial(): ShaderMaterial {
+  return new ShaderMaterial({
+    vertexShader: skyVert,
+    fragmentShader: skyFrag,
+    side: BackSide,
+    depthWrite: false,
+    uniforms: {
+      uZenith: { value: SKY_ZENITH },
+      uHorizon: { value: SKY_HORIZON },
+      uGround: { value: SKY_GROUND },
+      uSunDir: { value: SUN_DIRECTION },
+      uSunGlow: { value: new Color(SUN_COLOR).multiplyScalar(0.35) },
+    },
+  });
+}
+
+/** Renders the procedural sky once into a prefiltered (PMREM) environment map. */
+export function skyEnvironment(renderer: WebGLRenderer): Texture {
+  const scene = new Scene();
+  const geometry = new SphereGeometry(10, 32, 16);
+  const material = skyMaterial();
+  scene.add(new Mesh(geometry, material));
+  const pmrem = new PMREMGenerator(renderer);
+  // A smooth gradient needs no detail: 64² faces bake quickly on software WebGL.
+  const target = pmrem.fromScene(scene, 0, 0.1, 100, { size: ENVIRONMENT_SIZE });
+  pmrem.dispose();
+  geometry.dispose();
+  material.dispose();
+  return target.texture;
+}
+
+/** The sun and sky of one scene. */
+export class SceneLights {
+  readonly sun = new DirectionalLight(SUN_COLOR, SUN_INTENSITY);
+  private readonly environment: Texture;
+
+  constructor(
+    private readonly scene: Scene,
+    renderer: WebGLRenderer,
+    options: { shadows: boolean },
+  ) {
+    this.environment = skyEnvironment(renderer);
+    scene.environment = this.environment;
+    scene.environmentIntensity = ENVIRONMENT_INTENSITY;
+    this.sun.position.copy(SUN_DIRECTION);
+    if (options.shadows) {
+      this.sun.castShadow = true;
+      this.sun.shadow.mapSize.set(SHADOW_MAP_SIZE, SHADOW_MAP_SIZE);
+      this.sun.shadow.radius = SHADOW_RADIUS;
+      this.sun.shadow.bias = -0.0005;
+      this.sun.shadow.normalBias = 0.02;
+    }
+    scene.add(this.sun, this.sun.target);
+  }
+
+  /** Aims the sun at a tree and fits its shadow camera (and so the shadows' softness) to it. */
+  fit(sphere: Sphere): void {
+    const r = Math.max(sphere.radius, 0.01);
+    this.sun.target.position.set(sphere.center.x, 0, sphere.center.z);
+    this.sun.position.copy(sphere.center).addScaledVector(SUN_DIRECTION, r * 3);
+    const cam = this.sun.shadow.camera;
+    cam.left = -r * 1.3;
+    cam.right = r * 1.3;
+    cam.top = r * 1.3;
+    cam.bottom = -r * 1.3;
+    cam.near = r * 0.05;
+    cam.far = r * 6;
+    cam.updateProjectionMatrix();
+  }
+
+  dispose(): void {
+    this.environment.dispose();
+    this.scene.environment = null;
+  }
+}
+
+/** The impostor's light model (linear colours × intensity, direction toward the sun). */
+export interface ImpostorLights {
+  sunDir: Vector3;
+  sunColor: Color;
+  sky: Color;
+  ground: Color;
+}
+
+/** These lights for the impostor's hemisphere + sun model. */
+export function impostorLights(): ImpostorLights {
+  return {
+    sunDir: SUN_DIRECTION.clone(),
+    sunColor: new Color(SUN_COLOR).multiplyScalar(SUN_INTENSITY),
+    sky: SKY_ZENITH.clone()
+      .lerp(SKY_HORIZON, 0.5)
+      .multiplyScalar(ENVIRONMENT_INTENSITY * 1.6),
+    ground: SKY_GROUND.clone().multiplyScalar(ENVIRONMENT_INTENSITY * 1.6),
+  };
+}
+
+const TRANSLUCENCY_MARKER = '// sylva-leaf-translucency';
+
+/** Adds leaf translucency to a (double-sided) MeshStandardMaterial, after any earlier patch. */
+export function applyLeafTranslucency(material: Material): void {
+  const previous = material.onBeforeCompile.bind(material);
+  const previousKey = material.customProgramCacheKey.bind(material);
+  material.onBeforeCompile = (shader, renderer) => {
+    previous(shader, renderer);
+    if (shader.fragmentShader.includes(TRANSLUCENCY_MARKER)) return;
+    const at = '#include <aomap_fragment>';
+    if (!shader.fragmentShader.includes(at))
+      throw new Error('leaf translucency: no <aomap_fragment>');
+    shader.fragmentShader = shader.fragmentShader
+      .replace(
+        '#include <common>',
+        `#include <common>\n${TRANSLUCENCY_MARKER}\nuniform float uLeafTranslucency;`,
+      )
+      .replace(at, `${leafTranslucency}\n${at}`);
+    shader.uniforms.uLeafTranslucency = { value: LEAF_TRANSLUCENCY };
+  };
+  material.customProgramCacheKey = () => `${previousKey()}-sylva-leaf-light`;
+  material.needsUpdate = true;
+}
