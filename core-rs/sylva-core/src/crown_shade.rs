@@ -138,7 +138,10 @@ fn accumulate_sky(depth: &[f32], n: [usize; 3], d: Vec3, sky: &mut [f32]) {
                 let (fx, fz) = (x as f32 + step.x, z as f32 + step.z);
                 let up = if y + 1 < ny { bilinear(&above, nx, nz, fx, fz) } else { 0.0 };
                 let own = depth[at(y, x, z)] * len;
-                sky[at(y, x, z)] += crate::math::exp(-(0.5 * own + up));
+                // exp(-0) is 1 exactly: most cells (the margin, the air above and around the
+                // crown) see the open sky, and the software exp is the sweep's cost.
+                let optical = 0.5 * own + up;
+                sky[at(y, x, z)] += if optical == 0.0 { 1.0 } else { crate::math::exp(-optical) };
                 here[z * nx + x] = own + up;
             }
         }
@@ -164,7 +167,12 @@ fn bilinear(layer: &[f32], nx: usize, nz: usize, fx: f32, fz: f32) -> f32 {
 
 /// Multiplies each leaf's RGB tint (3 floats per leaf, matching `matrices`) by its crown light.
 pub fn darken(matrices: &[f32], colors: &mut [f32]) {
-    let Some(field) = CrownLight::from_leaves(matrices) else { return };
+    darken_with(CrownLight::from_leaves(matrices).as_ref(), matrices, colors);
+}
+
+/// [`darken`] with the field of these leaves already built (`None`: no leaves, nothing to do).
+pub fn darken_with(field: Option<&CrownLight>, matrices: &[f32], colors: &mut [f32]) {
+    let Some(field) = field else { return };
     for (m, c) in matrices.chunks_exact(16).zip(colors.chunks_exact_mut(3)) {
         let l = CrownLight::light(field.sky_at(Vec3::new(m[12], m[13], m[14]) + 0.5 * Vec3::new(m[4], m[5], m[6])));
         c.iter_mut().for_each(|v| *v *= l);

@@ -27,6 +27,7 @@
 //! leaf units to metres. Randomness: the named stream `"foliage"`. Deterministic: the same
 //! skeleton and parameters give byte-identical buffers.
 
+use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::growth::GrowthMode;
 use crate::leaf::{self, options::LeafLod, texture::LeafTexture, Leaf};
@@ -235,6 +236,12 @@ pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
 /// itself (`mesh` empty, `leaf` none until [`dress`]). Reads the skeleton and the Foliage
 /// parameters; the leaf-shape parameters never change a placement.
 pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
+    place_lit(skeleton, p).map(|(f, _)| f)
+}
+
+/// [`place`], also returning the leaves' light field ([`crate::crown_shade`], `None` for a bare
+/// tree), which has darkened their tints and shades the bark ([`crate::mesh::shade`]).
+pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
     let spans = spans(skeleton, p);
     let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
     let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
@@ -243,7 +250,7 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
     }
     let bare = Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None };
     if need == 0 {
-        return Ok(bare);
+        return Ok((bare, None));
     }
     let mut rng = Rng::new(u64::from(p.seed), "foliage");
     let need_n = need as usize;
@@ -298,8 +305,9 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
         }
     }
     // Inner leaves see less sky: the crown-depth term multiplies into the tints.
-    crate::crown_shade::darken(&matrices, &mut colors);
-    Ok(Foliage { matrices, colors, ..bare })
+    let light = CrownLight::from_leaves(&matrices);
+    crate::crown_shade::darken_with(light.as_ref(), &matrices, &mut colors);
+    Ok((Foliage { matrices, colors, ..bare }, light))
 }
 
 /// The leaf stage: the leaf of the Leaf parameters (generated once per leaf shape, see

@@ -25,6 +25,7 @@
 //! out, and only describes a full result.
 
 use crate::clock::Clock;
+use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::{self, Foliage};
 use crate::mesh::holes::Hole;
@@ -98,6 +99,8 @@ pub struct Bark {
     pub bounds: Bounds,
     /// A preview sweep (lower quality, no welds, no holes), not the full bark.
     pub preview: bool,
+    /// The occlusion (`mesh.shade`) is left from the previous leaves: a drag deferred it.
+    pub shade_stale: bool,
     /// `mesh.content_hash()`, once computed.
     hash: Option<u64>,
 }
@@ -124,6 +127,8 @@ pub struct Current {
     pub bark: Bark,
     /// The leaves.
     pub foliage: Foliage,
+    /// The leaves' light field (it darkened their tints and shades the bark); `None` when bare.
+    pub light: Option<CrownLight>,
     /// What the last update changed.
     pub changes: Changes,
     /// Stage times of the last update.
@@ -133,9 +138,9 @@ pub struct Current {
 }
 
 impl Current {
-    /// Whether the bark is a preview.
+    /// Whether this is a preview: a preview bark, or a bark shaded for the previous leaves.
     pub fn is_preview(&self) -> bool {
-        self.bark.preview
+        self.bark.preview || self.bark.shade_stale
     }
 
     /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
@@ -151,7 +156,7 @@ impl Current {
         let c = self.changes;
         meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });
         meta["total_ms"] = serde_json::json!(t.skeleton + t.mesh + t.foliage);
-        meta["preview"] = serde_json::json!(b.preview);
+        meta["preview"] = serde_json::json!(self.is_preview());
         meta["bark_type"] = serde_json::json!(self.params.bark_type as u8);
         meta["from"] = serde_json::json!(self.from);
         meta["changes"] = serde_json::json!({
@@ -167,10 +172,12 @@ struct Fresh {
     params: TreeParams,
     skeleton: Option<SkeletonOut>,
     bark: Option<Bark>,
-    placements: Option<Foliage>,
+    placements: Option<(Foliage, Option<CrownLight>)>,
     leaf: Option<LeafMesh>,
     /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
     shade: Option<Vec<u8>>,
+    /// Whether the bark's occlusion is left from other leaves afterwards.
+    shade_stale: bool,
     changes: Changes,
     times: StageTimes,
     from: Stage,
@@ -181,33 +188,32 @@ type LeafMesh = (TreeMesh, Option<std::sync::Arc<crate::leaf::Leaf>>);
 impl Fresh {
     /// The new current tree: fresh stages, the rest moved (not copied) out of `prev`.
     fn assemble(self, prev: Option<Current>) -> Current {
-        let (skeleton, mut bark, foliage) = match prev {
-            Some(c) => (self.skeleton.unwrap_or(c.skeleton), self.bark.unwrap_or(c.bark), {
-                let mut f = self.placements.unwrap_or(c.foliage);
-                if let Some((mesh, leaf)) = self.leaf {
-                    (f.mesh, f.leaf) = (mesh, leaf);
-                }
-                f
-            }),
-            None => {
-                let mut f = self.placements.expect("a first update places the leaves");
-                (f.mesh, f.leaf) = self.leaf.expect("a first update dresses the leaves");
-                (
-                    self.skeleton.expect("a first update builds the skeleton"),
-                    self.bark.expect("a first update sweeps the bark"),
-                    f,
-                )
-            }
+        let (skeleton, mut bark, (mut foliage, light)) = match prev {
+            Some(c) => (
+                self.skeleton.unwrap_or(c.skeleton),
+                self.bark.unwrap_or(c.bark),
+                self.placements.unwrap_or((c.foliage, c.light)),
+            ),
+            None => (
+                self.skeleton.expect("a first update builds the skeleton"),
+                self.bark.expect("a first update sweeps the bark"),
+                self.placements.expect("a first update places the leaves"),
+            ),
         };
+        if let Some((mesh, leaf)) = self.leaf {
+            (foliage.mesh, foliage.leaf) = (mesh, leaf);
+        }
         if let Some(shade) = self.shade {
             bark.mesh.shade = shade;
             bark.hash = None;
         }
+        bark.shade_stale = self.shade_stale;
         Current {
             params: self.params,
             skeleton,
             bark,
             foliage,
+            light,
             changes: self.changes,
             times: self.times,
             from: self.from,
@@ -221,6 +227,8 @@ pub struct Session {
     current: Option<Current>,
     /// Time of the last full bark sweep (ms), the predictor of the next one.
     last_full_mesh_ms: Option<f64>,
+    /// Time of the last bark occlusion (ms): a drag defers it when it is over half its budget.
+    last_shade_ms: Option<f64>,
 }
 
 /// The first stage whose parameters differ between `a` and `b` (`Viewer` when only viewer
@@ -256,6 +264,7 @@ impl Session {
     pub fn clear(&mut self) {
         self.current = None;
         self.last_full_mesh_ms = None;
+        self.last_shade_ms = None;
     }
 
     /// Brings the tree to `params`, rerunning from the first stage that changed. On an error
@@ -315,21 +324,35 @@ impl Session {
             self.last_full_mesh_ms = Some(times.mesh);
         }
 
-        let placements = (from <= Stage::Foliage).then(|| foliage::place(&skel.skeleton, p)).transpose()?;
-        let placed = placements.as_ref().or(prev.map(|c| &c.foliage)).expect("a first update places the leaves");
+        let placements = (from <= Stage::Foliage).then(|| foliage::place_lit(&skel.skeleton, p)).transpose()?;
+        let (placed, light) = match (&placements, prev) {
+            (Some((f, l)), _) => (f, l.as_ref()),
+            (None, Some(c)) => (&c.foliage, c.light.as_ref()),
+            (None, None) => unreachable!("a first update places the leaves"),
+        };
         let leaf = (from <= Stage::Leaf).then(|| foliage::leaf_mesh(placed.count(), p)).transpose()?;
-        // The bark's occlusion reads the bark, its holes and the leaves: again when any changed
-        // (a preview bark goes without it).
-        let shade = if bark.is_none() && placements.is_none() {
+        // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
+        // A preview bark goes without it; a drag of the leaves keeps the old one meanwhile
+        // (a preview) when computing it would take over half the budget.
+        let b = bark.as_ref().or(prev.map(|c| &c.bark)).expect("a first update sweeps the bark");
+        let stale = bark.is_none() && prev.is_some_and(|c| c.bark.shade_stale);
+        let defer = match quality {
+            Quality::Preview { budget_ms } => self.last_shade_ms.is_some_and(|ms| ms > budget_ms / 2.0),
+            Quality::Full => false,
+        };
+        let shade = if b.preview {
+            bark.is_some().then(Vec::new)
+        } else if bark.is_none() && placements.is_none() && !stale {
+            None
+        } else if bark.is_none() && defer {
             None
         } else {
-            let b = bark.as_ref().or(prev.map(|c| &c.bark)).expect("a first update sweeps the bark");
-            Some(if b.preview {
-                Vec::new()
-            } else {
-                mesh::shade::occlusion(&b.mesh, &b.holes, &placed.matrices, p.hole_size)
-            })
+            let t = clock.now_ms();
+            let shade = mesh::shade::occlusion_with(&b.mesh, &b.holes, light, p.hole_size);
+            self.last_shade_ms = Some(clock.now_ms() - t);
+            Some(shade)
         };
+        let shade_stale = !b.preview && shade.is_none() && (stale || (bark.is_none() && placements.is_some()));
         times.foliage = clock.now_ms() - t2;
 
         let changes = match prev {
@@ -339,13 +362,13 @@ impl Session {
                 bark: bark.is_some(),
                 placements: placements
                     .as_ref()
-                    .is_some_and(|f| f.matrices != c.foliage.matrices || f.colors != c.foliage.colors),
+                    .is_some_and(|(f, _)| f.matrices != c.foliage.matrices || f.colors != c.foliage.colors),
                 leaf_mesh: leaf.as_ref().is_some_and(|(m, _)| *m != c.foliage.mesh),
                 leaf: leaf.as_ref().is_some_and(|(_, l)| l.as_ref().map_or(0, |l| l.hash) != c.foliage.leaf_hash()),
                 shade: shade.as_ref().is_some_and(|s| *s != c.bark.mesh.shade),
             },
         };
-        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, shade, changes, times, from })
+        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, shade, shade_stale, changes, times, from })
     }
 
     /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),
@@ -353,7 +376,7 @@ impl Session {
     /// while the bark is a preview.
     pub fn hash(&mut self) -> Option<u64> {
         let c = self.current.as_mut()?;
-        if c.bark.preview {
+        if c.is_preview() {
             return None;
         }
         let bark = *c.bark.hash.get_or_insert_with(|| c.bark.mesh.content_hash());
@@ -410,7 +433,7 @@ fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
     let mut mesh = built.mesh;
     let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
     let bounds = mesh.bounds();
-    Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, hash: None })
+    Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, shade_stale: false, hash: None })
 }
 
 /// A preview bark: [`PREVIEW_QUALITY`] times the Mesh Quality, separate tubes, no holes.

@@ -185,3 +185,24 @@ fn an_error_keeps_the_previous_tree() {
     assert!(!cur.changes.bark);
     assert_eq!(session.hash(), Some(generate(&q).unwrap().hash));
 }
+
+#[test]
+fn a_leaf_drag_defers_the_bark_shade_and_the_full_tree_catches_up() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    let shade = session.current().unwrap().bark.mesh.shade.clone();
+    // A drag of the leaves (budget -1 ms: over it) keeps the bark's old occlusion meanwhile.
+    p.set("foliage_angle", 30.0).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
+    assert!(cur.is_preview() && cur.changes.placements && !cur.changes.shade && !cur.changes.bark);
+    assert_eq!(cur.bark.mesh.shade, shade, "the old shade stays while dragging");
+    assert_eq!(session.hash(), None, "a preview has no content hash");
+    // Another step of the drag: still deferred.
+    p.set("foliage_angle", 31.0).unwrap();
+    assert!(session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap().is_preview());
+    // Released: the same parameters at full quality shade the bark for the new leaves, nothing else.
+    let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    assert!(!cur.is_preview() && cur.changes.shade && !cur.changes.placements && !cur.changes.bark);
+    assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
+}

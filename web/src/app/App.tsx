@@ -244,26 +244,30 @@ export function App() {
         />
         {info === null ? <div className="loading">Loading the generator…</div> : null}
       </main>
-      {info && params ? (
-        <nav className="panel-tabs" aria-label="Panels">
-          <button
-            type="button"
-            data-testid="tab-tree"
-            aria-pressed={tab === 'tree'}
-            onClick={() => setTab('tree')}
-          >
-            Tree
-          </button>
-          <button
-            type="button"
-            data-testid="tab-leaf"
-            aria-pressed={tab === 'leaf'}
-            onClick={() => setTab('leaf')}
-          >
-            Leaf
-          </button>
-        </nav>
-      ) : null}
+      {/* The tabs and the panel take their place from the start: the stage (and the canvas)
+          keeps its size when the generator is ready, instead of a resize that waits for the
+          GPU's first frames. */}
+      <nav className="panel-tabs" aria-label="Panels">
+        <button
+          type="button"
+          data-testid="tab-tree"
+          aria-pressed={tab === 'tree'}
+          disabled={!(info && params)}
+          onClick={() => setTab('tree')}
+        >
+          Tree
+        </button>
+        <button
+          type="button"
+          data-testid="tab-leaf"
+          aria-pressed={tab === 'leaf'}
+          disabled={!(info && params)}
+          onClick={() => setTab('leaf')}
+        >
+          Leaf
+        </button>
+      </nav>
+      {info && params ? null : <aside className="panel" aria-busy="true" aria-label="Loading" />}
       {info && params && tab === 'leaf' ? (
         <LeafInspector
           registry={registry}

@@ -99,6 +99,9 @@ export class TreeViewer {
   ) {
     this.renderer = new WebGLRenderer({ antialias: true, alpha: options.alpha ?? false });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    // Checking every shader program's link status right after it is created makes the page
+    // wait for the GPU to compile it (seconds in software WebGL); production builds skip it.
+    this.renderer.debug.checkShaderErrors = import.meta.env.DEV;
     this.renderer.shadowMap.enabled = true;
     this.renderer.shadowMap.type = PCFShadowMap;
     this.renderer.domElement.dataset.testid = 'viewer-canvas';

@@ -42,12 +42,16 @@ pub fn cavity_light(hole: &Hole, stem_radius: f32, p: Vec3) -> f32 {
 /// The occlusion of every vertex of `mesh` (see the module docs); `leaf_matrices` are the
 /// foliage's instance matrices, `hole_size` the parameter the holes were cut with.
 pub fn occlusion(mesh: &TreeMesh, holes: &[Hole], leaf_matrices: &[f32], hole_size: f32) -> Vec<u8> {
-    let crown = CrownLight::from_leaves(leaf_matrices);
+    occlusion_with(mesh, holes, CrownLight::from_leaves(leaf_matrices).as_ref(), hole_size)
+}
+
+/// [`occlusion`] with the leaves' light field already built (`None`: no leaves).
+pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight>, hole_size: f32) -> Vec<u8> {
     mesh.positions
         .chunks_exact(3)
         .map(|p| {
             let p = Vec3::new(p[0], p[1], p[2]);
-            let mut light = crown.as_ref().map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
+            let mut light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
             for h in holes {
                 light *= cavity_light(h, h.radius / hole_size.max(1e-3), p);
             }
