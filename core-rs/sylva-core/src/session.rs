@@ -342,9 +342,8 @@ impl Session {
         };
         let shade = if b.preview {
             bark.is_some().then(Vec::new)
-        } else if bark.is_none() && placements.is_none() && !stale {
-            None
-        } else if bark.is_none() && defer {
+        } else if bark.is_none() && ((placements.is_none() && !stale) || defer) {
+            // Nothing it reads changed (or a drag defers it): the bark keeps its occlusion.
             None
         } else {
             let t = clock.now_ms();
