@@ -89,13 +89,19 @@ test('leaf edits update the leaves in place; viewer-only edits regenerate nothin
   await waitForTree(page);
   const result = await page.evaluate(async () => {
     const hook = window.__sylva;
-    if (!hook?.geometries || !hook.trees) throw new Error('no debug hook');
+    if (!hook?.geometries || !hook.trees || !hook.probeFrame) throw new Error('no debug hook');
+    // Count after a drawn frame: three.js counts a geometry once it is uploaded, and under load
+    // the first frame may not have been drawn when the hash shows.
+    const drawnGeometries = () => {
+      hook.probeFrame!();
+      return hook.geometries!();
+    };
     const input = document.querySelector<HTMLInputElement>(
       'input[type="range"][data-param-id="foliage_angle"]',
     );
     const setValue = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')?.set;
     if (!input || !setValue) throw new Error('no slider');
-    const before = hook.geometries();
+    const before = drawnGeometries();
     for (let i = 1; i <= 5; i++) {
       const answered = new Promise((r) => addEventListener('sylva:applied', r, { once: true }));
       setValue.call(input, String(40 + i));
@@ -103,7 +109,7 @@ test('leaf edits update the leaves in place; viewer-only edits regenerate nothin
       await answered;
       await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
     }
-    const after = hook.geometries();
+    const after = drawnGeometries();
     const trees = hook.trees().length;
     const check = document.querySelector<HTMLInputElement>(
       '[data-testid=param-check-show_preview]',

@@ -15,14 +15,19 @@
 //!   mean leaf colour, for the browser to texture.
 //! * The **impostor** (a hemi-octahedral atlas of views) is baked in the browser from LOD0.
 //!
+//! The LOD1 and LOD2 barks carry the same crown-depth occlusion as LOD0's
+//! ([`TreeMesh::shade`], from LOD0's leaves), so a level switch does not change the bark's tone.
+//!
 //! Cloud quads are [`QUAD_FLOATS`] floats each: `centre xyz, u xyz, v xyz, rgb, density`, where
 //! `u` and `v` are the quad's half-axes (m): its corners are `centre ± u ± v`, and `density`
 //! (0.05..1) is the share of the quad the cluster's leaves cover (their summed leaf-box area over
 //! the quad area of its main plane), so the browser can draw sparse clusters sparse. Only IEEE-exact
 //! operations are used, so the buffers are byte-identical on every target.
 
+use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
+use crate::mesh::shade::occlusion_with;
 use crate::mesh::{tube, TreeMesh};
 use crate::params::TreeParams;
 use crate::skeleton::Skeleton;
@@ -172,8 +177,13 @@ pub fn generate_lods(params: &TreeParams) -> Result<TreeLods, SylvaError> {
 
 /// The reduced levels of an already generated tree (`lod0` must come from `params`).
 pub fn lods_of(lod0: Generated, params: &TreeParams) -> Result<TreeLods, SylvaError> {
-    let lod1 = build_lod1(&lod0.skeleton, &lod0.foliage, params)?;
-    let lod2 = build_lod2(&lod0.skeleton, &lod0.foliage, params)?;
+    let mut lod1 = build_lod1(&lod0.skeleton, &lod0.foliage, params)?;
+    let mut lod2 = build_lod2(&lod0.skeleton, &lod0.foliage, params)?;
+    // The reduced barks sit in LOD0's crown: the same leaves shade them (no holes are cut).
+    let light = CrownLight::from_leaves(&lod0.foliage.matrices);
+    for level in [&mut lod1, &mut lod2] {
+        level.mesh.shade = occlusion_with(&level.mesh, &[], light.as_ref(), params.hole_size);
+    }
     Ok(TreeLods { lod0, lod1, lod2 })
 }
 

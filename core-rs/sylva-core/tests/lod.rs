@@ -184,3 +184,21 @@ fn jacobi_eigen_decomposition() {
     }
     assert!((axes[0].cross(axes[1]) - axes[2]).length() < 1e-5, "right-handed");
 }
+
+/// Regression: the LOD1 and LOD2 barks had no occlusion, which the viewer's bark shader read as
+/// 0 (a black bark at LOD1, 11% off LOD0's colour). They carry one byte per vertex, shaded by the
+/// same crown as LOD0 (mean within 10% of LOD0's).
+#[test]
+fn reduced_barks_carry_the_crowns_occlusion() {
+    let p = preset("quaking_aspen");
+    let l = generate_lods(&p).unwrap();
+    let mean = |shade: &[u8]| shade.iter().map(|&b| f64::from(b)).sum::<f64>() / shade.len() as f64;
+    let base = mean(&l.lod0.mesh.shade);
+    assert_eq!(l.lod0.mesh.shade.len(), l.lod0.mesh.vertex_count());
+    for level in [&l.lod1, &l.lod2] {
+        assert_eq!(level.mesh.shade.len(), level.mesh.vertex_count());
+        let m = mean(&level.mesh.shade);
+        assert!(m < 254.0, "the crown shades the reduced bark (mean {m:.1})");
+        assert!((m / base - 1.0).abs() < 0.1, "mean occlusion {m:.1} vs LOD0 {base:.1}");
+    }
+}

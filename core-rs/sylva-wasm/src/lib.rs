@@ -318,6 +318,10 @@ impl GeneratedLods {
     pub fn indices(&self, level: usize) -> Vec<u32> {
         self.0.level(level).mesh.indices.clone()
     }
+    /// Bark occlusion of `level`, one byte per vertex (0 = no sky, 255 = open sky).
+    pub fn shade(&self, level: usize) -> Vec<u8> {
+        self.0.level(level).mesh.shade.clone()
+    }
     /// The leaf mesh of `level` (leaf units; empty for LOD2 and bare trees).
     pub fn leaf_positions(&self, level: usize) -> Vec<f32> {
         self.0.level(level).foliage.mesh.positions.clone()

@@ -41,6 +41,7 @@ export function lodsResponse(
       normals: lods.normals(i),
       uvs: lods.uvs(i),
       indices: lods.indices(i),
+      shade: lods.shade(i),
       leafPositions: lods.leaf_positions(i),
       leafNormals: lods.leaf_normals(i),
       leafUvs: lods.leaf_uvs(i),

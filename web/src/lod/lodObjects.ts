@@ -26,6 +26,7 @@ import {
   type Texture,
 } from 'three';
 import type { LeafTextureBuffers } from '../core/types';
+import { attachBarkAttributes } from '../viewer/barkLook';
 import { mulberry32 } from '../forest/layout';
 import { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from './types';
 import { wrapInstances } from '../viewer/instances';
@@ -41,6 +42,9 @@ export function barkGeometry(level: LodLevelBuffers): BufferGeometry {
   g.setAttribute('normal', new BufferAttribute(level.normals, 3));
   g.setAttribute('uv', new BufferAttribute(level.uvs, 2));
   g.setIndex(new BufferAttribute(level.indices, 1));
+  // The viewer's bark material reads the occlusion and radius attributes: without them the
+  // shader reads 0 (a black bark).
+  attachBarkAttributes(g, level.shade);
   g.computeBoundingSphere();
   return g;
 }

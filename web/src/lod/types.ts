@@ -30,6 +30,8 @@ export interface LodLevelBuffers {
   normals: Float32Array;
   uvs: Float32Array;
   indices: Uint32Array;
+  /** Bark occlusion, one byte per vertex (255 = open sky), as LOD0's `TreeMesh.shade`. */
+  shade: Uint8Array;
   leafPositions: Float32Array;
   leafNormals: Float32Array;
   leafUvs: Float32Array;
@@ -79,6 +81,7 @@ export interface WasmLods {
   leaf_indices(level: number): Uint32Array;
   leaf_matrices(level: number): Float32Array;
   leaf_colors(level: number): Float32Array;
+  shade(level: number): Uint8Array;
   cloud(level: number): Float32Array;
   leaf_texture(): Uint8Array;
   meta_json(): string;
