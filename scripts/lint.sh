@@ -7,5 +7,6 @@ cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo clippy -p sylva-wasm --target wasm32-unknown-unknown --quiet -- -D warnings
 RUSTDOCFLAGS='-D warnings' cargo doc --quiet --no-deps --workspace
 npm run lint -w web
+npx tsc --noEmit -p e2e
 npx eslint scripts eslint.config.mjs
 npx prettier --check scripts e2e eslint.config.mjs

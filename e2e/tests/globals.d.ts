@@ -7,6 +7,7 @@ interface Window {
     geometries?(): number | null;
     trees?(): { id: number; at: number; preview: boolean }[];
     pauseRendering?(paused: boolean): void;
+    probeFrame?(): number | null;
     growth?(): { markers: number; volumes: number; dragging: boolean };
   };
   /** Set by the tests' init scripts. */
