@@ -217,7 +217,10 @@ export class ForestScene {
       vertexColors: p.material !== bark,
       doubleSided: p.material !== bark,
     }));
-    const atlas = own(bakeImpostor(this.renderer, source, sphere, { frames: 8, cellPx: 64 }));
+    // Single-sampled: the forest's instanced impostors are alpha-tested, not blended by coverage.
+    const atlas = own(
+      bakeImpostor(this.renderer, source, sphere, { frames: 8, cellPx: 64, samples: 0 }),
+    );
     const imp = own(
       impostorMaterial(atlas, {
         sunDir: new Vector3(0.5, 1, 0.35).normalize(),

@@ -239,7 +239,7 @@ export class LodController {
         this.scheduleBake();
         return false;
       }
-      const material = impostorMaterial(this.atlas, viewerLights());
+      const material = impostorMaterial(this.atlas, viewerLights(), { coverage: true });
       const geometry = impostorGeometry();
       this.owned.push(material, geometry);
       const group = new Group();

@@ -3,9 +3,9 @@
  *
  * * **Bake**: the LOD0 tree is rendered from the `n × n` view directions of a hemi-octahedral
  *   grid (`hemiOct.ts`) with an orthographic camera fitted to its bounding sphere, one frame per
- *   atlas cell, into one render target with two colour attachments (one draw per frame):
- *   albedo + alpha (unlit) and object-space normals (`n · 0.5 + 0.5`, leaves' back faces
- *   flipped toward the camera).
+ *   atlas cell, into one multisampled render target with two colour attachments (one draw per
+ *   frame): albedo + coverage (unlit, premultiplied) and object-space normals (`n · 0.5 + 0.5`,
+ *   leaves' back faces flipped toward the camera, premultiplied by coverage).
  * * **Draw**: a camera-facing quad (per instance in the forest) whose vertex shader finds the
  *   3 frames around the view direction in the tree's own frame and their barycentric weights,
  *   and projects the quad's corners onto each frame's image plane along the eye ray; the fragment
@@ -61,6 +61,22 @@ export interface BakeOptions {
   frames?: number;
   /** Pixels per frame side (default 128). */
   cellPx?: number;
+  /**
+   * Multisampled bake (default 4 samples): a texel's alpha is the share of it the tree covers,
+   * so leaves and twigs thinner than a texel stay partly transparent, as LOD0 draws them.
+   */
+  samples?: number;
+}
+
+/** Impostor drawing options. */
+export interface ImpostorDrawOptions {
+  /**
+   * Partial coverage (default false): texels blend with what is behind them by the share of them
+   * the tree covers, as LOD0's sub-pixel twigs and leaves do on an antialiased canvas (the
+   * viewer's single impostor). Off, the alpha test alone decides (the forest's instanced
+   * impostors, drawn without sorting).
+   */
+  coverage?: boolean;
 }
 
 /** A baked impostor. */
@@ -173,6 +189,7 @@ export function bakeImpostor(
     magFilter: LinearFilter,
     generateMipmaps: false,
     depthBuffer: true,
+    samples: options.samples ?? 4,
   });
   const r = Math.max(sphere.radius, 1e-3);
   const camera = new OrthographicCamera(-r, r, r, -r, r * 0.25, r * 3.75);
@@ -207,7 +224,8 @@ export function bakeImpostor(
         target.viewport.copy(cell);
         target.scissor.copy(cell);
         renderer.setRenderTarget(target);
-        renderer.clear(false, true, false);
+        // Colour too: a multisampled target's samples may be discarded after each resolve.
+        renderer.clear(true, true, false);
         renderer.render(scene, camera);
       }
     }
@@ -320,6 +338,7 @@ uniform sampler2D uNormal;
 uniform float uFrames;
 uniform float uCellPx;
 uniform float uAlphaTest;
+uniform float uCoverage;
 uniform vec3 uSunDir;
 uniform vec3 uSunColor;
 uniform vec3 uSky;
@@ -341,29 +360,32 @@ vec2 atlasUv(vec2 frame, vec2 uv) {
   float e = 0.5 / uCellPx;
   return (frame + clamp(uv, e, 1.0 - e)) / uFrames;
 }
+float inside(vec2 uv) {
+  return step(0.0, uv.x) * step(uv.x, 1.0) * step(0.0, uv.y) * step(uv.y, 1.0);
+}
 void main() {
   vec2 a0 = atlasUv(vFrame0, vUv0);
   vec2 a1 = atlasUv(vFrame1, vUv1);
   vec2 a2 = atlasUv(vFrame2, vUv2);
   // A sample outside its frame's square is empty.
-  float in0 = step(0.0, vUv0.x) * step(vUv0.x, 1.0) * step(0.0, vUv0.y) * step(vUv0.y, 1.0);
-  float in1 = step(0.0, vUv1.x) * step(vUv1.x, 1.0) * step(0.0, vUv1.y) * step(vUv1.y, 1.0);
-  float in2 = step(0.0, vUv2.x) * step(vUv2.x, 1.0) * step(0.0, vUv2.y) * step(vUv2.y, 1.0);
-  vec4 c0 = texture2D(uColor, a0) * in0;
-  vec4 c1 = texture2D(uColor, a1) * in1;
-  vec4 c2 = texture2D(uColor, a2) * in2;
-  vec4 c = c0 * vWeights.x + c1 * vWeights.y + c2 * vWeights.z;
+  vec4 c0 = texture2D(uColor, a0) * inside(vUv0);
+  vec4 c1 = texture2D(uColor, a1) * inside(vUv1);
+  vec4 c2 = texture2D(uColor, a2) * inside(vUv2);
+  // Sharpened blend: one frame dominates away from the frames' borders, so parts far from the
+  // tree's centre (the trunk's foot, the crown's top) show less twice.
+  vec3 w = vWeights * vWeights * vWeights;
+  w /= max(w.x + w.y + w.z, 1e-6);
+  vec4 c = c0 * w.x + c1 * w.y + c2 * w.z;
   if (c.a < uAlphaTest) discard;
   vec3 albedo = c.rgb / max(c.a, 1e-3);
   vec4 n0 = texture2D(uNormal, a0);
   vec4 n1 = texture2D(uNormal, a1);
   vec4 n2 = texture2D(uNormal, a2);
-  vec3 nl = (n0.xyz * 2.0 - n0.a) * (c0.a * vWeights.x)
-    + (n1.xyz * 2.0 - n1.a) * (c1.a * vWeights.y)
-    + (n2.xyz * 2.0 - n2.a) * (c2.a * vWeights.z);
+  // Normals are premultiplied by coverage (the colour's alpha) in the multisampled bake.
+  vec3 nl = (n0.xyz * 2.0 - c0.a) * w.x + (n1.xyz * 2.0 - c1.a) * w.y + (n2.xyz * 2.0 - c2.a) * w.z;
   vec3 n = normalize(mat3(vRotX, vRotY, vRotZ) * nl + vec3(0.0, 1e-4, 0.0));
   vec3 irradiance = mix(uGround, uSky, n.y * 0.5 + 0.5) + uSunColor * max(dot(n, uSunDir), 0.0);
-  gl_FragColor = vec4(albedo * irradiance * RECIPROCAL_PI, 1.0);
+  gl_FragColor = vec4(albedo * irradiance * RECIPROCAL_PI, uCoverage > 0.5 ? c.a : 1.0);
 #include <tonemapping_fragment>
 #include <colorspace_fragment>
 #include <fog_fragment>
@@ -375,7 +397,12 @@ export function viewerLights(): ImpostorLights {
 }
 
 /** The impostor's material (works on a Mesh and on an InstancedMesh of the impostor quad). */
-export function impostorMaterial(atlas: ImpostorAtlas, lights: ImpostorLights): ShaderMaterial {
+export function impostorMaterial(
+  atlas: ImpostorAtlas,
+  lights: ImpostorLights,
+  options: ImpostorDrawOptions = {},
+): ShaderMaterial {
+  const coverage = options.coverage ?? false;
   const material = new ShaderMaterial({
     vertexShader: IMPOSTOR_VERTEX,
     fragmentShader: IMPOSTOR_FRAGMENT,
@@ -389,7 +416,9 @@ export function impostorMaterial(atlas: ImpostorAtlas, lights: ImpostorLights): 
         uCentre: { value: atlas.centre.clone() },
         uRadius: { value: atlas.radius },
         // Below ½: the 3-frame blend and bilinear filtering thin out leaves a pixel or two wide.
-        uAlphaTest: { value: 0.35 },
+        // With coverage, a texel a quarter covered still draws, blended by its coverage.
+        uAlphaTest: { value: coverage ? 0.25 : 0.35 },
+        uCoverage: { value: coverage ? 1 : 0 },
         uSunDir: { value: lights.sunDir.clone() },
         uSunColor: { value: lights.sunColor.clone() },
         uSky: { value: lights.sky.clone() },
@@ -398,6 +427,7 @@ export function impostorMaterial(atlas: ImpostorAtlas, lights: ImpostorLights): 
     ]),
     fog: true,
     side: DoubleSide,
+    transparent: coverage,
   });
   // Set after the merge: merging clones uniform values, and render-target textures cannot be.
   material.uniforms.uColor!.value = atlas.color;

@@ -385,7 +385,10 @@ export function cloudMaterial(map: Texture): MeshStandardMaterial {
   return new MeshStandardMaterial({
     map,
     vertexColors: true,
-    alphaTest: 0.5,
+    // Blended by the clump's coverage, as LOD0's sub-pixel leaves blend with the sky behind them
+    // (an alpha test alone drew every clump solid: 14% darker than LOD0 from the same camera).
+    alphaTest: 0.15,
+    transparent: true,
     side: FrontSide,
     roughness: 0.7,
     emissive: '#ffffff',

@@ -137,8 +137,8 @@ export function impostorLights(): ImpostorLights {
     sunColor: new Color(SUN_COLOR).multiplyScalar(SUN_INTENSITY),
     sky: SKY_ZENITH.clone()
       .lerp(SKY_HORIZON, 0.5)
-      .multiplyScalar(ENVIRONMENT_INTENSITY * 1.6),
-    ground: SKY_GROUND.clone().multiplyScalar(ENVIRONMENT_INTENSITY * 1.6),
+      .multiplyScalar(ENVIRONMENT_INTENSITY * Math.PI),
+    ground: SKY_GROUND.clone().multiplyScalar(ENVIRONMENT_INTENSITY * Math.PI),
   };
 }
 
