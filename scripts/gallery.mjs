@@ -2,7 +2,8 @@
 // a fork, a branch collar, a tree hole, a leaf cluster) in the built app (web/dist, embed page,
 // headless Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under
 // 150 KB each) and writes docs/gallery.md. Each section is a module in scripts/gallery/ with
-// `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS.
+// `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS. The leaf
+// sheet (scripts/gallery-leaves.mjs, docs/gallery-leaves.md) follows (`--only leaves` alone).
 //
 // Usage: node scripts/gallery.mjs [--only SECTION_ID] [--presets a,b,c]
 import { mkdirSync, writeFileSync } from 'node:fs';
@@ -13,6 +14,7 @@ import { serve } from './preview-server.mjs';
 import { galleryContext, markdown } from './gallery/context.mjs';
 import { closeupsSection } from './gallery/closeups.mjs';
 import { presetsSection } from './gallery/presets.mjs';
+import { galleryLeaves } from './gallery-leaves.mjs';
 
 /** The gallery's sections, in page order. */
 export const SECTIONS = [presetsSection, closeupsSection];
@@ -49,6 +51,8 @@ async function main() {
     await browser.close();
     await stop();
   }
+  // The leaf sheet (docs/gallery-leaves.md): every leaf preset's SVG and rendered blade.
+  if (!only || only === 'leaves') await galleryLeaves();
 }
 
 if (process.argv[1] === fileURLToPath(import.meta.url)) {

@@ -8,7 +8,7 @@
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
 import type { Sphere, InstancedMesh } from 'three';
-import { SceneLights } from '../viewer/lighting';
+import { impostorLights, SceneLights } from '../viewer/lighting';
 import {
   Color,
   DoubleSide,
@@ -221,14 +221,8 @@ export class ForestScene {
     const atlas = own(
       bakeImpostor(this.renderer, source, sphere, { frames: 8, cellPx: 64, samples: 0 }),
     );
-    const imp = own(
-      impostorMaterial(atlas, {
-        sunDir: new Vector3(0.5, 1, 0.35).normalize(),
-        sunColor: new Color('#fff6e5').multiplyScalar(2.4),
-        sky: new Color('#e8f1ff').multiplyScalar(1.4),
-        ground: new Color('#6b5a45').multiplyScalar(1.4),
-      }),
-    );
+    // The scene's own lights (lighting.ts), as the near trees have them.
+    const imp = own(impostorMaterial(atlas, impostorLights()));
     parts.push([{ geometry: own(impostorGeometry()), material: imp }]);
     const t = lods.meta.levels.map((x) => x.triangles);
     this.varieties.push({ sphere, parts, atlas, disposables, triangles: [...t, 2] });
