@@ -130,7 +130,7 @@ fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
     }
     if let Some(path) = &a.volumes {
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
-        params.volumes = sylva_core::growth::primitives::from_json(&text).map_err(|e| e.to_string())?;
+        params.volumes = sylva_core::params::volumes::from_json(&text).map_err(|e| e.to_string())?;
     }
     Ok(params)
 }

@@ -29,11 +29,10 @@
 
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
-use crate::growth::GrowthMode;
-use crate::leaf::{self, options::LeafLod, texture::LeafTexture, Leaf};
+use crate::leaf::{self, texture::LeafTexture, Leaf};
 use crate::math;
 use crate::mesh::TreeMesh;
-use crate::params::{registry, TreeParams};
+use crate::params::{registry, GrowthMode, LeafLod, TreeParams};
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem, StemPoints};
 use glam::Vec3;

@@ -5,7 +5,7 @@
 //! report it and start a fresh instance.
 
 use std::sync::Mutex;
-use sylva_core::{mesh::bark, params::TreeParams, presets, Clock, Generated};
+use sylva_core::{mesh::bark, params::BarkType, params::TreeParams, presets, Clock, Generated};
 use wasm_bindgen::prelude::*;
 
 static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
@@ -69,14 +69,14 @@ pub fn presets_json() -> String {
 /// tangent-space normal, A = height) and occlusion-roughness-metal (R, G, B).
 #[wasm_bindgen]
 pub fn bark_maps(kind: u32, size: usize) -> Vec<u8> {
-    let m = bark::bake(bark::BarkType::from_index(kind as usize), size.clamp(16, 1024));
+    let m = bark::bake(BarkType::from_index(kind as usize), size.clamp(16, 1024));
     [m.color.rgba, m.normal.rgba, m.orm.rgba].concat()
 }
 
 /// How bark type `kind` is laid on a stem (`sylva_core::mesh::bark::BarkStyle`) as JSON.
 #[wasm_bindgen]
 pub fn bark_style_json(kind: u32) -> String {
-    bark::style_json(bark::BarkType::from_index(kind as usize))
+    bark::style_json(BarkType::from_index(kind as usize))
 }
 
 /// A generated tree. Each getter returns a fresh typed-array copy whose buffer the worker can

@@ -32,8 +32,8 @@ use quant::LANES;
 
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
-use crate::mesh::bark::BarkType;
 use crate::mesh::TreeMesh;
+use crate::params::BarkType;
 use crate::Generated;
 use glam::{Mat3, Vec3};
 use std::sync::{Arc, Mutex};

@@ -26,26 +26,10 @@
 use super::tube::sides_for;
 use super::tube::{Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
-use crate::growth::GrowthMode;
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
-use crate::param_enum::param_enum;
-use crate::params::TreeParams;
+use crate::params::{GrowthMode, TreeParams, TwigDetail};
 use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;
-
-param_enum! {
-    /// The page's step along the control circle (`stu`): 1 is the finest, 8 the coarsest.
-    TwigDetail {
-        /// Step 1: four times the sides of a tube of the same radius.
-        One = 0, "1 (finest)";
-        /// Step 2: twice the tube's sides.
-        Two = 1, "2";
-        /// Step 4: the tube's sides.
-        Four = 2, "4";
-        /// Step 8: half the tube's sides (at least 3).
-        Eight = 3, "8 (coarsest)";
-    }
-}
 
 impl TwigDetail {
     /// The step: 1, 2, 4 or 8.

@@ -8,18 +8,19 @@
 //! Every stem draws from its own generator split off its parent's, so editing a deeper level
 //! never changes the stems above it.
 
+mod envelope;
 mod stem;
 mod trace;
 mod trunk;
 
+pub use envelope::preview_profile;
 pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
 
-use crate::crown::CrownShape;
 use crate::error::SylvaError;
 use crate::math::{pow, rad, unit_or, HwSqrt};
-use crate::params::TreeParams;
+use crate::params::{CrownShape, TreeParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
@@ -50,8 +51,8 @@ pub fn min_vertices(curve_res: u32) -> u64 {
 /// parameters that make the tree (Weber & Penn's, or growth's).
 pub fn budget_error(p: &TreeParams, what: &str, need: u64) -> SylvaError {
     let lower = match p.growth_mode {
-        crate::growth::GrowthMode::Parametric => "lower Levels or Branches",
-        crate::growth::GrowthMode::SpaceColonization => {
+        crate::params::GrowthMode::Parametric => "lower Levels or Branches",
+        crate::params::GrowthMode::SpaceColonization => {
             "lower Markers or Extra Markers, raise Internode or Kill Distance"
         }
     };

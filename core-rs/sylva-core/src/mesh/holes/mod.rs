@@ -42,8 +42,8 @@ mod cut;
 mod patch;
 
 use super::TreeMesh;
-use crate::growth::GrowthMode;
 use crate::math::TAU;
+use crate::params::GrowthMode;
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
