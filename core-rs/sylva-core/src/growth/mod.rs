@@ -11,9 +11,9 @@ pub mod sca;
 pub mod volume;
 
 use crate::error::SylvaError;
-use crate::params::{CrownVolumeKind, TreeParams, VolumeGroup};
+use crate::params::{CrownVolumeKind, GrowthMode, TreeParams, VolumeGroup};
 use crate::rng::Rng;
-use crate::skeleton::{Points, Skeleton, Stem};
+use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
@@ -211,6 +211,7 @@ pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
             st.point_at(offset).1
         });
         stems.push(Stem {
+            kind: if parent_stem.is_some() { StemKind::Branch } else { StemKind::Trunk },
             level: level.min(3),
             parent: parent_stem,
             offset,
@@ -229,7 +230,7 @@ pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
         });
     }
     let crown_base = p.crown_base;
-    Skeleton { stems, scale: p.crown_base + p.crown_height, crown_base }
+    Skeleton { mode: GrowthMode::SpaceColonization, stems, scale: p.crown_base + p.crown_height, crown_base }
 }
 
 #[cfg(test)]

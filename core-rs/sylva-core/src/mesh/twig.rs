@@ -28,7 +28,7 @@ use super::tube::{Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
 use crate::params::{GrowthMode, TreeParams, TwigDetail};
-use crate::skeleton::{Skeleton, Stem};
+use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
 
 impl TwigDetail {
@@ -96,7 +96,7 @@ fn bernstein(u: f32) -> [f32; 3] {
 /// Which stems of `skeleton` are meshed as Bezier twigs (the rule in the module docs).
 pub fn mask(skeleton: &Skeleton, p: &TreeParams) -> Vec<bool> {
     let n = skeleton.stems.len();
-    if p.levels < 2 || p.growth_mode != GrowthMode::Parametric {
+    if p.levels < 2 || skeleton.mode != GrowthMode::Parametric {
         return vec![false; n];
     }
     let deepest = (p.levels - 1) as u8;
@@ -106,14 +106,13 @@ pub fn mask(skeleton: &Skeleton, p: &TreeParams) -> Vec<bool> {
             parent_of_something[i as usize] = true;
         }
     }
-    let roots = n - (p.root_count as usize).min(n);
     skeleton
         .stems
         .iter()
         .enumerate()
         .map(|(i, s)| {
             s.level == deepest
-                && i < roots
+                && s.kind != StemKind::Root
                 && !parent_of_something[i]
                 && s.taper <= 1.0
                 && s.flare == 0.0

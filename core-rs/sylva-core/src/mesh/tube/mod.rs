@@ -24,7 +24,7 @@ use super::{fork, fork_rows, holes, twig, weld, Material, MeshBuilder, TreeMesh}
 use crate::error::SylvaError;
 use crate::math::TAU;
 use crate::params::TreeParams;
-use crate::skeleton::{budget_error, Skeleton};
+use crate::skeleton::{budget_error, Skeleton, StemKind};
 use glam::Vec3;
 use rings::plan_rings;
 use std::ops::Range;
@@ -164,10 +164,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     if p.weld {
         // Forks need an even number of sides on both branches of a split.
         for (i, s) in stems.iter().enumerate() {
-            let split = |j: usize| {
-                weld::is_candidate(stems, j)
-                    && stems[j].parent.is_some_and(|q| stems[q as usize].level == stems[j].level)
-            };
+            let split = |j: usize| weld::is_candidate(stems, j) && stems[j].kind == StemKind::SplitClone;
             if split(i) {
                 let o = s.parent.map_or(i, |q| q as usize);
                 sides[o] += sides[o] % 2;
@@ -269,7 +266,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
     let mut scratch = weld::Scratch::default();
     let mut stats = WeldStats::default();
-    let is_clone = |i: usize| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level);
+    let is_clone = |i: usize| stems[i].kind == StemKind::SplitClone;
     let mut blocks: Vec<Range<u32>> = vec![0..0; n];
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
