@@ -67,6 +67,7 @@
 //! swept again as a separate tube from its parent's axis with a closed base: a **fallback**, counted in [`super::tube::WeldStats`].
 //! Deeper levels (3) are always such closed separate tubes.
 
+mod footprint;
 mod join;
 mod zip;
 
