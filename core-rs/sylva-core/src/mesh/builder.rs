@@ -26,6 +26,16 @@ pub struct VertexBlock<'a> {
     pub wind: &'a mut [f32],
 }
 
+impl VertexBlock<'_> {
+    /// Writes the position, normal and uv of the block's vertex `slot`.
+    #[inline]
+    pub fn write(&mut self, slot: usize, p: glam::Vec3, n: glam::Vec3, uv: [f32; 2]) {
+        self.positions[slot * 3..slot * 3 + 3].copy_from_slice(&p.to_array());
+        self.normals[slot * 3..slot * 3 + 3].copy_from_slice(&n.to_array());
+        self.uvs[slot * 2..slot * 2 + 2].copy_from_slice(&uv);
+    }
+}
+
 impl MeshBuilder {
     /// An empty builder with room for about `vertices` vertices and `indices` indices.
     pub fn with_capacity(vertices: usize, indices: usize) -> Self {
