@@ -176,7 +176,7 @@ fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
     if p.leaves == 0 || stems.is_empty() {
         return Vec::new();
     }
-    if p.growth_mode == GrowthMode::SpaceColonization {
+    if skeleton.mode == GrowthMode::SpaceColonization {
         return stems
             .iter()
             .enumerate()
