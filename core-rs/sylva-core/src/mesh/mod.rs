@@ -152,6 +152,8 @@ pub const WIND_STRIDE: usize = 8;
 pub const WIND_STIFFNESS: usize = 5;
 /// Index of `distance` (path length from the root) in a wind record ([`TreeMesh::wind`]).
 pub const WIND_DISTANCE: usize = 6;
+/// Index of `radius` (the local stem radius) in a wind record ([`TreeMesh::wind`]).
+pub const WIND_RADIUS: usize = 7;
 
 impl TreeMesh {
     /// Number of vertices.
