@@ -12,20 +12,9 @@ use sylva_core::params::TreeParams;
 
 /// The parameters of a leaf preset (or the defaults) with the `--set` values applied.
 fn params(preset: Option<&str>, sets: &[(String, String)]) -> Result<TreeParams, String> {
-    let mut p = match preset {
-        Some(name) => presets::find(name)
-            .ok_or_else(|| {
-                let names: Vec<&str> = presets::LEAF_PRESETS.iter().map(|p| p.name).collect();
-                format!("unknown leaf preset '{name}' (known: {})", names.join(", "))
-            })?
-            .params()
-            .map_err(|e| e.to_string())?,
-        None => TreeParams::default(),
-    };
-    for (k, v) in sets {
-        let num = super::parse_value(k, v)?;
-        p.set(k, num).map_err(|e| e.to_string())?;
-    }
+    let known: Vec<&str> = presets::LEAF_PRESETS.iter().map(|p| p.name).collect();
+    let find = |name: &str| presets::find(name).map(|p| p.params());
+    let p = super::preset_with_sets(preset, "leaf preset", &known, find, sets)?;
     leaf::validate(&p).map_err(|e| e.to_string())?;
     Ok(p)
 }

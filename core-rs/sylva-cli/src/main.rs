@@ -115,24 +115,35 @@ fn ordered_sets(m: &ArgMatches) -> Vec<(String, String)> {
 /// The tree of a command line: the preset (or the defaults), the `--seed`/`--set` values in
 /// order, and the volume primitives.
 fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
-    let mut params = match a.preset.as_deref() {
-        Some(name) => presets::find(name)
-            .ok_or_else(|| {
-                let names: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
-                format!("unknown preset '{name}' (known: {})", names.join(", "))
-            })?
-            .params()
+    let known: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
+    let find = |name: &str| presets::find(name).map(|p| p.params());
+    let mut params = preset_with_sets(a.preset.as_deref(), "preset", &known, find, &a.in_order)?;
+    if let Some(path) = &a.volumes {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
+        params.volumes = sylva_core::params::volumes::from_json(&text).map_err(|e| e.to_string())?;
+    }
+    Ok(params)
+}
+
+/// The parameters of preset `name` (or the defaults) with `sets` applied in order. `find` looks
+/// a preset up; an unknown one is an error `unknown {what} 'name' (known: ...)` listing `known`.
+fn preset_with_sets<E: std::fmt::Display>(
+    name: Option<&str>,
+    what: &str,
+    known: &[&str],
+    find: impl Fn(&str) -> Option<Result<TreeParams, E>>,
+    sets: &[(String, String)],
+) -> Result<TreeParams, String> {
+    let mut p = match name {
+        Some(name) => find(name)
+            .ok_or_else(|| format!("unknown {what} '{name}' (known: {})", known.join(", ")))?
             .map_err(|e| e.to_string())?,
         None => TreeParams::default(),
     };
-    for (k, v) in &a.in_order {
-        params.set(k, parse_value(k, v)?).map_err(|e| e.to_string())?;
+    for (k, v) in sets {
+        p.set(k, parse_value(k, v)?).map_err(|e| e.to_string())?;
     }
-    if let Some(path) = &a.volumes {
-        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
-        params.volumes = sylva_core::growth::primitives::from_json(&text).map_err(|e| e.to_string())?;
-    }
-    Ok(params)
+    Ok(p)
 }
 
 /// A `--set` value: a number, `true`/`false`, or an enum option label.

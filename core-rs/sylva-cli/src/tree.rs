@@ -77,7 +77,7 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
                     "length": s.length,
                     "radius": s.radius,
                     "down_angle": s.down_angle,
-                    "split_clone": s.chain_start > 0.0,
+                    "split_clone": s.kind == sylva_core::skeleton::StemKind::SplitClone,
                 })
             })
             .collect();

@@ -4,29 +4,7 @@
 //! preview in the app draws [`envelope_profile`], which calls this very function.
 
 use crate::math::{sin, PI};
-use crate::param_enum::param_enum;
-
-param_enum! {
-    /// The eight crown envelopes of the Crown Shape guide, in Weber & Penn's numbering.
-    CrownShape {
-        /// Christmas tree: longest branches at the crown base (fir, spruce).
-        Conical = 0, "Conical";
-        /// Ball: longest in the middle (oak, maple).
-        Spherical = 1, "Spherical";
-        /// Dome: longest at the base, rounding to the top (umbrella trees).
-        Hemispherical = 2, "Hemispherical";
-        /// All branches the same length (the default).
-        Cylindrical = 3, "Cylindrical";
-        /// A gentle taper from base to top.
-        TaperedCylindrical = 4, "Tapered Cylindrical";
-        /// Widest at 70% of the crown from the top, pointed tip (cedar, cypress).
-        Flame = 5, "Flame";
-        /// Widest at the top: fan or mushroom.
-        InverseConical = 6, "Inverse Conical";
-        /// A softer flame.
-        TendFlame = 7, "Tend Flame";
-    }
-}
+use crate::params::CrownShape;
 
 impl CrownShape {
     /// Weber & Penn's ShapeRatio(shape, r) for `r` in [0, 1] (1 = crown base, 0 = top).
@@ -83,59 +61,7 @@ pub fn envelope_profile(shape: CrownShape, samples: usize) -> Vec<[f32; 2]> {
         .collect()
 }
 
-/// The crown envelope of a generated tree for the viewer's Show Preview: pairs
-/// `[height, radius]` (m, bottom to top) of a solid of revolution around the vertical axis that
-/// holds every level-1 branch. At each attachment height on the trunk (and its split clones)
-/// the longest possible level-1 branch is `L_trunk * (l1_length + l1_length_v) *
-/// ShapeRatio(shape, r)`, the very function the generator uses; the branch reaches at most a
-/// sphere of that radius around its attachment point, and the profile is the outline of the
-/// union of those spheres.
-pub fn preview_profile(
-    skeleton: &crate::skeleton::Skeleton,
-    p: &crate::params::TreeParams,
-    samples: usize,
-) -> Vec<[f32; 2]> {
-    let l1 = &p.level[1];
-    let max_len = l1.length + l1.length_v;
-    // (centre, reach) of the attachment spheres.
-    let mut spheres: Vec<(glam::Vec3, f32)> = Vec::new();
-    for stem in skeleton.stems.iter().filter(|s| s.level == 0) {
-        let chain = stem.chain_length;
-        let span = chain - skeleton.crown_base;
-        for i in 0..=48 {
-            let z = i as f32 / 48.0;
-            let along = stem.chain_start * chain + z * stem.length;
-            if along < skeleton.crown_base || span <= 0.0 {
-                continue;
-            }
-            let r = (chain - along) / span;
-            let (c, _) = stem.sample(z);
-            // Inflated by the sampling step, so attachment points between samples are covered.
-            spheres.push((c, chain * max_len * p.shape.ratio(r) + stem.length / 48.0));
-        }
-    }
-    if spheres.is_empty() || p.levels < 2 {
-        return Vec::new();
-    }
-    let lo = spheres.iter().map(|(c, l)| c.y - l).fold(f32::INFINITY, f32::min).max(0.0);
-    let hi = spheres.iter().map(|(c, l)| c.y + l).fold(f32::NEG_INFINITY, f32::max);
-    let n = samples.max(3);
-    (0..n)
-        .map(|i| {
-            let y = lo + (hi - lo) * i as f32 / (n - 1) as f32;
-            let r = spheres
-                .iter()
-                .filter_map(|(c, l)| {
-                    let dy = y - c.y;
-                    (dy.abs() <= *l).then(|| (c.x * c.x + c.z * c.z).sqrt() + (l * l - dy * dy).sqrt())
-                })
-                .fold(0.0f32, f32::max);
-            [y, r]
-        })
-        .collect()
-}
-
-/// Radius of a profile from [`preview_profile`] at height `y` (linear between samples; 0 outside).
+/// Radius of a profile from [`crate::skeleton::preview_profile`] at height `y` (linear between samples; 0 outside).
 pub fn profile_radius(profile: &[[f32; 2]], y: f32) -> f32 {
     profile
         .windows(2)

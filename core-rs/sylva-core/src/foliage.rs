@@ -29,11 +29,10 @@
 
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
-use crate::growth::GrowthMode;
-use crate::leaf::{self, options::LeafLod, texture::LeafTexture, Leaf};
+use crate::leaf::{self, texture::LeafTexture, Leaf};
 use crate::math;
 use crate::mesh::TreeMesh;
-use crate::params::{registry, TreeParams};
+use crate::params::{registry, GrowthMode, LeafLod, TreeParams};
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem, StemPoints};
 use glam::Vec3;
@@ -177,7 +176,7 @@ fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
     if p.leaves == 0 || stems.is_empty() {
         return Vec::new();
     }
-    if p.growth_mode == GrowthMode::SpaceColonization {
+    if skeleton.mode == GrowthMode::SpaceColonization {
         return stems
             .iter()
             .enumerate()

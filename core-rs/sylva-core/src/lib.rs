@@ -32,7 +32,6 @@ pub mod lod;
 pub mod math;
 pub mod mesh;
 pub mod par;
-pub mod param_enum;
 pub mod params;
 pub mod presets;
 pub mod rng;
@@ -40,10 +39,9 @@ pub mod session;
 pub mod skeleton;
 
 pub use clock::Clock;
-pub use crown::CrownShape;
 pub use error::SylvaError;
 pub use mesh::{Bounds, Material, MeshGroup, TreeMesh};
-pub use params::{registry, ParamSpec, TreeParams};
+pub use params::{registry, CrownShape, ParamSpec, TreeParams};
 
 use serde::Serialize;
 
@@ -83,7 +81,7 @@ pub struct Generated {
     pub hash: u64,
     /// Counts and timings.
     pub stats: Stats,
-    /// Crown envelope for the viewer's preview: `[height, radius]` pairs ([`crown::preview_profile`]).
+    /// Crown envelope for the viewer's preview: `[height, radius]` pairs ([`skeleton::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
     /// Growth mode only: the markers sampled in the crown at the start (for display).
     pub markers: Vec<glam::Vec3>,
@@ -92,7 +90,7 @@ pub struct Generated {
     /// The tree holes cut into the bark (where, how big, found by which method).
     pub holes: Vec<mesh::holes::Hole>,
     /// The bark pattern ([`mesh::bark`]): the exporters bake its textures.
-    pub bark: mesh::bark::BarkType,
+    pub bark: params::BarkType,
 }
 
 impl Generated {

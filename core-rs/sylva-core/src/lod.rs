@@ -234,7 +234,7 @@ pub fn main_stems(skeleton: &Skeleton) -> Skeleton {
         kept.parent = parent;
         stems.push(kept);
     }
-    Skeleton { stems, scale: skeleton.scale, crown_base: skeleton.crown_base }
+    Skeleton { mode: skeleton.mode, stems, scale: skeleton.scale, crown_base: skeleton.crown_base }
 }
 
 /// The leaf mesh one step lighter than `mesh`: blade → billboard cloud → card.

@@ -31,9 +31,9 @@ use crate::foliage::{self, Foliage};
 use crate::mesh::holes::Hole;
 use crate::mesh::tube::WeldStats;
 use crate::mesh::{self, Bounds, TreeMesh};
-use crate::params::{registry, Stage, TreeParams};
+use crate::params::{registry, GrowthMode, Stage, TreeParams};
 use crate::skeleton::Skeleton;
-use crate::{crown, growth, skeleton, Generated, Stats, ENVELOPE_SAMPLES};
+use crate::{growth, skeleton, Generated, Stats, ENVELOPE_SAMPLES};
 
 /// Mesh Quality factor of a preview bark (never below the parameter's minimum).
 pub const PREVIEW_QUALITY: f32 = 0.5;
@@ -82,7 +82,7 @@ pub struct SkeletonOut {
     pub skeleton: Skeleton,
     /// Growth mode: the markers sampled at the start.
     pub markers: Vec<glam::Vec3>,
-    /// Crown envelope profile ([`crown::preview_profile`]).
+    /// Crown envelope profile ([`skeleton::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
 }
 
@@ -416,13 +416,13 @@ impl Session {
 /// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
 fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {
     let (skeleton, markers) = match p.growth_mode {
-        growth::GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
-        growth::GrowthMode::SpaceColonization => {
+        GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
+        GrowthMode::SpaceColonization => {
             let grown = growth::grow_with_progress(p, progress)?;
             (growth::skeleton(p, &grown), grown.markers)
         }
     };
-    let envelope = crown::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
+    let envelope = skeleton::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
     Ok(SkeletonOut { skeleton, markers, envelope })
 }
 

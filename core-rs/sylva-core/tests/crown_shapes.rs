@@ -1,7 +1,8 @@
 //! Issue 3: crown shapes, Angle Spread and the envelope preview, checked on the formulas and on
 //! generated trees (silhouettes rather than exact floats).
 
-use sylva_core::crown::{preview_profile, profile_radius};
+use sylva_core::crown::profile_radius;
+use sylva_core::skeleton::preview_profile;
 use sylva_core::skeleton::{self, Skeleton};
 use sylva_core::{CrownShape, TreeParams};
 

@@ -491,7 +491,7 @@ fn bark_type_changes_the_exported_textures_and_the_hash() {
     p.leaves = 0;
     let opts = ExportOptions::from_json(r#"{"bark_texture_size":32}"#).unwrap();
     let mut seen = Vec::new();
-    for &kind in sylva_core::mesh::bark::BarkType::ALL {
+    for &kind in sylva_core::params::BarkType::ALL {
         p.bark_type = kind;
         let g = generate(&p).unwrap();
         let glb = parse(&export::to_glb(&g, &opts));

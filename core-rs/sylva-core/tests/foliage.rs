@@ -3,8 +3,8 @@
 
 use glam::Vec3;
 use sylva_core::foliage::{self, face_up, lower};
-use sylva_core::leaf::options::LeafLod;
-use sylva_core::{generate, growth::GrowthMode, SylvaError, TreeParams};
+use sylva_core::params::LeafLod;
+use sylva_core::{generate, params::GrowthMode, SylvaError, TreeParams};
 
 fn small() -> TreeParams {
     let mut p = TreeParams::default();

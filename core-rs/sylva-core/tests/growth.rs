@@ -62,7 +62,7 @@ fn the_wall_makes_the_crown_lean_away() {
 #[test]
 fn growth_terminates_even_when_markers_are_out_of_reach() {
     // The crown is far above a tiny influence radius: the trunk climbs until the cap.
-    let mut p = TreeParams { growth_mode: growth::GrowthMode::SpaceColonization, ..TreeParams::default() };
+    let mut p = TreeParams { growth_mode: sylva_core::params::GrowthMode::SpaceColonization, ..TreeParams::default() };
     p.crown_base = 40.0;
     p.influence_radius = 0.1;
     p.iterations = 50;

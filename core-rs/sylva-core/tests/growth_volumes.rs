@@ -2,9 +2,8 @@
 //! their JSON input and validation, and progress reports.
 
 use glam::Vec3;
-use sylva_core::growth::primitives::{VolumeGroup, VolumePrimitive};
-use sylva_core::growth::volume::Primitive;
-use sylva_core::growth::{self, sca::ROOT, CrownVolumeKind, GrowthMode};
+use sylva_core::growth::{self, sca::ROOT};
+use sylva_core::params::{CrownVolumeKind, GrowthMode, Primitive, VolumeGroup, VolumePrimitive};
 use sylva_core::{generate, generate_with_progress, SylvaError, TreeParams};
 
 fn with_volumes() -> TreeParams {

@@ -7,9 +7,9 @@ mod leaf_common;
 use glam::Vec2;
 use leaf_common::{random_leaf_params, stages};
 use sylva_core::leaf::geom::polygon_area;
-use sylva_core::leaf::options::{LeafMargin, LeafOutline};
 use sylva_core::leaf::presets::LEAF_PRESETS;
 use sylva_core::leaf::{margin, outline, Outline};
+use sylva_core::params::{LeafMargin, LeafOutline};
 use sylva_core::rng::Rng;
 use sylva_core::TreeParams;
 

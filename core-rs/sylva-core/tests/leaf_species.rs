@@ -4,10 +4,10 @@
 
 use glam::Vec2;
 use sylva_core::leaf::geom::point_in_polygon;
-use sylva_core::leaf::options::{LeafOutline, LeafPrimaries};
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::veins::{VeinGraph, NONE};
 use sylva_core::leaf::{generate, margin, outline, Leaf, Outline};
+use sylva_core::params::{LeafOutline, LeafPrimaries};
 use sylva_core::TreeParams;
 
 fn preset(name: &str) -> TreeParams {

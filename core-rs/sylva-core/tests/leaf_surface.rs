@@ -5,10 +5,10 @@ mod leaf_common;
 
 use leaf_common::random_leaf_params;
 use sylva_core::leaf::deform;
-use sylva_core::leaf::options::LeafPrimaries;
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::{generate, Leaf};
 use sylva_core::mesh::Material;
+use sylva_core::params::LeafPrimaries;
 use sylva_core::rng::Rng;
 use sylva_core::TreeParams;
 
@@ -22,7 +22,7 @@ fn deformation_is_bounded_and_moves_only_along_z() {
     let mut cases = 0;
     while cases < 40 {
         let mut p = random_leaf_params(&mut rng);
-        p.leaf_venation = sylva_core::leaf::options::LeafVenation::Spline;
+        p.leaf_venation = sylva_core::params::LeafVenation::Spline;
         p.leaf_fascicle = 1; // a blade (needles are tested in leaf_species.rs)
         let Ok(l) = generate(&p) else { continue };
         cases += 1;

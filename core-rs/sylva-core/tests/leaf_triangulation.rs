@@ -57,9 +57,9 @@ fn random_parameters_always_triangulate_validly() {
 #[test]
 fn deep_lobes_on_a_waisted_spline_fall_back_to_the_robust_method() {
     let mut p = sylva_core::TreeParams::default();
-    p.leaf_outline = sylva_core::leaf::options::LeafOutline::Spline;
+    p.leaf_outline = sylva_core::params::LeafOutline::Spline;
     (p.leaf_angle1, p.leaf_l1, p.leaf_angle2, p.leaf_l2) = (90.0, 1.0, 10.0, 0.2);
-    p.leaf_margin = sylva_core::leaf::options::LeafMargin::Lobed;
+    p.leaf_margin = sylva_core::params::LeafMargin::Lobed;
     (p.leaf_teeth, p.leaf_tooth_depth) = (9, 1.0);
     let (outline, tri) = stages(&p);
     assert_eq!(tri.method, Method::Cdt);

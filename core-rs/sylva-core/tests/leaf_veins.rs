@@ -5,10 +5,10 @@
 use glam::Vec2;
 use sylva_core::leaf::geom::dist_to_polygon;
 use sylva_core::leaf::geom::point_in_polygon;
-use sylva_core::leaf::options::{LeafPrimaries, LeafVenation};
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::veins::{MAX_AUXINS, NONE};
 use sylva_core::leaf::{generate, Leaf};
+use sylva_core::params::{LeafPrimaries, LeafVenation};
 use sylva_core::TreeParams;
 
 fn preset(name: &str) -> TreeParams {

@@ -205,7 +205,7 @@ fn wind_attributes_follow_the_stems() {
 
 #[test]
 fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
-    use sylva_core::mesh::twig::TwigDetail;
+    use sylva_core::params::TwigDetail;
     let mut sides_seen = Vec::new();
     for i in 0..4 {
         // Unwelded, every simple deepest-level stem is a twig (welded ones are swept as tubes).

@@ -7,42 +7,16 @@
 //! `tip_radius * (tips above it)^(1/Δ)`.
 
 pub mod grid;
-pub mod primitives;
 pub mod sca;
 pub mod volume;
 
 use crate::error::SylvaError;
-use crate::param_enum::param_enum;
-use crate::params::TreeParams;
+use crate::params::{CrownVolumeKind, GrowthMode, TreeParams, VolumeGroup};
 use crate::rng::Rng;
-use crate::skeleton::{Points, Skeleton, Stem};
+use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
-use primitives::VolumeGroup;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
-
-param_enum! {
-    /// How the tree is made.
-    GrowthMode {
-        /// Weber & Penn's parametric model.
-        Parametric = 0, "Parametric (Weber & Penn)";
-        /// Space colonization growth.
-        SpaceColonization = 1, "Space Colonization";
-    }
-}
-
-param_enum! {
-    /// The shape of the marker volume.
-    CrownVolumeKind {
-        /// An ellipsoid.
-        Ellipsoid = 0, "Ellipsoid";
-        /// The Crown Shape envelope as a solid of revolution.
-        Envelope = 1, "Crown Shape envelope";
-        /// The union of the user's crown-group primitives (`TreeParams::volumes`; the ellipsoid
-        /// when there is none).
-        Primitives = 2, "Primitives (user volumes)";
-    }
-}
 
 /// The budget error for growth.
 pub fn node_budget_error(max: usize) -> SylvaError {
@@ -237,6 +211,7 @@ pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
             st.point_at(offset).1
         });
         stems.push(Stem {
+            kind: if parent_stem.is_some() { StemKind::Branch } else { StemKind::Trunk },
             level: level.min(3),
             parent: parent_stem,
             offset,
@@ -255,7 +230,7 @@ pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
         });
     }
     let crown_base = p.crown_base;
-    Skeleton { stems, scale: p.crown_base + p.crown_height, crown_base }
+    Skeleton { mode: GrowthMode::SpaceColonization, stems, scale: p.crown_base + p.crown_height, crown_base }
 }
 
 #[cfg(test)]

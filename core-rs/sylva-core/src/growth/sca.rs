@@ -226,51 +226,10 @@ pub fn grow_with_progress(
     mut progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<Growth, SylvaError> {
     let markers = env.sample_markers(cfg.markers, cfg.surface_bias, cfg.top_bias, rng);
-    let crown = env.bounds();
-    let mut lo = crown.min.min(Vec3::ZERO);
-    let mut hi = crown.max.max(Vec3::ZERO);
-    for s in &cfg.starts {
-        lo = lo.min(*s);
-        hi = hi.max(*s);
-    }
-    let margin = Vec3::splat(cfg.influence + cfg.internode);
-    let (lo, hi) = (lo - margin, hi + margin);
-    // Half the query radius per cell: a query visits about 4x the sphere's volume, not 6x.
-    let cell = 0.5 * cfg.influence.max(cfg.kill);
-    let mut marker_grid = Grid::new(lo, hi, cell, 160);
-    for (i, m) in markers.iter().enumerate() {
-        marker_grid.insert(i as u32, *m);
-    }
-    let light = cfg.shade_depth.map(|depth| {
-        let cell = 2.0 * cfg.internode;
-        let dims = [(((hi.x - lo.x) / cell) as usize + 1).min(512), (((hi.z - lo.z) / cell) as usize + 1).min(512)];
-        let inv = (dims[0] as f32 / (hi.x - lo.x)).min(dims[1] as f32 / (hi.z - lo.z));
-        Light { min: lo, inv, dims, top: vec![f32::NEG_INFINITY; dims[0] * dims[1]], depth: depth * cfg.internode }
-    });
-    let count = markers.len();
-    let mut st = State {
-        nodes: Vec::new(),
-        children: Vec::new(),
-        initial: markers.clone(),
-        markers,
-        alive: vec![true; count],
-        alive_count: count,
-        closest: vec![ROOT; count],
-        closest_d2: vec![f32::INFINITY; count],
-        node_grid: Grid::new(lo, hi, cell, 160),
-        marker_grid,
-        in_grid: (0..count as u32).collect(),
-        grid_box: (lo, hi, cell),
-        light,
-        influence: cfg.influence,
-        influence2: cfg.influence * cfg.influence,
-        kill2: cfg.kill * cfg.kill,
-    };
+    let mut st = State::new(env, cfg, markers);
     let mut leaders: Vec<u32> =
         cfg.starts.iter().map(|s| st.add_node(Node { pos: *s, parent: ROOT, born: 0 })).collect();
-    let mut acc: Vec<Vec3> = Vec::new();
-    let mut pulls: Vec<u32> = Vec::new();
-    let mut touched: Vec<u32> = Vec::new();
+    let mut pulls = Pulls::default();
     let mut extra_carry = 0.0f32;
     let mut iterations = 0;
     let mut attracted_once = false;
@@ -287,21 +246,9 @@ pub fn grow_with_progress(
             break;
         }
         // 1. Each live marker pulls its closest node.
-        acc.resize(st.nodes.len(), Vec3::ZERO);
-        pulls.resize(st.nodes.len(), 0);
-        touched.clear();
-        for (m, &n) in st.closest.iter().enumerate() {
-            if n == ROOT || !st.alive[m] {
-                continue;
-            }
-            if pulls[n as usize] == 0 {
-                touched.push(n);
-            }
-            pulls[n as usize] += 1;
-            acc[n as usize] += (st.markers[m] - st.nodes[n as usize].pos).normalize_or_zero();
-        }
+        st.pull(&mut pulls);
         let mut grown = 0usize;
-        if touched.is_empty() {
+        if pulls.touched.is_empty() {
             if attracted_once && !replenishing {
                 break; // the markers left are out of every node's reach
             }
@@ -316,38 +263,7 @@ pub fn grow_with_progress(
             }
         } else {
             attracted_once = true;
-            // 2b. Attracted nodes grow one internode (in marker order: deterministic).
-            for &n in &touched {
-                let sum = std::mem::take(&mut acc[n as usize]);
-                let count = std::mem::take(&mut pulls[n as usize]) as f32;
-                // Markers on opposite sides cancel out: a weak mean pull would only make the tip
-                // orbit between them, so it does not grow (MIN_PULL of the mean resultant).
-                if sum.length() < MIN_PULL * count {
-                    continue;
-                }
-                let mut dir = sum.normalize_or_zero();
-                if cfg.apical_control > 0.0 && st.children[n as usize] > 0 && rng.next_f32() < cfg.apical_control {
-                    continue;
-                }
-                if cfg.jitter > 0.0 {
-                    let j = Vec3::new(rng.var(1.0), rng.var(1.0), rng.var(1.0));
-                    dir = (dir + j * cfg.jitter).normalize_or(dir);
-                }
-                dir = (dir + Vec3::Y * cfg.tropism).normalize_or(dir);
-                if st.nodes[n as usize].parent == ROOT {
-                    dir = Vec3::Y; // a trunk leaves the ground vertically (its base ring stays level)
-                }
-                let from = st.nodes[n as usize].pos;
-                let to = from + dir * cfg.internode;
-                if !env.segment_allowed(from, to) || st.light.as_ref().is_some_and(|l| l.shaded(to)) {
-                    continue;
-                }
-                if st.nodes.len() >= cfg.max_nodes {
-                    return Err(super::node_budget_error(cfg.max_nodes));
-                }
-                st.add_node(Node { pos: to, parent: n, born: iter });
-                grown += 1;
-            }
+            grown = st.grow_attracted(&mut pulls, env, cfg, rng, iter)?;
         }
         st.compact_markers();
         // 3. New markers during growth make bushier interiors.
@@ -363,4 +279,125 @@ pub fn grow_with_progress(
         }
     }
     Ok(Growth { nodes: st.nodes, markers: st.initial, iterations })
+}
+
+/// The markers' pulls of one iteration, per node: the summed unit vectors toward its markers,
+/// how many pull it, and the pulled nodes in marker order.
+#[derive(Default)]
+struct Pulls {
+    acc: Vec<Vec3>,
+    count: Vec<u32>,
+    touched: Vec<u32>,
+}
+
+impl State {
+    /// The state before growth: both grids over the crown and the start points (with a margin
+    /// of an influence radius and an internode), the `markers` sampled in the crown, and the
+    /// light field when light competition is on.
+    fn new(env: &Environment, cfg: &GrowthConfig, markers: Vec<Vec3>) -> State {
+        let crown = env.bounds();
+        let mut lo = crown.min.min(Vec3::ZERO);
+        let mut hi = crown.max.max(Vec3::ZERO);
+        for s in &cfg.starts {
+            lo = lo.min(*s);
+            hi = hi.max(*s);
+        }
+        let margin = Vec3::splat(cfg.influence + cfg.internode);
+        let (lo, hi) = (lo - margin, hi + margin);
+        // Half the query radius per cell: a query visits about 4x the sphere's volume, not 6x.
+        let cell = 0.5 * cfg.influence.max(cfg.kill);
+        let mut marker_grid = Grid::new(lo, hi, cell, 160);
+        for (i, m) in markers.iter().enumerate() {
+            marker_grid.insert(i as u32, *m);
+        }
+        let light = cfg.shade_depth.map(|depth| {
+            let cell = 2.0 * cfg.internode;
+            let dims = [(((hi.x - lo.x) / cell) as usize + 1).min(512), (((hi.z - lo.z) / cell) as usize + 1).min(512)];
+            let inv = (dims[0] as f32 / (hi.x - lo.x)).min(dims[1] as f32 / (hi.z - lo.z));
+            Light { min: lo, inv, dims, top: vec![f32::NEG_INFINITY; dims[0] * dims[1]], depth: depth * cfg.internode }
+        });
+        let count = markers.len();
+        State {
+            nodes: Vec::new(),
+            children: Vec::new(),
+            initial: markers.clone(),
+            markers,
+            alive: vec![true; count],
+            alive_count: count,
+            closest: vec![ROOT; count],
+            closest_d2: vec![f32::INFINITY; count],
+            node_grid: Grid::new(lo, hi, cell, 160),
+            marker_grid,
+            in_grid: (0..count as u32).collect(),
+            grid_box: (lo, hi, cell),
+            light,
+            influence: cfg.influence,
+            influence2: cfg.influence * cfg.influence,
+            kill2: cfg.kill * cfg.kill,
+        }
+    }
+
+    /// Step 1: each live marker pulls its closest node.
+    fn pull(&self, pulls: &mut Pulls) {
+        pulls.acc.resize(self.nodes.len(), Vec3::ZERO);
+        pulls.count.resize(self.nodes.len(), 0);
+        pulls.touched.clear();
+        for (m, &n) in self.closest.iter().enumerate() {
+            if n == ROOT || !self.alive[m] {
+                continue;
+            }
+            if pulls.count[n as usize] == 0 {
+                pulls.touched.push(n);
+            }
+            pulls.count[n as usize] += 1;
+            pulls.acc[n as usize] += (self.markers[m] - self.nodes[n as usize].pos).normalize_or_zero();
+        }
+    }
+
+    /// Step 2b: the attracted nodes grow one internode toward their markers (in marker order:
+    /// deterministic), bent by jitter and tropism, unless their pull is too weak, apical control
+    /// holds them back, or the shoot would leave the volumes or stand in the shade. Returns how
+    /// many grew; fails when the node budget is exceeded.
+    fn grow_attracted(
+        &mut self,
+        pulls: &mut Pulls,
+        env: &Environment,
+        cfg: &GrowthConfig,
+        rng: &mut Rng,
+        iter: u32,
+    ) -> Result<usize, SylvaError> {
+        let mut grown = 0;
+        for &n in &pulls.touched {
+            let sum = std::mem::take(&mut pulls.acc[n as usize]);
+            let count = std::mem::take(&mut pulls.count[n as usize]) as f32;
+            // Markers on opposite sides cancel out: a weak mean pull would only make the tip
+            // orbit between them, so it does not grow (MIN_PULL of the mean resultant).
+            if sum.length() < MIN_PULL * count {
+                continue;
+            }
+            let mut dir = sum.normalize_or_zero();
+            if cfg.apical_control > 0.0 && self.children[n as usize] > 0 && rng.next_f32() < cfg.apical_control {
+                continue;
+            }
+            if cfg.jitter > 0.0 {
+                let j = Vec3::new(rng.var(1.0), rng.var(1.0), rng.var(1.0));
+                dir = (dir + j * cfg.jitter).normalize_or(dir);
+            }
+            dir = (dir + Vec3::Y * cfg.tropism).normalize_or(dir);
+            if self.nodes[n as usize].parent == ROOT {
+                dir = Vec3::Y; // a trunk leaves the ground vertically (its base ring stays level)
+            }
+            let from = self.nodes[n as usize].pos;
+            let to = from + dir * cfg.internode;
+            if !env.segment_allowed(from, to) || self.light.as_ref().is_some_and(|l| l.shaded(to)) {
+                continue;
+            }
+            if self.nodes.len() >= cfg.max_nodes {
+                return Err(super::node_budget_error(cfg.max_nodes));
+            }
+            self.add_node(Node { pos: to, parent: n, born: iter });
+            grown += 1;
+        }
+        Ok(grown)
+    }
 }

@@ -4,7 +4,7 @@
 //! surface. An optional wall box is both: nothing grows into it, and markers it hides from the
 //! sky are removed, so the tree grows away from it.
 
-use crate::crown::CrownShape;
+use crate::params::{CrownShape, Primitive};
 use crate::rng::Rng;
 use glam::Vec3;
 
@@ -112,34 +112,6 @@ impl CrownVolume {
         let r = self.radius_at(p.y);
         p.x * p.x + p.z * p.z <= r * r
     }
-}
-
-/// A user primitive's shape (the SCA add-on's volume objects), centred on `centre`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Primitive {
-    /// A ball.
-    Sphere {
-        /// Centre (m).
-        centre: Vec3,
-        /// Radius (m).
-        radius: f32,
-    },
-    /// An axis-aligned box of full extents `size`.
-    Box {
-        /// Centre (m).
-        centre: Vec3,
-        /// Full width, height and depth (m).
-        size: Vec3,
-    },
-    /// An upright cylinder of `radius` and full `height`.
-    Cylinder {
-        /// Centre (m; the axis runs from `centre.y - height / 2` to `centre.y + height / 2`).
-        centre: Vec3,
-        /// Radius (m).
-        radius: f32,
-        /// Full height (m).
-        height: f32,
-    },
 }
 
 impl Primitive {

@@ -33,9 +33,9 @@
 use crate::error::SylvaError;
 use crate::leaf::geom;
 use crate::leaf::geom::DVec2;
-use crate::leaf::options::{LeafMargin, LeafOutline};
 use crate::leaf::outline::{self, BaseOutline, Shape};
 use crate::params::TreeParams;
+use crate::params::{LeafMargin, LeafOutline};
 use crate::rng::Rng;
 use glam::Vec2;
 

@@ -39,7 +39,6 @@ pub mod lobes;
 pub mod lod;
 pub mod margin;
 pub mod needles;
-pub mod options;
 pub mod outline;
 pub mod presets;
 pub mod raster;

@@ -20,7 +20,7 @@
 
 use crate::leaf::geom::DVec2;
 use crate::leaf::lobes;
-use crate::leaf::options::LeafOutline;
+use crate::params::LeafOutline;
 use crate::params::TreeParams;
 
 const PI: f64 = std::f64::consts::PI;

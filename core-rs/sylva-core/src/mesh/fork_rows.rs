@@ -35,6 +35,7 @@ pub(crate) const MAX_ROWS: usize = 10;
 mod tests {
     use super::*;
     use crate::mesh::fork::tests::fork;
+    use crate::skeleton::StemKind;
     use glam::Vec3;
 
     #[test]
@@ -43,6 +44,7 @@ mod tests {
         // rows, each bend a single polygon corner (issue #17's knee).
         let stem = Stem {
             level: 0,
+            kind: StemKind::Trunk,
             parent: None,
             offset: 0.0,
             base_normal: Vec3::X,

@@ -26,26 +26,10 @@
 use super::tube::sides_for;
 use super::tube::{Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
-use crate::growth::GrowthMode;
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
-use crate::param_enum::param_enum;
-use crate::params::TreeParams;
-use crate::skeleton::{Skeleton, Stem};
+use crate::params::{GrowthMode, TreeParams, TwigDetail};
+use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
-
-param_enum! {
-    /// The page's step along the control circle (`stu`): 1 is the finest, 8 the coarsest.
-    TwigDetail {
-        /// Step 1: four times the sides of a tube of the same radius.
-        One = 0, "1 (finest)";
-        /// Step 2: twice the tube's sides.
-        Two = 1, "2";
-        /// Step 4: the tube's sides.
-        Four = 2, "4";
-        /// Step 8: half the tube's sides (at least 3).
-        Eight = 3, "8 (coarsest)";
-    }
-}
 
 impl TwigDetail {
     /// The step: 1, 2, 4 or 8.
@@ -112,7 +96,7 @@ fn bernstein(u: f32) -> [f32; 3] {
 /// Which stems of `skeleton` are meshed as Bezier twigs (the rule in the module docs).
 pub fn mask(skeleton: &Skeleton, p: &TreeParams) -> Vec<bool> {
     let n = skeleton.stems.len();
-    if p.levels < 2 || p.growth_mode != GrowthMode::Parametric {
+    if p.levels < 2 || skeleton.mode != GrowthMode::Parametric {
         return vec![false; n];
     }
     let deepest = (p.levels - 1) as u8;
@@ -122,14 +106,13 @@ pub fn mask(skeleton: &Skeleton, p: &TreeParams) -> Vec<bool> {
             parent_of_something[i as usize] = true;
         }
     }
-    let roots = n - (p.root_count as usize).min(n);
     skeleton
         .stems
         .iter()
         .enumerate()
         .map(|(i, s)| {
             s.level == deepest
-                && i < roots
+                && s.kind != StemKind::Root
                 && !parent_of_something[i]
                 && s.taper <= 1.0
                 && s.flare == 0.0

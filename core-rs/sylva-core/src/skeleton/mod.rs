@@ -8,25 +8,28 @@
 //! Every stem draws from its own generator split off its parent's, so editing a deeper level
 //! never changes the stems above it.
 
+mod envelope;
 mod stem;
 mod trace;
 mod trunk;
 
-pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemPoints};
+pub use envelope::preview_profile;
+pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemKind, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
 
-use crate::crown::CrownShape;
 use crate::error::SylvaError;
 use crate::math::{pow, rad, unit_or, HwSqrt};
-use crate::params::TreeParams;
+use crate::params::{CrownShape, GrowthMode, TreeParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
 /// The stems of one tree, parents before children.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub struct Skeleton {
-    /// All stems; `stems[0]` is the trunk.
+    /// How the stems were made: Weber & Penn's rules or space colonization.
+    pub mode: GrowthMode,
+    /// All stems; `stems[0]` is the trunk. Roots ([`StemKind::Root`]) come last.
     pub stems: Vec<Stem>,
     /// `Scale + var(ScaleV)` drawn for this tree (m).
     pub scale: f32,
@@ -50,8 +53,8 @@ pub fn min_vertices(curve_res: u32) -> u64 {
 /// parameters that make the tree (Weber & Penn's, or growth's).
 pub fn budget_error(p: &TreeParams, what: &str, need: u64) -> SylvaError {
     let lower = match p.growth_mode {
-        crate::growth::GrowthMode::Parametric => "lower Levels or Branches",
-        crate::growth::GrowthMode::SpaceColonization => {
+        crate::params::GrowthMode::Parametric => "lower Levels or Branches",
+        crate::params::GrowthMode::SpaceColonization => {
             "lower Markers or Extra Markers, raise Internode or Kill Distance"
         }
     };
@@ -128,7 +131,15 @@ pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
         rng,
     })?;
     add_roots(p, &mut b.stems);
-    Ok(Skeleton { stems: b.stems, scale, crown_base: b.crown_base })
+    Ok(Skeleton { mode: GrowthMode::Parametric, stems: b.stems, scale, crown_base: b.crown_base })
+}
+
+impl Skeleton {
+    /// Index of the first root ([`StemKind::Root`]): roots come after every other stem, so
+    /// `0..first_root()` are the tree's own stems (`stems.len()` when there is no root).
+    pub fn first_root(&self) -> usize {
+        self.stems.iter().position(|s| s.kind == StemKind::Root).unwrap_or(self.stems.len())
+    }
 }
 
 impl Builder<'_> {
@@ -164,7 +175,15 @@ impl Builder<'_> {
         let z0 = s.first_seg as f32 / segs as f32;
         let index = self.stems.len() as u32;
         let record_len = length * (1.0 - z0);
+        let kind = if s.first_seg > 0 {
+            StemKind::SplitClone
+        } else if trunk {
+            StemKind::Trunk
+        } else {
+            StemKind::Branch
+        };
         self.stems.push(Stem {
+            kind,
             level: s.level as u8,
             parent: s.parent,
             offset: s.offset,
@@ -368,6 +387,29 @@ mod tests {
             let parent = &s.stems[st.parent.unwrap() as usize];
             let (pt, _) = parent.point_at(st.offset);
             assert!(pt.distance(st.base()) < 1e-4);
+        }
+    }
+
+    #[test]
+    fn every_stem_records_its_kind() {
+        let mut p = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
+        p.root_count = 5;
+        let sk = build(&p).unwrap();
+        let kinds = |k: StemKind| sk.stems.iter().filter(|s| s.kind == k).count();
+        assert_eq!(sk.mode, GrowthMode::Parametric);
+        assert_eq!(sk.stems[0].kind, StemKind::Trunk);
+        assert_eq!(kinds(StemKind::Trunk), 1);
+        assert!(kinds(StemKind::SplitClone) > 10, "the oak splits");
+        assert_eq!(kinds(StemKind::Root), 5);
+        assert_eq!(sk.first_root(), sk.stems.len() - 5);
+        for (i, s) in sk.stems.iter().enumerate() {
+            let parent = s.parent.map(|q| &sk.stems[q as usize]);
+            match s.kind {
+                StemKind::Trunk => assert!(parent.is_none() && s.lobed),
+                StemKind::SplitClone => assert!(parent.unwrap().level == s.level && s.chain_start > 0.0),
+                StemKind::Branch => assert!(parent.unwrap().level + 1 == s.level && i < sk.first_root()),
+                StemKind::Root => assert!(s.parent == Some(0) && i >= sk.first_root()),
+            }
         }
     }
 

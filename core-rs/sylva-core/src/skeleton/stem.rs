@@ -7,9 +7,26 @@ use glam::Vec3;
 /// A stem's centre polyline (inline storage for up to four points).
 pub type Points = smallvec::SmallVec<[Vec3; 4]>;
 
+/// What a stem is in the tree. The skeleton records it, so later stages read it instead of
+/// re-deriving it from the parameters or the stem order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+pub enum StemKind {
+    /// A trunk: the first stem of a Weber & Penn tree, or a grown tree's stem from a start point.
+    Trunk,
+    /// A child of another stem (a branch of any level, a grown tree's side shoot).
+    Branch,
+    /// A clone made by a segment or base split: it continues the stem it split from (its parent),
+    /// at the same level.
+    SplitClone,
+    /// A surface root leaving the trunk base; roots come after every other stem.
+    Root,
+}
+
 /// One stem: the trunk, a branch or a twig.
 #[derive(Clone, Debug)]
 pub struct Stem {
+    /// What the stem is: trunk, branch, split clone or root.
+    pub kind: StemKind,
     /// 0 = trunk, 1 = branches on the trunk, ...
     pub level: u8,
     /// Index of the parent stem in [`Skeleton::stems`](super::Skeleton::stems).
@@ -38,7 +55,8 @@ pub struct Stem {
     pub chain_radius: f32,
     /// Fraction of the whole stem where this record starts (0, or the split point of a clone).
     pub chain_start: f32,
-    /// True for the trunk record, which carries the Lobes.
+    /// True for the trunk record (kind [`StemKind::Trunk`] of a Weber & Penn tree), which carries
+    /// the Lobes.
     pub lobed: bool,
     /// Radius at each of [`Stem::points`] when the profile is given point by point (grown
     /// trees, pipe model) instead of by Weber & Penn's taper.

@@ -1,9 +1,13 @@
-//! Tracing one stem record after Weber & Penn: bends (Curve, CurveBack, CurveV, helices),
-//! AttractionUp, segment and base splits into clones, and the pruning envelope test.
+//! # Tracing one stem record (Weber & Penn 1995, "Creation and Rendering of Realistic Trees")
+//!
+//! The centre polyline of a record, segment by segment: bends (Curve, CurveBack, CurveV, or a
+//! helix for negative CurveV), AttractionUp, segment and base splits into clones, and the pruning
+//! envelope test. Each step is a method of [`Tracer`], which carries the running frame, position
+//! and split correction.
 
 use super::StemStart;
 use crate::math::{acos, rad, HwSqrt, PI, TAU};
-use crate::params::TreeParams;
+use crate::params::{LevelParams, TreeParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
@@ -23,86 +27,128 @@ pub(super) fn trace(
 ) -> Vec<StemStart> {
     let lp = &p.level[s.level];
     let segs = lp.curve_res.max(1) as usize;
+    let mut t = Tracer { p, s, lp, segs, length, frame: s.frame, pos: s.base, correction: s.correction };
     let seg_len = length / segs as f32;
     let mut clones = Vec::new();
     if !visit(s.base) {
         return clones;
     }
-    let mut frame = s.frame;
-    let mut pos = s.base;
-    let mut correction = s.correction;
-    let helix = lp.curve_v < 0.0;
     for i in s.first_seg..segs {
-        if helix {
-            // Negative CurveV: the stem winds around its initial direction, tilted by |CurveV|.
-            let turn = TAU * i as f32 / segs as f32;
-            frame = s.frame * Quat::from_rotation_y(turn) * Quat::from_rotation_x(rad(-lp.curve_v));
+        if lp.curve_v < 0.0 {
+            t.helix(i);
         } else if i > s.first_seg {
-            let bend = if lp.curve_back == 0.0 {
-                lp.curve / segs as f32
-            } else if i < segs.div_ceil(2) {
-                2.0 * lp.curve / segs as f32
-            } else {
-                2.0 * lp.curve_back / segs as f32
-            };
-            let bend = bend + rng.var(lp.curve_v) / segs as f32 + correction;
-            frame = (frame * Quat::from_rotation_x(rad(bend))).normalize_hw();
-            if s.level >= 2 && p.attraction_up != 0.0 {
-                frame = attract_up(frame, p.attraction_up, segs);
-            }
-            if let Some(carry) = split_carry.as_deref_mut() {
-                let n = if s.level == 0 && i == 1 && p.base_splits > 0 {
-                    p.base_splits as usize
-                } else {
-                    let exact = lp.seg_splits + *carry;
-                    let n = exact.floor();
-                    *carry = exact - n;
-                    n as usize
-                };
-                if n > 0 {
-                    let base_split = s.level == 0 && i == 1 && p.base_splits > 0;
-                    let dir = frame * Vec3::Y;
-                    let declination = acos(dir.y).to_degrees();
-                    let angle = (lp.split_angle + rng.var(lp.split_angle_v) - declination).max(0.0);
-                    let remaining = (segs - i) as f32;
-                    for k in 1..=n {
-                        let spread = if base_split {
-                            360.0 * k as f32 / (n + 1) as f32
-                        } else {
-                            let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
-                            let u = rng.next_f32();
-                            sign * (20.0 + 0.75 * (30.0 + (declination - 90.0).abs()) * u * u)
-                        };
-                        // W&P spread clones about the tree's vertical axis (not the stem's own axis,
-                        // which would leave a clone on top of its original when the angle is 0).
-                        let clone_frame =
-                            (Quat::from_rotation_y(rad(spread)) * frame * Quat::from_rotation_x(rad(angle)))
-                                .normalize_hw();
-                        clones.push(StemStart {
-                            level: s.level,
-                            parent: None,
-                            offset: 0.0,
-                            base: pos,
-                            frame: clone_frame,
-                            length,
-                            radius: s.radius,
-                            down_angle: s.down_angle,
-                            first_seg: i,
-                            correction: correction - angle / remaining,
-                            rng: rng.split(),
-                        });
-                    }
-                    frame = (frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
-                    correction -= angle / remaining;
-                }
+            t.bend(i, rng);
+            let n = split_carry.as_deref_mut().map_or(0, |carry| t.split_count(i, carry));
+            if n > 0 {
+                t.split(i, n, rng, &mut clones);
             }
         }
-        pos += (frame * Vec3::Y) * seg_len;
-        if !visit(pos) {
+        t.pos += (t.frame * Vec3::Y) * seg_len;
+        if !visit(t.pos) {
             break;
         }
     }
     clones
+}
+
+/// One record being traced: what it reads (the parameters, the record, its level's parameters)
+/// and where it is (the frame of the current segment, the position reached, the per-segment turn
+/// back toward the original direction after splits, in degrees).
+struct Tracer<'a> {
+    p: &'a TreeParams,
+    s: &'a StemStart,
+    lp: &'a LevelParams,
+    /// Segments of the whole stem (`nCurveRes`).
+    segs: usize,
+    /// Full length of the stem.
+    length: f32,
+    frame: Quat,
+    pos: Vec3,
+    correction: f32,
+}
+
+impl Tracer<'_> {
+    /// Negative CurveV: segment `i` winds around the record's initial direction, tilted by
+    /// |CurveV|.
+    fn helix(&mut self, i: usize) {
+        let turn = TAU * i as f32 / self.segs as f32;
+        self.frame = self.s.frame * Quat::from_rotation_y(turn) * Quat::from_rotation_x(rad(-self.lp.curve_v));
+    }
+
+    /// Bends segment `i` by Curve (or Curve then CurveBack over the two halves) plus a random
+    /// CurveV and the split correction, then turns it by AttractionUp from level 2 on.
+    fn bend(&mut self, i: usize, rng: &mut Rng) {
+        let (lp, segs) = (self.lp, self.segs);
+        let bend = if lp.curve_back == 0.0 {
+            lp.curve / segs as f32
+        } else if i < segs.div_ceil(2) {
+            2.0 * lp.curve / segs as f32
+        } else {
+            2.0 * lp.curve_back / segs as f32
+        };
+        let bend = bend + rng.var(lp.curve_v) / segs as f32 + self.correction;
+        self.frame = (self.frame * Quat::from_rotation_x(rad(bend))).normalize_hw();
+        if self.s.level >= 2 && self.p.attraction_up != 0.0 {
+            self.frame = attract_up(self.frame, self.p.attraction_up, segs);
+        }
+    }
+
+    /// Whether segment `i` is the trunk's first joint, where BaseSplits clones split off.
+    fn base_split(&self, i: usize) -> bool {
+        self.s.level == 0 && i == 1 && self.p.base_splits > 0
+    }
+
+    /// How many clones split off at segment `i`: BaseSplits at the trunk's first joint, else
+    /// SegSplits with its fraction carried to the next segment (error diffusion in `carry`).
+    fn split_count(&self, i: usize, carry: &mut f32) -> usize {
+        if self.base_split(i) {
+            return self.p.base_splits as usize;
+        }
+        let exact = self.lp.seg_splits + *carry;
+        let n = exact.floor();
+        *carry = exact - n;
+        n as usize
+    }
+
+    /// Splits `n` clones off at segment `i` into `clones`: each turns away by the split angle
+    /// (SplitAngle less the declination), spread about the tree's vertical axis (evenly around
+    /// for base splits, alternating sides otherwise), and turns back over its remaining
+    /// segments; the original turns by the same angle.
+    fn split(&mut self, i: usize, n: usize, rng: &mut Rng, clones: &mut Vec<StemStart>) {
+        let base_split = self.base_split(i);
+        let dir = self.frame * Vec3::Y;
+        let declination = acos(dir.y).to_degrees();
+        let angle = (self.lp.split_angle + rng.var(self.lp.split_angle_v) - declination).max(0.0);
+        let remaining = (self.segs - i) as f32;
+        for k in 1..=n {
+            let spread = if base_split {
+                360.0 * k as f32 / (n + 1) as f32
+            } else {
+                let sign = if k % 2 == 1 { 1.0 } else { -1.0 };
+                let u = rng.next_f32();
+                sign * (20.0 + 0.75 * (30.0 + (declination - 90.0).abs()) * u * u)
+            };
+            // W&P spread clones about the tree's vertical axis (not the stem's own axis, which
+            // would leave a clone on top of its original when the angle is 0).
+            let clone_frame =
+                (Quat::from_rotation_y(rad(spread)) * self.frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
+            clones.push(StemStart {
+                level: self.s.level,
+                parent: None,
+                offset: 0.0,
+                base: self.pos,
+                frame: clone_frame,
+                length: self.length,
+                radius: self.s.radius,
+                down_angle: self.s.down_angle,
+                first_seg: i,
+                correction: self.correction - angle / remaining,
+                rng: rng.split(),
+            });
+        }
+        self.frame = (self.frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
+        self.correction -= angle / remaining;
+    }
 }
 
 /// Weber & Penn's pruning test: inside `PruneWidth * ShapeRatio(Envelope, ratio)` where

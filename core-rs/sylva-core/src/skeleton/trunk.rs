@@ -1,6 +1,6 @@
 //! Trunk extras of the skeleton: the thesis' guide curve (§4.2.1) and the surface roots.
 
-use super::{Points, Stem};
+use super::{Points, Stem, StemKind};
 use crate::math::TAU;
 use crate::params::TreeParams;
 use crate::rng::Rng;
@@ -52,6 +52,7 @@ pub(super) fn add_roots(p: &TreeParams, stems: &mut Vec<Stem>) {
         }
         points[0] = Vec3::new(0.0, start_y, 0.0);
         stems.push(Stem {
+            kind: StemKind::Root,
             level: 1,
             parent: Some(0),
             offset: 0.0,

@@ -21,8 +21,8 @@ pub mod primary;
 pub mod spline;
 
 use crate::leaf::margin::Outline;
-use crate::leaf::options::LeafVenation;
 use crate::leaf::raster::Mask;
+use crate::params::LeafVenation;
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::Vec2;

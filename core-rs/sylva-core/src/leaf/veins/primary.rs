@@ -20,10 +20,10 @@
 
 use super::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
-use crate::leaf::options::{LeafOutline, LeafPrimaries};
 use crate::leaf::outline::Shape;
 use crate::leaf::raster::Mask;
 use crate::params::TreeParams;
+use crate::params::{LeafOutline, LeafPrimaries};
 use glam::Vec2;
 
 /// The root alone: a node at the petiole.

@@ -14,22 +14,8 @@ pub mod noise;
 pub mod patterns;
 
 use crate::math::pow;
-use crate::param_enum::param_enum;
+use crate::params::BarkType;
 use serde::Serialize;
-
-param_enum! {
-    /// The bark pattern of a tree (ANCHORS §10).
-    BarkType {
-        /// Deep vertical fissures between interlacing ridges (oaks, ash).
-        Furrowed = 0, "Furrowed";
-        /// Irregular plates separated by dark cracks (pines, spruces, firs).
-        Plated = 1, "Plated";
-        /// Smooth pale skin with horizontal lenticels and bands (birch, cherry, aspen).
-        SmoothBanded = 2, "Smooth-banded";
-        /// Long criss-crossing strips (willows, cedars, cypress).
-        Fibrous = 3, "Fibrous";
-    }
-}
 
 /// A baked texture: `size * size` texels, 4 bytes each (RGBA), rows bottom to top (v up).
 #[derive(Clone, Debug, PartialEq)]

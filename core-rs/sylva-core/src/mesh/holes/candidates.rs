@@ -12,7 +12,7 @@
 //!   starts (the valleys between buttress roots).
 
 use super::patch::{nrm, pos, Patch};
-use super::{first_root, Candidate, Source, CONCAVE_DEG, ELONGATION, MIN_CLUSTER};
+use super::{Candidate, Source, CONCAVE_DEG, ELONGATION, MIN_CLUSTER};
 use crate::math::{acos, atan2, cos, sin, unit_or, PI, TAU};
 use crate::mesh::TreeMesh;
 use crate::params::TreeParams;
@@ -179,7 +179,7 @@ pub(super) fn all_candidates(
     p: &TreeParams,
     children: &[Vec<u32>],
 ) -> Vec<Candidate> {
-    let roots = first_root(skeleton, p);
+    let roots = skeleton.first_root();
     let mut out = Vec::new();
     for (patch, kids) in patches.iter().zip(children) {
         let stem = &skeleton.stems[patch.stem];

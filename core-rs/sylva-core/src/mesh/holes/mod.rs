@@ -42,7 +42,6 @@ mod cut;
 mod patch;
 
 use super::TreeMesh;
-use crate::growth::GrowthMode;
 use crate::math::TAU;
 use crate::params::TreeParams;
 use crate::rng::Rng;
@@ -121,7 +120,7 @@ pub fn eligible(skeleton: &Skeleton, p: &TreeParams, twigs: &[bool]) -> Vec<bool
     if p.hole_count == 0 {
         return Vec::new();
     }
-    let roots = first_root(skeleton, p);
+    let roots = skeleton.first_root();
     skeleton
         .stems
         .iter()
@@ -133,16 +132,6 @@ pub fn eligible(skeleton: &Skeleton, p: &TreeParams, twigs: &[bool]) -> Vec<bool
         .chain(std::iter::repeat(false))
         .take(n)
         .collect()
-}
-
-/// Index of the first root stem (roots are appended last by the skeleton).
-fn first_root(skeleton: &Skeleton, p: &TreeParams) -> usize {
-    let n = skeleton.stems.len();
-    if p.growth_mode == GrowthMode::Parametric {
-        n - (p.root_count as usize).min(n.saturating_sub(1))
-    } else {
-        n
-    }
 }
 
 /// Make an eligible stem's mesh dense enough for holes, as the thesis cuts them into a dense

@@ -14,28 +14,21 @@
 //! right after its sweep, or sweeping it again as a capped tube), then write every stem's
 //! indices (skipping claimed quads) and the junctions' triangles.
 
+mod plan;
 mod rings;
 mod sweep;
 
 pub(crate) use rings::drop_close;
 pub use sweep::{stem_winds, StemWind};
 
-use super::{fork, fork_rows, holes, twig, weld, Material, MeshBuilder, TreeMesh};
+use super::{fork, fork_rows, twig, weld, Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
-use crate::math::TAU;
 use crate::params::TreeParams;
-use crate::skeleton::{budget_error, Skeleton};
+use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
-use rings::plan_rings;
+use plan::Plan;
 use std::ops::Range;
 use sweep::{circle, emit, sweep, sweep_trunk, TrunkProfile};
-
-/// How one stem will be meshed: its ring positions along the stem and its number of sides.
-struct StemPlan {
-    /// Range into the shared ring-parameter buffer.
-    rings: std::ops::Range<usize>,
-    sides: u32,
-}
 
 /// What one stem's sweep wrote, for the junctions of its children and the index pass.
 #[derive(Clone, Copy, Debug)]
@@ -81,6 +74,9 @@ pub(crate) enum Base {
     Cap(u32),
     /// Welded into the parent's surface ([`super::weld`]).
     Welded,
+    /// Not closed yet: a branch's base between its sweep and its weld or cap (never left so
+    /// for the index pass).
+    Open,
 }
 
 /// Centre and orientation of one swept ring: column `j` of the ring lies along
@@ -109,6 +105,20 @@ pub struct WeldStats {
     pub split_fallbacks: usize,
     /// Of the split welds, shallow splits built as a smooth Y fork ([`super::fork`]).
     pub forks: usize,
+}
+
+impl WeldStats {
+    /// Counts one junction: welded or fallen back, of a split clone or not, forked or not.
+    fn count(&mut self, welded: bool, clone: bool, fork: bool) {
+        if welded {
+            self.welds += 1;
+            self.split_welds += usize::from(clone);
+            self.forks += usize::from(fork);
+        } else {
+            self.weld_fallbacks += 1;
+            self.split_fallbacks += usize::from(clone);
+        }
+    }
 }
 
 /// Number of sides around a stem of base radius `r` (m) at the given quality.
@@ -140,237 +150,27 @@ pub struct Built {
 
 /// [`build`], also counting the welded junctions and the fallbacks, and returning the stems'
 /// vertex blocks. The deepest level's simple stems become Bezier twigs ([`twig`]) unless they are
-/// welded; stems that may get tree holes are swept densely enough for them ([`holes::densify`]).
+/// welded; stems that may get tree holes are swept densely enough for them ([`super::holes::densify`]).
 pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, SylvaError> {
-    let q = p.mesh_quality;
-    let stems = &skeleton.stems;
-    let n = stems.len();
-    let twig_candidates = twig::mask(skeleton, p);
-    let dense = holes::eligible(skeleton, p, &twig_candidates);
-    let is_dense = |i: usize| dense.get(i) == Some(&true);
-    let sides: Vec<u32> = stems
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let plain = sides_for(s.radius, q, if s.lobed { p.lobes } else { 0 });
-            if is_dense(i) {
-                holes::dense_sides(plain, p)
-            } else {
-                plain
-            }
-        })
-        .collect();
-    let mut sides = sides;
-    if p.weld {
-        // Forks need an even number of sides on both branches of a split.
-        for (i, s) in stems.iter().enumerate() {
-            let split = |j: usize| {
-                weld::is_candidate(stems, j)
-                    && stems[j].parent.is_some_and(|q| stems[q as usize].level == stems[j].level)
-            };
-            if split(i) {
-                let o = s.parent.map_or(i, |q| q as usize);
-                sides[o] += sides[o] % 2;
-                sides[i] += sides[i] % 2;
-            }
-        }
-    }
-    let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
-    // A fork's clone has its original's sides (column k of both points the same way).
-    for i in 0..n {
-        if let Some(j) = junctions[i].filter(|j| j.fork) {
-            sides[i] = sides[j.parent as usize];
-        }
-    }
-    // Welding wins: a twig candidate with a junction is swept as a tube and welded.
-    let twigs: Vec<bool> = twig_candidates.iter().zip(&junctions).map(|(&t, j)| t && j.is_none()).collect();
-    // The junctions of each parent's welded children, grouped by parent, sorted along it.
-    let mut inserted: Vec<weld::Junction> = junctions.iter().flatten().copied().collect();
-    inserted.sort_by(|a, b| a.parent.cmp(&b.parent).then(a.t_lo.total_cmp(&b.t_lo)));
-    let mut extra = Vec::with_capacity(n);
-    let mut at = 0;
-    for i in 0..n as u32 {
-        let from = at;
-        while at < inserted.len() && inserted[at].parent == i {
-            at += 1;
-        }
-        extra.push(from..at);
-    }
-    let mut ts = Vec::with_capacity(n * 8);
-    let mut plans: Vec<StemPlan> = Vec::with_capacity(n);
-    // Conservative vertex count: tubes, apexes, caps, the collar loops of every junction, and
-    // for each junction the rings a fallback to a buried tube would add back.
-    let mut vertices = 0u64;
-    let mut indices = 0u64;
-    let mut bridges_len = 0u64;
-    let parent_of = |i: usize| stems[i].parent.map_or(0, |p| p as usize);
-    let loops = weld::collar_loops(q);
-    let mut fallback: Vec<f32> = Vec::new();
-    for (i, s) in stems.iter().enumerate() {
-        let start = ts.len();
-        if twigs[i] {
-            let sides = twig::plan(s, p, &mut ts);
-            let rings = (ts.len() - start) as u64;
-            // Rings, the apex and the cap centre; quads and two fans.
-            vertices += rings * (u64::from(sides) + 1) + 2;
-            indices += (rings + 1) * u64::from(sides) * 6;
-            plans.push(StemPlan { rings: start..ts.len(), sides });
-            continue;
-        }
-        let t0 = junctions[i].map_or(0.0, |j| j.t_start);
-        let feet = &inserted[extra[i].clone()];
-        let pad = TAU / sides[i] as f32;
-        plan_rings(s, q, feet, pad, t0, &mut ts);
-        if is_dense(i) {
-            holes::densify(s, sides[i], p, &mut ts, start);
-        }
-        fork::keep_gaps(feet, &mut ts, start);
-        let plan = StemPlan { rings: start..ts.len(), sides: sides[i] };
-        let ring = u64::from(plan.sides) + 1;
-        vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
-        // Quads, tip fan and base fan; a junction's zip and collar quads.
-        indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
-        if junctions[i].is_some() {
-            // Either the footprint loop and the collar loops, or a fallback swept from the
-            // parent's axis: planned here as it would be (densified for holes too), so that the
-            // budget holds either way.
-            fallback.clear();
-            plan_rings(s, q, feet, pad, 0.0, &mut fallback);
-            if is_dense(i) {
-                holes::densify(s, sides[i], p, &mut fallback, 0);
-            }
-            fork::keep_gaps(feet, &mut fallback, 0);
-            let more = fallback.len().saturating_sub(plan.rings.len());
-            let fork = junctions[i].filter(|j| j.fork).map(|j| fork_rows::rows(&j, &stems[j.parent as usize], q));
-            let joined = match fork {
-                Some(rows) => fork::vertices(sides[i], rows) as u64,
-                // The footprint loop twice, the collar loops, and up to a ring of copies across
-                // the parent's seam (`MeshBuilder::unwrap_u`).
-                None => (loops as u64 + 3) * ring,
-            };
-            vertices += (more as u64 * ring).max(joined);
-            bridges_len += fork.map_or(0, |rows| fork::indices(sides[i], rows) as u64);
-            bridges_len += (2 * u64::from(plan.sides) * (loops as u64 + 1)
-                + 4 * (MAX_ROWS_BOUND + u64::from(sides[parent_of(i)])))
-                * 3;
-        }
-        plans.push(plan);
-    }
-    if vertices > u64::from(p.max_vertices) {
-        return Err(budget_error(p, "", vertices));
-    }
-    let mut out = MeshBuilder::with_wind(vertices as usize, (indices + bridges_len) as usize);
+    let plan = Plan::new(skeleton, p)?;
+    let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
     out.begin_group(Material::Bark);
+    // Circle tables by number of sides.
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
+    for s in &plan.stems {
+        tables[s.sides as usize].get_or_insert_with(|| circle(s.sides));
+    }
     let winds = stem_winds(skeleton, p.seed);
-    let mut frames: Vec<Frame> = vec![Frame::default(); ts.len()];
-    let mut meshes: Vec<Option<StemMesh>> = (0..n).map(|_| None).collect();
-    let mut claimed: Vec<bool> = Vec::with_capacity(indices as usize / 6);
-    let mut bridges: Vec<u32> = Vec::with_capacity(bridges_len as usize);
-    let mut scratch = weld::Scratch::default();
-    let mut stats = WeldStats::default();
-    let is_clone = |i: usize| stems[i].parent.is_some_and(|p| stems[p as usize].level == stems[i].level);
-    let mut blocks: Vec<Range<u32>> = vec![0..0; n];
+    let mut sweep = Sweep::new(skeleton, p, plan, out, &tables, &winds);
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
-    let mut order: Vec<usize> = (0..n).collect();
+    let stems = &skeleton.stems;
+    let mut order: Vec<usize> = (0..stems.len()).collect();
     order.sort_by_key(|&i| stems[i].level);
     for &i in &order {
-        let stem = &stems[i];
-        let plan = &mut plans[i];
-        let table = tables[plan.sides as usize].get_or_insert_with(|| circle(plan.sides));
-        let block_start = out.next_index();
-        if twigs[i] {
-            let mut m = twig::sweep(stem, &ts[plan.rings.clone()], plan.rings.start, table, &winds[i], &mut out);
-            m.claim = claimed.len();
-            claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
-            meshes[i] = Some(m);
-            blocks[i] = block_start..out.next_index();
-            continue;
-        }
-        let lobes = if stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0 { Some((p.lobes, p.lobe_depth)) } else { None };
-        let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
-        let wind = &winds[i];
-        let sweep_plan = |ts: &[f32],
-                          rings: std::ops::Range<usize>,
-                          frames: &mut [Frame],
-                          start: Option<(Vec3, f32)>,
-                          out: &mut MeshBuilder| {
-            let (ts, frames) = (&ts[rings.clone()], &mut frames[rings.clone()]);
-            let mut m = match &profile {
-                Some(tp) => sweep_trunk(stem, ts, table, tp, wind, frames, start, out),
-                None => sweep(stem, ts, table, lobes, wind, frames, start, out),
-            };
-            m.ring0 = rings.start;
-            m
-        };
-        // A fork's clone starts from its original's frame and bark at the split.
-        let start = junctions[i].filter(|j| j.fork).and_then(|j| {
-            let parent = meshes[j.parent as usize].as_ref()?;
-            fork::clone_start(&j, parent, &ts, &frames, &out)
-        });
-        let mut m = sweep_plan(&ts, plan.rings.clone(), &mut frames, start, &mut out);
-        if let Some(j) = &junctions[i] {
-            let parent = meshes[j.parent as usize].as_ref().expect("parents are swept first");
-            let join = weld::Join {
-                junction: j,
-                parent,
-                parent_stem: &stems[j.parent as usize],
-                child: &m,
-                child_stem: stem,
-                ts: &ts,
-                frames: &frames,
-                wind,
-                loops,
-            };
-            let ok = if j.fork {
-                let rows = fork_rows::row_choices(j, &stems[j.parent as usize], q);
-                start.is_some()
-                    && rows
-                        .into_iter()
-                        .any(|rows| fork::join(&join, rows, &mut claimed, &mut out, &mut bridges, &mut scratch.tris))
-            } else {
-                weld::join(&join, &mut claimed, &mut out, &mut bridges, &mut scratch)
-            };
-            if ok {
-                m.base = Base::Welded;
-                stats.welds += 1;
-                stats.split_welds += usize::from(is_clone(i));
-                stats.forks += usize::from(j.fork);
-            } else {
-                // Fall back to a closed tube from the parent's axis, as if never welded.
-                out.truncate_vertices(m.first);
-                let start = ts.len();
-                let feet = &inserted[extra[i].clone()];
-                plan_rings(stem, q, feet, TAU / sides[i] as f32, 0.0, &mut ts);
-                if is_dense(i) {
-                    holes::densify(stem, sides[i], p, &mut ts, start);
-                }
-                fork::keep_gaps(feet, &mut ts, start);
-                frames.resize(ts.len(), Frame::default());
-                plan.rings = start..ts.len();
-                m = sweep_plan(&ts, plan.rings.clone(), &mut frames, None, &mut out);
-                stats.weld_fallbacks += 1;
-                stats.split_fallbacks += usize::from(is_clone(i));
-            }
-        } else if weld::is_candidate(stems, i) && p.weld {
-            stats.weld_fallbacks += 1;
-            stats.split_fallbacks += usize::from(is_clone(i));
-        }
-        if m.base == PENDING_CAP {
-            // A separate tube: close its base with a shallow cone to a centre vertex a quarter
-            // radius inside (so clones leaving one split point never share their cap centres).
-            let f = frames[m.ring0];
-            let r0 = stem.radius_at(ts[m.ring0]).max(0.05 * stem.radius);
-            let record = wind.record(stem, ts[m.ring0], r0);
-            let centre = f.centre - f.tangent * (0.25 * r0);
-            m.base = Base::Cap(out.vertex_with_wind(centre.to_array(), (-f.tangent).to_array(), [0.5, m.v0], &record));
-        }
-        m.claim = claimed.len();
-        claimed.resize(claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
-        meshes[i] = Some(m);
-        blocks[i] = block_start..out.next_index();
+        sweep.stem(i);
     }
+    let Sweep { mut out, meshes, claimed, bridges, stats, blocks, .. } = sweep;
     for m in meshes.iter().flatten() {
         emit(m, &claimed, &mut out);
     }
@@ -378,8 +178,195 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     Ok(Built { mesh: out.finish(), welds: stats, blocks })
 }
 
-/// The base of a swept branch before its cap's centre vertex exists.
-const PENDING_CAP: Base = Base::Cap(u32::MAX);
+/// Circle tables ([`circle`]) by number of sides.
+type Tables = [Option<Vec<(f32, f32, f32)>>];
 
-/// Bound on the rows of a junction's hole, for the index capacity estimate.
-const MAX_ROWS_BOUND: u64 = 8;
+/// The sweep of a whole tree, stem by stem: what has been written so far.
+struct Sweep<'a> {
+    skeleton: &'a Skeleton,
+    p: &'a TreeParams,
+    plan: Plan,
+    out: MeshBuilder,
+    /// Circle tables by number of sides.
+    tables: &'a Tables,
+    /// Every stem's wind constants.
+    winds: &'a [StemWind],
+    /// Frames of every ring of [`Plan::ts`].
+    frames: Vec<Frame>,
+    meshes: Vec<Option<StemMesh>>,
+    /// Quads left out of the index pass (a junction's hole), per stem from [`StemMesh::claim`].
+    claimed: Vec<bool>,
+    /// The junctions' triangles.
+    bridges: Vec<u32>,
+    scratch: weld::Scratch,
+    stats: WeldStats,
+    /// Each stem's block of vertices.
+    blocks: Vec<Range<u32>>,
+}
+
+impl<'a> Sweep<'a> {
+    fn new(
+        skeleton: &'a Skeleton,
+        p: &'a TreeParams,
+        plan: Plan,
+        out: MeshBuilder,
+        tables: &'a Tables,
+        winds: &'a [StemWind],
+    ) -> Sweep<'a> {
+        let n = skeleton.stems.len();
+        Sweep {
+            skeleton,
+            p,
+            tables,
+            winds,
+            frames: vec![Frame::default(); plan.ts.len()],
+            meshes: (0..n).map(|_| None).collect(),
+            claimed: Vec::with_capacity(plan.indices as usize / 6),
+            bridges: Vec::with_capacity(plan.bridges as usize),
+            scratch: weld::Scratch::default(),
+            stats: WeldStats::default(),
+            blocks: vec![0..0; n],
+            plan,
+            out,
+        }
+    }
+
+    /// Sweeps stem `i` (a twig, or a tube welded into its parent, or a closed tube).
+    fn stem(&mut self, i: usize) {
+        let (skeleton, p, tables, winds) = (self.skeleton, self.p, self.tables, self.winds);
+        let block_start = self.out.next_index();
+        let table = tables[self.plan.stems[i].sides as usize].as_deref().expect("a table per planned sides");
+        let stem = &skeleton.stems[i];
+        let m = if self.plan.twigs[i] {
+            let rings = self.plan.stems[i].rings.clone();
+            twig::sweep(stem, &self.plan.ts[rings.clone()], rings.start, table, &winds[i], &mut self.out)
+        } else {
+            let lobes = (stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0).then_some((p.lobes, p.lobe_depth));
+            let profile =
+                (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
+            let tube = Tube { stem, table, lobes, profile, wind: &winds[i] };
+            let mut m = self.tube(i, &tube);
+            if m.base == Base::Open {
+                m.base = cap_base(stem, &tube, &self.plan.ts, &self.frames, &m, &mut self.out);
+            }
+            m
+        };
+        self.finish(i, m, block_start);
+    }
+
+    /// Sweeps tube `i` and welds it into its parent; where the weld fails, sweeps it again as a
+    /// separate tube from its parent's axis, as if never welded. Its base is still open unless
+    /// it is welded or the trunk's.
+    fn tube(&mut self, i: usize, tube: &Tube) -> StemMesh {
+        let (skeleton, junction) = (self.skeleton, self.plan.junctions[i]);
+        let stems = &skeleton.stems;
+        // A fork's clone starts from its original's frame and bark at the split.
+        let start = junction.filter(|j| j.fork).and_then(|j| {
+            let parent = self.meshes[j.parent as usize].as_ref()?;
+            fork::clone_start(&j, parent, &self.plan.ts, &self.frames, &self.out)
+        });
+        let rings = self.plan.stems[i].rings.clone();
+        let mut m = tube.sweep(&self.plan.ts, rings, &mut self.frames, start, &mut self.out);
+        let clone = stems[i].kind == StemKind::SplitClone;
+        let Some(j) = junction else {
+            if weld::is_candidate(stems, i) && self.p.weld {
+                self.stats.count(false, clone, false);
+            }
+            return m;
+        };
+        if self.weld(&j, &m, tube, start.is_some()) {
+            m.base = Base::Welded;
+            self.stats.count(true, clone, j.fork);
+            return m;
+        }
+        // Fall back to a closed tube from the parent's axis, as if never welded.
+        self.out.truncate_vertices(m.first);
+        let mut ts = std::mem::take(&mut self.plan.ts);
+        let from = ts.len();
+        self.plan.tube_rings(skeleton, self.p, i, 0.0, &mut ts);
+        self.frames.resize(ts.len(), Frame::default());
+        self.plan.stems[i].rings = from..ts.len();
+        self.plan.ts = ts;
+        self.stats.count(false, clone, false);
+        tube.sweep(&self.plan.ts, from..self.plan.ts.len(), &mut self.frames, None, &mut self.out)
+    }
+
+    /// Welds the swept child `m` into its parent at junction `j` (a fork when `j.fork`, which
+    /// needs the clone to have started from its original's ring: `forked`).
+    fn weld(&mut self, j: &weld::Junction, m: &StemMesh, tube: &Tube, forked: bool) -> bool {
+        let skeleton = self.skeleton;
+        let parent_stem = &skeleton.stems[j.parent as usize];
+        let parent = self.meshes[j.parent as usize].as_ref().expect("parents are swept first");
+        let loops = weld::collar_loops(self.p.mesh_quality);
+        let join = weld::Join {
+            junction: j,
+            parent,
+            parent_stem,
+            child: m,
+            child_stem: tube.stem,
+            ts: &self.plan.ts,
+            frames: &self.frames,
+            wind: tube.wind,
+            loops,
+        };
+        let (claimed, out, bridges) = (&mut self.claimed, &mut self.out, &mut self.bridges);
+        if j.fork {
+            let tris = &mut self.scratch.tris;
+            forked
+                && fork_rows::row_choices(j, parent_stem, self.p.mesh_quality)
+                    .any(|rows| fork::join(&join, rows, claimed, out, bridges, tris))
+        } else {
+            weld::join(&join, claimed, out, bridges, &mut self.scratch)
+        }
+    }
+
+    /// Records stem `i`'s swept mesh `m`, written from vertex `block_start` on, and reserves its
+    /// quads in the claimed-quad bitmap.
+    fn finish(&mut self, i: usize, mut m: StemMesh, block_start: u32) {
+        m.claim = self.claimed.len();
+        self.claimed.resize(self.claimed.len() + (m.rings as usize - 1) * m.sides as usize, false);
+        self.meshes[i] = Some(m);
+        self.blocks[i] = block_start..self.out.next_index();
+    }
+}
+
+/// One tube's sweep settings: its circle table, the trunk's lobes or complex cross-section, its
+/// wind constants.
+struct Tube<'a> {
+    stem: &'a Stem,
+    table: &'a [(f32, f32, f32)],
+    lobes: Option<(u32, f32)>,
+    profile: Option<TrunkProfile>,
+    wind: &'a StemWind,
+}
+
+impl Tube<'_> {
+    /// Sweeps the rings `ts[rings]` (their frames into `frames[rings]`), from `start` (a fork
+    /// clone's frame normal and `v`) if given.
+    fn sweep(
+        &self,
+        ts: &[f32],
+        rings: Range<usize>,
+        frames: &mut [Frame],
+        start: Option<(Vec3, f32)>,
+        out: &mut MeshBuilder,
+    ) -> StemMesh {
+        let (ts, frames_of) = (&ts[rings.clone()], &mut frames[rings.clone()]);
+        let mut m = match &self.profile {
+            Some(tp) => sweep_trunk(self.stem, ts, self.table, tp, self.wind, frames_of, start, out),
+            None => sweep(self.stem, ts, self.table, self.lobes, self.wind, frames_of, start, out),
+        };
+        m.ring0 = rings.start;
+        m
+    }
+}
+
+/// Closes the base of a separate tube with a shallow cone to a centre vertex a quarter radius
+/// inside (so clones leaving one split point never share their cap centres).
+fn cap_base(stem: &Stem, tube: &Tube, ts: &[f32], frames: &[Frame], m: &StemMesh, out: &mut MeshBuilder) -> Base {
+    let f = frames[m.ring0];
+    let r0 = stem.radius_at(ts[m.ring0]).max(0.05 * stem.radius);
+    let record = tube.wind.record(stem, ts[m.ring0], r0);
+    let centre = f.centre - f.tangent * (0.25 * r0);
+    Base::Cap(out.vertex_with_wind(centre.to_array(), (-f.tangent).to_array(), [0.5, m.v0], &record))
+}

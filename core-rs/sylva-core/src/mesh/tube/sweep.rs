@@ -7,10 +7,10 @@
 //! wind constants the sweep records, and the index pass writing each stem's quads (skipping
 //! claimed ones) and fans.
 
-use super::{Base, Frame, StemMesh, PENDING_CAP};
+use super::{Base, Frame, StemMesh};
 use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
 use crate::mesh::trunk::{ring_circles, union_outline};
-use crate::mesh::{MeshBuilder, WIND_STRIDE};
+use crate::mesh::{MeshBuilder, VertexBlock, WIND_STRIDE};
 use crate::params::TreeParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
@@ -37,7 +37,8 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
     let rows = m.rings as usize - 1;
     let claims = &claimed[m.claim..m.claim + rows * s as usize];
     let free = claims.iter().filter(|&&c| !c).count();
-    let fans = s as usize * if matches!(m.base, Base::Welded) { 1 } else { 2 };
+    debug_assert!(m.base != Base::Open, "a base is welded or closed before the index pass");
+    let fans = s as usize * if matches!(m.base, Base::Welded | Base::Open) { 1 } else { 2 };
     let idx = out.alloc_indices(free * 6 + fans * 3);
     let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
     let mut q = quad_idx.chunks_exact_mut(6);
@@ -69,7 +70,7 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
                 f.next().expect("sized above").copy_from_slice(&[m.first + j + 1, m.first + j, centre]);
             }
         }
-        Base::Welded => {}
+        Base::Welded | Base::Open => {}
     }
 }
 
@@ -157,8 +158,8 @@ fn sweep_with(
     let rings = ts.len();
     let trunk = stem.parent.is_none();
     let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
-    let block = out.alloc_vertices(count);
-    let (first, pos, nrm, uv, wnd) = (block.first, block.positions, block.normals, block.uvs, block.wind);
+    let mut block = out.alloc_vertices(count);
+    let first = block.first;
     let mut ring_factor = vec![1.0f32; stride];
     let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
     let mut seg = (0, stem.segment(0));
@@ -188,51 +189,19 @@ fn sweep_with(
         if let Some((pt, pr)) = prev {
             v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
         }
-        let block = r * stride;
-        let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
-        let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
-        let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
-        let record = wind.record(stem, t, radius);
-        for w in wnd[block * WIND_STRIDE..(block + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
-            w.copy_from_slice(&record);
-        }
-        let tilt = tan * slope;
         for (j, f) in ring_factor.iter_mut().enumerate() {
             *f = factor(r, j);
         }
-        if ring_factor.iter().all(|&f| f == 1.0) {
-            for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
-                let radial = normal * cs + binormal * sn;
-                let p = c + radial * radius;
-                let n = (radial - tilt) * inv;
-                p3.copy_from_slice(&[p.x, p.y, p.z]);
-                n3.copy_from_slice(&[n.x, n.y, n.z]);
-                t2.copy_from_slice(&[u, v]);
-            }
-        } else {
-            // In-plane outline normals: perpendicular to the chord between neighbouring columns.
-            let at = |j: usize| {
-                let (cs, sn, _) = circle[j];
-                (cs * ring_factor[j], sn * ring_factor[j])
-            };
-            for (j, n2) in plane_normal.iter_mut().enumerate() {
-                let (a, b) = (at(if j == 0 { sides - 1 } else { j - 1 }), at(if j == sides { 1 } else { j + 1 }));
-                let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-                let len = (dx * dx + dy * dy).sqrt().max(1e-12);
-                *n2 = (dy / len, -dx / len);
-            }
-            for ((((p3, n3), t2), &(cs, sn, u)), (&f, &(nx, ny))) in
-                ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(ring_factor.iter().zip(&plane_normal))
-            {
-                let radial = normal * cs + binormal * sn;
-                let p = c + radial * (radius * f);
-                let outward = normal * nx + binormal * ny;
-                let n = unit_or(outward - tilt, || radial);
-                p3.copy_from_slice(&[p.x, p.y, p.z]);
-                n3.copy_from_slice(&[n.x, n.y, n.z]);
-                t2.copy_from_slice(&[u, v]);
-            }
-        }
+        let ring = Ring { centre: c, normal, binormal, radius, tilt: tan * slope, inv, v };
+        write_ring(
+            &mut block,
+            r * stride,
+            circle,
+            &ring_factor,
+            &mut plane_normal,
+            &ring,
+            &wind.record(stem, t, radius),
+        );
         prev = Some((t, radius));
         last_center = c;
         last_radius = radius;
@@ -247,31 +216,11 @@ fn sweep_with(
     let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
     let v_apex = v + (apex_pos - last_center).length_hw() / (TAU * last_radius.max(1e-6));
     let apex_slot = rings * stride;
-    pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
-    nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&tip_tan.to_array());
-    uv[apex_slot * 2..apex_slot * 2 + 2].copy_from_slice(&[0.5, v_apex]);
-    wnd[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));
+    block.write(apex_slot, apex_pos, tip_tan, [0.5, v_apex]);
+    block.wind[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));
     let apex = first + apex_slot as u32;
     if trunk {
-        // Trunk base: a flat cap with its own downward-facing copy of the bottom ring (a hard edge).
-        let down = (-t0).to_array();
-        let cap = apex_slot + 1;
-        for (j, &(cs, sn, _)) in circle.iter().enumerate() {
-            let (src, dst) = (j * 3, (cap + j) * 3);
-            let ring0 = [pos[src], pos[src + 1], pos[src + 2]];
-            pos[dst..dst + 3].copy_from_slice(&ring0);
-            nrm[dst..dst + 3].copy_from_slice(&down);
-            uv[(cap + j) * 2..(cap + j) * 2 + 2].copy_from_slice(&[0.5 + 0.5 * cs, 0.5 + 0.5 * sn]);
-        }
-        let centre = cap + stride;
-        pos[centre * 3..centre * 3 + 3].copy_from_slice(&stem.base().to_array());
-        nrm[centre * 3..centre * 3 + 3].copy_from_slice(&down);
-        uv[centre * 2..centre * 2 + 2].copy_from_slice(&[0.5, 0.5]);
-        // The cap's ring copy and centre sway like the bottom ring.
-        let record: [f32; WIND_STRIDE] = wnd[..WIND_STRIDE].try_into().expect("ring 0 exists");
-        for w in wnd[cap * WIND_STRIDE..(centre + 1) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
-            w.copy_from_slice(&record);
-        }
+        write_trunk_cap(&mut block, apex_slot + 1, circle, stem.base(), -t0);
     }
     out.rings(first, rings as u32, stride as u32);
     StemMesh {
@@ -280,9 +229,93 @@ fn sweep_with(
         sides: sides as u32,
         ring0: 0,
         apex,
-        base: if trunk { Base::Trunk(apex + 1) } else { PENDING_CAP },
+        base: if trunk { Base::Trunk(apex + 1) } else { Base::Open },
         claim: 0,
         v0,
+    }
+}
+
+/// Where one ring of a sweep lies: its centre and frame, radius, the surface's tilt along the
+/// stem (`tangent × dr/ds`) with `1 / sqrt(1 + slope²)`, and its bark `v`.
+struct Ring {
+    centre: Vec3,
+    normal: Vec3,
+    binormal: Vec3,
+    radius: f32,
+    tilt: Vec3,
+    inv: f32,
+    v: f32,
+}
+
+/// Writes one ring's vertices from vertex `slot` of `block`: column `j` at `factors[j]` times
+/// the radius (a round ring when every factor is 1; else the in-plane normals, kept in
+/// `plane_normal`, are perpendicular to the chord between neighbouring columns).
+fn write_ring(
+    block: &mut VertexBlock,
+    slot: usize,
+    circle: &[(f32, f32, f32)],
+    factors: &[f32],
+    plane_normal: &mut [(f32, f32)],
+    g: &Ring,
+    record: &[f32; WIND_STRIDE],
+) {
+    let stride = circle.len();
+    let sides = stride - 1;
+    let ring_pos = block.positions[slot * 3..(slot + stride) * 3].chunks_exact_mut(3);
+    let ring_nrm = block.normals[slot * 3..(slot + stride) * 3].chunks_exact_mut(3);
+    let ring_uv = block.uvs[slot * 2..(slot + stride) * 2].chunks_exact_mut(2);
+    for w in block.wind[slot * WIND_STRIDE..(slot + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+        w.copy_from_slice(record);
+    }
+    let (c, normal, binormal, v) = (g.centre, g.normal, g.binormal, g.v);
+    if factors.iter().all(|&f| f == 1.0) {
+        for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
+            let radial = normal * cs + binormal * sn;
+            let p = c + radial * g.radius;
+            let n = (radial - g.tilt) * g.inv;
+            p3.copy_from_slice(&[p.x, p.y, p.z]);
+            n3.copy_from_slice(&[n.x, n.y, n.z]);
+            t2.copy_from_slice(&[u, v]);
+        }
+        return;
+    }
+    // In-plane outline normals: perpendicular to the chord between neighbouring columns.
+    let at = |j: usize| {
+        let (cs, sn, _) = circle[j];
+        (cs * factors[j], sn * factors[j])
+    };
+    for (j, n2) in plane_normal.iter_mut().enumerate() {
+        let (a, b) = (at(if j == 0 { sides - 1 } else { j - 1 }), at(if j == sides { 1 } else { j + 1 }));
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let len = (dx * dx + dy * dy).sqrt().max(1e-12);
+        *n2 = (dy / len, -dx / len);
+    }
+    for ((((p3, n3), t2), &(cs, sn, u)), (&f, &(nx, ny))) in
+        ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(factors.iter().zip(plane_normal.iter()))
+    {
+        let radial = normal * cs + binormal * sn;
+        let p = c + radial * (g.radius * f);
+        let outward = normal * nx + binormal * ny;
+        let n = unit_or(outward - g.tilt, || radial);
+        p3.copy_from_slice(&[p.x, p.y, p.z]);
+        n3.copy_from_slice(&[n.x, n.y, n.z]);
+        t2.copy_from_slice(&[u, v]);
+    }
+}
+
+/// Trunk base: a flat cap from vertex `cap` of `block`, its own copy of the bottom ring facing
+/// `down` (a hard edge), then the centre at `centre`; they sway like the bottom ring.
+fn write_trunk_cap(block: &mut VertexBlock, cap: usize, circle: &[(f32, f32, f32)], centre: Vec3, down: Vec3) {
+    for (j, &(cs, sn, _)) in circle.iter().enumerate() {
+        let src = j * 3;
+        let ring0 = Vec3::new(block.positions[src], block.positions[src + 1], block.positions[src + 2]);
+        block.write(cap + j, ring0, down, [0.5 + 0.5 * cs, 0.5 + 0.5 * sn]);
+    }
+    let middle = cap + circle.len();
+    block.write(middle, centre, down, [0.5, 0.5]);
+    let record: [f32; WIND_STRIDE] = block.wind[..WIND_STRIDE].try_into().expect("ring 0 exists");
+    for w in block.wind[cap * WIND_STRIDE..(middle + 1) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
+        w.copy_from_slice(&record);
     }
 }
 

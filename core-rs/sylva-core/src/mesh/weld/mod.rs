@@ -67,6 +67,7 @@
 //! swept again as a separate tube from its parent's axis with a closed base: a **fallback**, counted in [`super::tube::WeldStats`].
 //! Deeper levels (3) are always such closed separate tubes.
 
+mod footprint;
 mod join;
 mod zip;
 
@@ -74,7 +75,7 @@ pub(crate) use join::{join, well_wound, Join, Scratch};
 
 use crate::math::{atan2, unit_or, PI, TAU};
 use crate::params::TreeParams;
-use crate::skeleton::{Skeleton, Stem};
+use crate::skeleton::{Skeleton, Stem, StemKind};
 
 /// Smallest sine of the angle between a child and its parent that is welded (about 20°): below
 /// it the child leaves the parent's surface too far along its own length.
@@ -222,7 +223,7 @@ pub(crate) fn plan(skeleton: &Skeleton, p: &TreeParams, sides: &[u32]) -> Vec<Op
         for i in 0..n {
             let Some(j) = geo[i] else { continue };
             let parent = j.parent as usize;
-            if (stems[i].level == stems[parent].level) != clones {
+            if (stems[i].kind == StemKind::SplitClone) != clones {
                 continue;
             }
             // The parent's tube starts at its own junction ring if it gets one.

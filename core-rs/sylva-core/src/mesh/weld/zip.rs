@@ -6,16 +6,18 @@
 //! triangle would turn the wrong way and the other would not; one triangle per step, so every
 //! edge of both loops is used exactly once. These triangles lie on the parent's facets.
 
+use super::footprint::Rect;
 use super::join::{Join, Scratch};
 use crate::math::TAU;
 use glam::Vec2;
 
-/// Step 5: the hole over parent rows `ra..rb` and columns `ja..jb`, zipped to the footprint loop
+/// Step 5: the hole over the parent's quads `hole`, zipped to the footprint loop
 /// (written at `first_new`); its triangles are appended to `sc.tris`. The zip works in the
 /// parent's own surface coordinates (around, along; metres), where the hole is a rectangle and
 /// the footprint loop a closed curve inside it. False if the footprint loop does not turn
 /// monotonically around its centre there, or the zip would fold.
-pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, (ra, rb, ja, jb): (usize, usize, i32, i32), first_new: u32) -> bool {
+pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, hole: Rect, first_new: u32) -> bool {
+    let Rect { row_lo: ra, row_hi: rb, col_lo: ja, col_hi: jb } = hole;
     let pm = j.parent;
     let nr = j.child.sides as usize;
     let sides = pm.sides as i32;
@@ -50,7 +52,7 @@ pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, (ra, rb, ja, jb): (usize, usi
     let l = sc.hole.len();
     // The footprint loop in the same coordinates, and its centre.
     sc.foot_flat.clear();
-    sc.foot_flat.extend(sc.cells.iter().map(|&(r, c, uv)| at(r, c as f32 + uv.x, uv.y)));
+    sc.foot_flat.extend(sc.cells.iter().map(|cell| at(cell.row, cell.col as f32 + cell.at.x, cell.at.y)));
     let centre = sc.foot_flat.iter().copied().sum::<Vec2>() / nr as f32;
     let angle_of = |p: Vec2| turn_of(p - centre);
     // Angles from the hole's vertex of smallest angle; the rectangle turns monotonically around

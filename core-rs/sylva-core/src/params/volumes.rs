@@ -6,7 +6,6 @@
 //! "centre": [x, y, z], "radius": r}, {"kind": "box", ..., "size": [w, h, d]},
 //! {"kind": "cylinder", ..., "radius": r, "height": h}]`.
 
-use super::volume::Primitive;
 use crate::error::SylvaError;
 use glam::Vec3;
 
@@ -46,6 +45,34 @@ pub struct VolumePrimitive {
     pub group: VolumeGroup,
     /// Its shape and placement.
     pub shape: Primitive,
+}
+
+/// A user primitive's shape (the SCA add-on's volume objects), centred on `centre`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Primitive {
+    /// A ball.
+    Sphere {
+        /// Centre (m).
+        centre: Vec3,
+        /// Radius (m).
+        radius: f32,
+    },
+    /// An axis-aligned box of full extents `size`.
+    Box {
+        /// Centre (m).
+        centre: Vec3,
+        /// Full width, height and depth (m).
+        size: Vec3,
+    },
+    /// An upright cylinder of `radius` and full `height`.
+    Cylinder {
+        /// Centre (m; the axis runs from `centre.y - height / 2` to `centre.y + height / 2`).
+        centre: Vec3,
+        /// Radius (m).
+        radius: f32,
+        /// Full height (m).
+        height: f32,
+    },
 }
 
 fn bad(field: String, message: String) -> SylvaError {

@@ -1,0 +1,314 @@
+//! [`MeshBuilder`]: how the stages append vertices, triangles and material groups to a
+//! [`TreeMesh`] (lyon's `GeometryBuilder` idea), and the bark seam's unwrapping of `u`.
+
+use super::{Material, MeshGroup, TreeMesh, WIND_STRIDE};
+use crate::math;
+
+/// Appends geometry to a [`TreeMesh`] and keeps the material groups. A builder made with
+/// [`MeshBuilder::with_wind`] keeps [`TreeMesh::wind`] in step with the vertices: every way of
+/// adding vertices adds their wind records too (zeros unless given).
+pub struct MeshBuilder {
+    mesh: TreeMesh,
+    wind: bool,
+}
+
+/// A block of freshly appended, zeroed vertices (see [`MeshBuilder::alloc_vertices`]).
+pub struct VertexBlock<'a> {
+    /// Index of the first vertex of the block.
+    pub first: u32,
+    /// `3n` position floats.
+    pub positions: &'a mut [f32],
+    /// `3n` normal floats.
+    pub normals: &'a mut [f32],
+    /// `2n` uv floats.
+    pub uvs: &'a mut [f32],
+    /// `8n` wind floats ([`WIND_STRIDE`] per vertex), or empty when the builder has no wind.
+    pub wind: &'a mut [f32],
+}
+
+impl VertexBlock<'_> {
+    /// Writes the position, normal and uv of the block's vertex `slot`.
+    #[inline]
+    pub fn write(&mut self, slot: usize, p: glam::Vec3, n: glam::Vec3, uv: [f32; 2]) {
+        self.positions[slot * 3..slot * 3 + 3].copy_from_slice(&p.to_array());
+        self.normals[slot * 3..slot * 3 + 3].copy_from_slice(&n.to_array());
+        self.uvs[slot * 2..slot * 2 + 2].copy_from_slice(&uv);
+    }
+}
+
+impl MeshBuilder {
+    /// An empty builder with room for about `vertices` vertices and `indices` indices.
+    pub fn with_capacity(vertices: usize, indices: usize) -> Self {
+        MeshBuilder {
+            mesh: TreeMesh {
+                positions: Vec::with_capacity(vertices * 3),
+                normals: Vec::with_capacity(vertices * 3),
+                uvs: Vec::with_capacity(vertices * 2),
+                indices: Vec::with_capacity(indices),
+                groups: Vec::new(),
+                wind: Vec::new(),
+                rings: Vec::new(),
+                shade: Vec::new(),
+            },
+            wind: false,
+        }
+    }
+
+    /// Like [`MeshBuilder::with_capacity`], with a [`TreeMesh::wind`] record for every vertex.
+    pub fn with_wind(vertices: usize, indices: usize) -> Self {
+        let mut b = Self::with_capacity(vertices, indices);
+        b.mesh.wind = Vec::with_capacity(vertices * WIND_STRIDE);
+        b.wind = true;
+        b
+    }
+
+    /// Index the next vertex will get.
+    pub fn next_index(&self) -> u32 {
+        (self.mesh.positions.len() / 3) as u32
+    }
+
+    /// Append one vertex (with a zero wind record if the builder keeps wind); returns its index.
+    #[inline]
+    pub fn vertex(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2]) -> u32 {
+        self.vertex_with_wind(p, n, uv, &[0.0; WIND_STRIDE])
+    }
+
+    /// Append one vertex with its wind record (ignored if the builder keeps no wind).
+    #[inline]
+    pub fn vertex_with_wind(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2], wind: &[f32; WIND_STRIDE]) -> u32 {
+        let i = self.next_index();
+        self.mesh.positions.extend_from_slice(&p);
+        self.mesh.normals.extend_from_slice(&n);
+        self.mesh.uvs.extend_from_slice(&uv);
+        if self.wind {
+            self.mesh.wind.extend_from_slice(wind);
+        }
+        i
+    }
+
+    /// Append `n` zeroed vertices (and wind records) and return mutable views of them, for
+    /// stages that fill whole blocks.
+    pub fn alloc_vertices(&mut self, n: usize) -> VertexBlock<'_> {
+        let first = self.next_index();
+        let m = &mut self.mesh;
+        let (p, q, u, w) = (m.positions.len(), m.normals.len(), m.uvs.len(), m.wind.len());
+        m.positions.resize(p + 3 * n, 0.0);
+        m.normals.resize(q + 3 * n, 0.0);
+        m.uvs.resize(u + 2 * n, 0.0);
+        if self.wind {
+            m.wind.resize(w + WIND_STRIDE * n, 0.0);
+        }
+        VertexBlock {
+            first,
+            positions: &mut m.positions[p..],
+            normals: &mut m.normals[q..],
+            uvs: &mut m.uvs[u..],
+            wind: &mut m.wind[w..],
+        }
+    }
+
+    /// Record `count` tube rings of `stride` vertices each (`sides + 1`, see [`TreeMesh::rings`]),
+    /// the first starting at vertex `first`, the others following it back to back.
+    pub fn rings(&mut self, first: u32, count: u32, stride: u32) {
+        self.mesh.rings.extend((0..count).map(|r| [first + r * stride, stride]));
+    }
+
+    /// Drop every vertex from index `first` on (and its wind record, and the rings among them):
+    /// undoes a block whose triangles were never written.
+    pub fn truncate_vertices(&mut self, first: u32) {
+        let keep = self.mesh.rings.partition_point(|r| r[0] + r[1] <= first);
+        self.mesh.rings.truncate(keep);
+        let n = first as usize;
+        self.mesh.positions.truncate(n * 3);
+        self.mesh.normals.truncate(n * 3);
+        self.mesh.uvs.truncate(n * 2);
+        if self.wind {
+            self.mesh.wind.truncate(n * WIND_STRIDE);
+        }
+    }
+
+    /// Vertex `i`'s position and normal.
+    #[inline]
+    pub fn vertex_at(&self, i: u32) -> (glam::Vec3, glam::Vec3) {
+        let k = i as usize * 3;
+        let (p, n) = (&self.mesh.positions[k..k + 3], &self.mesh.normals[k..k + 3]);
+        (glam::Vec3::new(p[0], p[1], p[2]), glam::Vec3::new(n[0], n[1], n[2]))
+    }
+
+    /// Append `n` zeroed indices (a multiple of 3) and return them for filling.
+    pub fn alloc_indices(&mut self, n: usize) -> &mut [u32] {
+        let start = self.mesh.indices.len();
+        self.mesh.indices.resize(start + n, 0);
+        &mut self.mesh.indices[start..]
+    }
+
+    /// Append triangles given as a flat index list (counter-clockwise seen from outside).
+    pub fn extend_indices(&mut self, indices: &[u32]) {
+        self.mesh.indices.extend_from_slice(indices);
+    }
+
+    /// Replace vertex `i`'s normal.
+    #[inline]
+    pub fn set_normal(&mut self, i: u32, n: glam::Vec3) {
+        let k = i as usize * 3;
+        self.mesh.normals[k..k + 3].copy_from_slice(&n.to_array());
+    }
+
+    /// Vertex `i`'s wind record (zeros when this builder has no wind attributes).
+    #[inline]
+    pub fn wind_at(&self, i: u32) -> [f32; WIND_STRIDE] {
+        let k = i as usize * WIND_STRIDE;
+        self.mesh.wind.get(k..k + WIND_STRIDE).map_or([0.0; WIND_STRIDE], |w| w.try_into().expect("stride"))
+    }
+
+    /// Vertex `i`'s uv.
+    #[inline]
+    pub fn uv_at(&self, i: u32) -> [f32; 2] {
+        let k = i as usize * 2;
+        [self.mesh.uvs[k], self.mesh.uvs[k + 1]]
+    }
+
+    /// Makes bark `u` continuous across a stem's texture seam in the triangles `tris`, which
+    /// lie on one stem's bark but were built from vertices on both sides of its seam (`u` near 0
+    /// on one side, near 1 on the other; zips around a footprint that straddles the seam): each
+    /// triangle's vertices are moved by whole turns (the bark texture repeats) to span the
+    /// least `u` ([`seam_shifts`]). A moved vertex is replaced by its seam twin where it has one
+    /// (`twin(vertex, turns)`: a ring's first vertex and its last, `u` 0 and 1), else by a copy
+    /// at the same place with the moved `u`, one copy per vertex and shift. Copies keep the
+    /// normal and wind record, so the surface stays closed (welded by position) and sways as
+    /// one. False, with the copies dropped and `tris` half done, if it would take more than
+    /// `max` copies (the caller discards `tris`).
+    pub fn unwrap_u(&mut self, tris: &mut [u32], max: usize, twin: impl Fn(u32, i32) -> Option<u32>) -> bool {
+        let first = self.next_index();
+        let mut copies: Vec<(u32, i32, u32)> = Vec::new();
+        for t in tris.chunks_exact_mut(3) {
+            let shifts = seam_shifts([t[0], t[1], t[2]].map(|i| self.uv_at(i)[0]));
+            for (i, &k) in t.iter_mut().zip(&shifts) {
+                if k == 0 {
+                    continue;
+                }
+                if let Some(j) = twin(*i, k) {
+                    *i = j;
+                } else if let Some(&(.., c)) = copies.iter().find(|c| c.0 == *i && c.1 == k) {
+                    *i = c;
+                } else if copies.len() < max {
+                    let ((p, n), [u, v], w) = (self.vertex_at(*i), self.uv_at(*i), self.wind_at(*i));
+                    let c = self.vertex_with_wind(p.to_array(), n.to_array(), [u + k as f32, v], &w);
+                    copies.push((*i, k, c));
+                    *i = c;
+                } else {
+                    self.truncate_vertices(first);
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Component `k` of the flat positions buffer written so far.
+    #[inline]
+    pub fn position(&self, k: usize) -> f32 {
+        self.mesh.positions[k]
+    }
+
+    /// Append one triangle (counter-clockwise seen from outside).
+    #[inline]
+    pub fn triangle(&mut self, a: u32, b: u32, c: u32) {
+        self.mesh.indices.extend_from_slice(&[a, b, c]);
+    }
+
+    /// Start a material group at the current index; later triangles belong to it.
+    pub fn begin_group(&mut self, material: Material) {
+        self.close_group();
+        let start = self.mesh.indices.len() as u32;
+        self.mesh.groups.push(MeshGroup { material, start, count: 0 });
+    }
+
+    fn close_group(&mut self) {
+        let len = self.mesh.indices.len() as u32;
+        if let Some(g) = self.mesh.groups.last_mut() {
+            g.count = len - g.start;
+        }
+    }
+
+    /// The finished mesh (empty groups dropped).
+    pub fn finish(mut self) -> TreeMesh {
+        self.close_group();
+        self.mesh.groups.retain(|g| g.count > 0);
+        self.mesh
+    }
+}
+
+/// Whole turns to add to each of a triangle's three bark `u` so that they span the least:
+/// all within half a turn of one of them (the one that gives the smallest span; ties keep the
+/// fewest moves). All zero when the triangle does not cross a seam.
+#[inline]
+pub fn seam_shifts(u: [f32; 3]) -> [i32; 3] {
+    // Within half a turn, moving any vertex a whole turn only widens the span.
+    if span(u) <= 0.5 {
+        return [0; 3];
+    }
+    seam_shifts_across(u)
+}
+
+/// Largest minus smallest of three `u` (plain comparisons: `f32::max` is a call in wasm).
+#[inline(always)]
+fn span(u: [f32; 3]) -> f32 {
+    math::max(math::max(u[0], u[1]), u[2]) - math::min(math::min(u[0], u[1]), u[2])
+}
+
+/// [`seam_shifts`] for a triangle that spans more than half a turn.
+#[cold]
+fn seam_shifts_across(u: [f32; 3]) -> [i32; 3] {
+    let mut best = ([0; 3], f32::INFINITY, 0);
+    for anchor in u {
+        let k = u.map(|x| math::round(anchor - x) as i32);
+        let span = span([0, 1, 2].map(|i| u[i] + k[i] as f32));
+        let moves = k.iter().filter(|&&x| x != 0).count();
+        if span < best.1 - 1e-6 || (span < best.1 + 1e-6 && moves < best.2) {
+            best = (k, span, moves);
+        }
+    }
+    best.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seam_shifts_move_the_fewest_vertices_to_the_least_span() {
+        assert_eq!(seam_shifts([0.1, 0.2, 0.3]), [0, 0, 0]);
+        // One vertex moved rather than two.
+        assert_eq!(seam_shifts([0.95, 0.0, 0.05]), [-1, 0, 0]);
+        assert_eq!(seam_shifts([0.05, 0.95, 1.0]), [1, 0, 0]);
+        // Already a whole turn on (a copy's u): kept.
+        assert_eq!(seam_shifts([1.05, 0.95, 1.0]), [0, 0, 0]);
+        // A wide but continuous triangle is left alone.
+        assert_eq!(seam_shifts([1.0, 0.69, 0.478]), [0, 0, 0]);
+    }
+
+    #[test]
+    fn unwrap_u_copies_each_vertex_once_within_the_cap() {
+        let mut b = MeshBuilder::with_wind(8, 8);
+        for u in [0.9, 0.0, 0.05, 0.95] {
+            b.vertex_with_wind([u, 0.0, 0.0], [0.0, 0.0, 1.0], [u, 0.5], &[u; WIND_STRIDE]);
+        }
+        let mut tris = [0, 1, 3, 3, 1, 2];
+        assert!(b.unwrap_u(&mut tris, 8, |_, _| None));
+        assert_eq!(b.next_index(), 6, "two copies");
+        assert_eq!(tris, [0, 4, 3, 5, 1, 2]);
+        assert_eq!(b.uv_at(4), [1.0, 0.5]);
+        assert_eq!(b.vertex_at(4), b.vertex_at(1));
+        assert_eq!(b.uv_at(5), [0.95 - 1.0, 0.5]);
+        assert_eq!(b.wind_at(5), b.wind_at(3));
+        // Over the cap: nothing added.
+        let mut tris = [0, 1, 3, 3, 1, 2];
+        assert!(!b.unwrap_u(&mut tris, 1, |_, _| None));
+        assert_eq!(b.next_index(), 6);
+        // A seam twin is used instead of a copy.
+        let mut tris = [0, 1, 3];
+        assert!(b.unwrap_u(&mut tris, 0, |i, k| (i == 1 && k == 1).then_some(4)));
+        assert_eq!((tris, b.next_index()), ([0, 4, 3], 6));
+    }
+}

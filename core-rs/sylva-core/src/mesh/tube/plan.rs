@@ -1,0 +1,205 @@
+//! Planning the bark sweep ([`super`]) before any vertex exists: the sides of every stem, the
+//! welded junctions ([`weld::plan`]) grouped by parent, the ring positions along every stem, and
+//! a conservative vertex and index count checked against the budget (every junction counted as
+//! if it fell back to a separate tube).
+
+use super::rings::plan_rings;
+use super::sides_for;
+use crate::error::SylvaError;
+use crate::math::TAU;
+use crate::mesh::{fork, fork_rows, holes, twig, weld};
+use crate::params::TreeParams;
+use crate::skeleton::{budget_error, Skeleton, StemKind};
+use std::ops::Range;
+
+/// Bound on the rows of a junction's hole, for the index capacity estimate.
+const MAX_ROWS_BOUND: u64 = 8;
+
+/// How one stem will be meshed: its ring positions along the stem and its number of sides.
+pub(super) struct StemPlan {
+    /// Range into the shared ring-parameter buffer ([`Plan::ts`]).
+    pub rings: Range<usize>,
+    /// Sides around the stem.
+    pub sides: u32,
+}
+
+/// The plan of a whole tree's bark.
+pub(super) struct Plan {
+    /// Sides per stem, as planned for tubes (a twig's own count is in its [`StemPlan`]).
+    pub sides: Vec<u32>,
+    /// The junction of every stem welded into its parent.
+    pub junctions: Vec<Option<weld::Junction>>,
+    /// Stems meshed as Bezier twigs ([`twig`]).
+    pub twigs: Vec<bool>,
+    /// Stems swept densely enough for tree holes ([`holes::eligible`]; may be empty).
+    dense: Vec<bool>,
+    /// The junctions of every parent's welded children, grouped by parent, sorted along it.
+    feet: Vec<weld::Junction>,
+    /// Each stem's range of `feet`.
+    feet_of: Vec<Range<usize>>,
+    /// Ring positions (fractions of each stem), every stem's block in turn.
+    pub ts: Vec<f32>,
+    /// Every stem's rings and sides.
+    pub stems: Vec<StemPlan>,
+    /// Upper bounds of the vertices, the stems' indices and the junctions' indices.
+    pub vertices: u64,
+    pub indices: u64,
+    pub bridges: u64,
+}
+
+impl Plan {
+    /// Plans every stem. Fails with a budget error when the vertex count could pass
+    /// `max_vertices`.
+    pub fn new(skeleton: &Skeleton, p: &TreeParams) -> Result<Plan, SylvaError> {
+        let n = skeleton.stems.len();
+        let twig_candidates = twig::mask(skeleton, p);
+        let dense = holes::eligible(skeleton, p, &twig_candidates);
+        let mut sides = stem_sides(skeleton, p, &dense);
+        let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
+        // A fork's clone has its original's sides (column k of both points the same way).
+        for i in 0..n {
+            if let Some(j) = junctions[i].filter(|j| j.fork) {
+                sides[i] = sides[j.parent as usize];
+            }
+        }
+        // Welding wins: a twig candidate with a junction is swept as a tube and welded.
+        let twigs = twig_candidates.iter().zip(&junctions).map(|(&t, j)| t && j.is_none()).collect();
+        let (feet, feet_of) = group_by_parent(&junctions, n);
+        let mut plan = Plan {
+            sides,
+            junctions,
+            twigs,
+            dense,
+            feet,
+            feet_of,
+            ts: Vec::with_capacity(n * 8),
+            stems: Vec::with_capacity(n),
+            vertices: 0,
+            indices: 0,
+            bridges: 0,
+        };
+        plan.plan_stems(skeleton, p);
+        if plan.vertices > u64::from(p.max_vertices) {
+            return Err(budget_error(p, "", plan.vertices));
+        }
+        Ok(plan)
+    }
+
+    /// Whether stem `i` is swept densely enough for tree holes.
+    fn is_dense(&self, i: usize) -> bool {
+        self.dense.get(i) == Some(&true)
+    }
+
+    /// The junctions of stem `i`'s welded children, sorted along it.
+    pub fn feet(&self, i: usize) -> &[weld::Junction] {
+        &self.feet[self.feet_of[i].clone()]
+    }
+
+    /// Appends the ring positions of tube `i` to `out`, starting at `t0` (its junction ring if
+    /// it is welded, else 0): rings where it bends and around its children's footprints,
+    /// densified for holes, with its forks' rows kept open.
+    pub fn tube_rings(&self, skeleton: &Skeleton, p: &TreeParams, i: usize, t0: f32, out: &mut Vec<f32>) {
+        let (stem, sides, start) = (&skeleton.stems[i], self.sides[i], out.len());
+        let feet = self.feet(i);
+        plan_rings(stem, p.mesh_quality, feet, TAU / sides as f32, t0, out);
+        if self.is_dense(i) {
+            holes::densify(stem, sides, p, out, start);
+        }
+        fork::keep_gaps(feet, out, start);
+    }
+
+    /// Every stem's rings, and the vertex and index counts: tubes, apexes, caps, the collar
+    /// loops of every junction, and for each junction the rings a fallback to a buried tube
+    /// would add back.
+    fn plan_stems(&mut self, skeleton: &Skeleton, p: &TreeParams) {
+        let q = p.mesh_quality;
+        let mut ts = std::mem::take(&mut self.ts);
+        let mut fallback: Vec<f32> = Vec::new();
+        for (i, s) in skeleton.stems.iter().enumerate() {
+            let start = ts.len();
+            if self.twigs[i] {
+                let sides = twig::plan(s, p, &mut ts);
+                let rings = (ts.len() - start) as u64;
+                // Rings, the apex and the cap centre; quads and two fans.
+                self.vertices += rings * (u64::from(sides) + 1) + 2;
+                self.indices += (rings + 1) * u64::from(sides) * 6;
+                self.stems.push(StemPlan { rings: start..ts.len(), sides });
+                continue;
+            }
+            let t0 = self.junctions[i].map_or(0.0, |j| j.t_start);
+            self.tube_rings(skeleton, p, i, t0, &mut ts);
+            let plan = StemPlan { rings: start..ts.len(), sides: self.sides[i] };
+            let ring = u64::from(plan.sides) + 1;
+            self.vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
+            // Quads, tip fan and base fan; a junction's zip and collar quads.
+            self.indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
+            if let Some(j) = self.junctions[i] {
+                // Either the footprint loop and the collar loops, or a fallback swept from the
+                // parent's axis: planned here as it would be (densified for holes too), so that
+                // the budget holds either way.
+                fallback.clear();
+                self.tube_rings(skeleton, p, i, 0.0, &mut fallback);
+                let more = fallback.len().saturating_sub(plan.rings.len());
+                let fork = j.fork.then(|| fork_rows::rows(&j, &skeleton.stems[j.parent as usize], q));
+                let joined = match fork {
+                    Some(rows) => fork::vertices(self.sides[i], rows) as u64,
+                    // The footprint loop twice, the collar loops, and up to a ring of copies
+                    // across the parent's seam (`MeshBuilder::unwrap_u`).
+                    None => (weld::collar_loops(q) as u64 + 3) * ring,
+                };
+                self.vertices += (more as u64 * ring).max(joined);
+                self.bridges += fork.map_or(0, |rows| fork::indices(self.sides[i], rows) as u64);
+                self.bridges += (2 * u64::from(plan.sides) * (weld::collar_loops(q) as u64 + 1)
+                    + 4 * (MAX_ROWS_BOUND + u64::from(self.sides[s.parent.map_or(0, |q| q as usize)])))
+                    * 3;
+            }
+            self.stems.push(plan);
+        }
+        self.ts = ts;
+    }
+}
+
+/// Sides per stem: by radius and quality ([`sides_for`], lobes on the trunk), more on stems
+/// densified for holes, and even on both branches of a split that may fork.
+fn stem_sides(skeleton: &Skeleton, p: &TreeParams, dense: &[bool]) -> Vec<u32> {
+    let stems = &skeleton.stems;
+    let mut sides: Vec<u32> = stems
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            let plain = sides_for(s.radius, p.mesh_quality, if s.lobed { p.lobes } else { 0 });
+            if dense.get(i) == Some(&true) {
+                holes::dense_sides(plain, p)
+            } else {
+                plain
+            }
+        })
+        .collect();
+    if p.weld {
+        // Forks need an even number of sides on both branches of a split.
+        for (i, s) in stems.iter().enumerate() {
+            if weld::is_candidate(stems, i) && s.kind == StemKind::SplitClone {
+                let o = s.parent.map_or(i, |q| q as usize);
+                sides[o] += sides[o] % 2;
+                sides[i] += sides[i] % 2;
+            }
+        }
+    }
+    sides
+}
+
+/// The junctions grouped by parent, sorted along it, and each stem's range of them.
+fn group_by_parent(junctions: &[Option<weld::Junction>], n: usize) -> (Vec<weld::Junction>, Vec<Range<usize>>) {
+    let mut feet: Vec<weld::Junction> = junctions.iter().flatten().copied().collect();
+    feet.sort_by(|a, b| a.parent.cmp(&b.parent).then(a.t_lo.total_cmp(&b.t_lo)));
+    let mut of = Vec::with_capacity(n);
+    let mut at = 0;
+    for i in 0..n as u32 {
+        let from = at;
+        while at < feet.len() && feet[at].parent == i {
+            at += 1;
+        }
+        of.push(from..at);
+    }
+    (feet, of)
+}

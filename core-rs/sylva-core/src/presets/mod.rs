@@ -1,0 +1,96 @@
+//! # Named presets
+//!
+//! Sets of non-default parameter values. A preset is data, applied on top of the defaults, so
+//! the registry stays the one place that knows ranges and defaults.
+//!
+//! | file | holds |
+//! |---|---|
+//! | `species.rs` | Weber & Penn's four species, with the paper's values |
+//! | `shapes.rs` | five trees that illustrate one crown shape each |
+//! | `grown.rs` | the space-colonization trees |
+
+mod grown;
+mod shapes;
+mod species;
+
+use crate::error::SylvaError;
+use crate::params::TreeParams;
+use serde::Serialize;
+
+/// A named set of parameter values.
+#[derive(Clone, Debug, Serialize)]
+pub struct Preset {
+    /// Id used in URLs and the CLI (`--preset`).
+    pub name: &'static str,
+    /// Display name.
+    pub label: &'static str,
+    /// One line about the tree.
+    pub description: &'static str,
+    /// The leaf preset it wears ([`crate::leaf::presets`]): its values come first, the
+    /// tree's own values after them.
+    pub leaf: &'static str,
+    /// Values that differ from the defaults, by parameter id.
+    pub values: &'static [(&'static str, f64)],
+}
+
+/// All presets, the default tree first. The four Weber & Penn species use the paper's values
+/// (ANCHORS §3); the next five illustrate one crown shape each; the `grown_*` presets use
+/// space-colonization growth.
+pub const PRESETS: &[Preset] = &[
+    DEFAULT,
+    species::QUAKING_ASPEN,
+    species::BLACK_TUPELO,
+    species::WEEPING_WILLOW,
+    species::CA_BLACK_OAK,
+    shapes::FIR,
+    shapes::OAK,
+    shapes::CYPRESS,
+    shapes::UMBRELLA,
+    shapes::WEEPING,
+    grown::GROWN_BROADLEAF,
+    grown::GROWN_SHRUB,
+    grown::GROWN_HEDGEROW,
+    grown::GROWN_BESIDE_WALL,
+    grown::GROWN_BUSHY,
+];
+
+/// The default tree: the registry's defaults.
+const DEFAULT: Preset = Preset {
+    name: "default",
+    label: "Default (Cylindrical)",
+    description: "Aspen-like broadleaf with the Cylindrical crown, the guide's starting point.",
+    leaf: "aspen",
+    values: &[],
+};
+
+/// Find a preset by name.
+pub fn find(name: &str) -> Option<&'static Preset> {
+    PRESETS.iter().find(|p| p.name.eq_ignore_ascii_case(name))
+}
+
+impl Preset {
+    /// The preset's full parameters (defaults + its values).
+    pub fn params(&self) -> Result<TreeParams, SylvaError> {
+        TreeParams::from_values(self.all_values())
+    }
+
+    /// The leaf preset's values, then the tree's own (so a share link or the panel gets both).
+    pub fn all_values(&self) -> Vec<(&'static str, f64)> {
+        let leaf = crate::leaf::presets::find(self.leaf).map_or(&[][..], |l| l.values);
+        leaf.iter().chain(self.values).copied().collect()
+    }
+}
+
+/// All presets as JSON: `[{name, label, description, leaf, values: {id: number}}]` (the values
+/// include the leaf preset's).
+pub fn presets_json() -> String {
+    let list: Vec<serde_json::Value> = PRESETS
+        .iter()
+        .map(|p| {
+            let values: serde_json::Map<String, serde_json::Value> =
+                p.all_values().into_iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
+            serde_json::json!({"name": p.name, "label": p.label, "description": p.description, "leaf": p.leaf, "values": values})
+        })
+        .collect();
+    serde_json::Value::Array(list).to_string()
+}
