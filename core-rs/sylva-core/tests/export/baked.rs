@@ -1,6 +1,6 @@
 //! The GLB for editors (`LeafMode::Baked`): every leaf in one mesh, each vertex with its
-//! leaf's tint (`COLOR_0`, scaled into 0..1 by `extras.leaf_tint_scale`) and the wind record
-//! of the twig it hangs on (`_WIND_PIVOT`, `_WIND_PARAMS`, coded as the bark's).
+//! leaf's tint (`COLOR_0`, clamped to 0..1) and the wind record of the twig it hangs on
+//! (`_WIND_PIVOT`, `_WIND_PARAMS`, coded as the bark's); sound geometry on every preset.
 
 use super::*;
 use glam::Vec3;
@@ -73,23 +73,16 @@ fn baked_leaves_carry_their_tint_and_their_twigs_wind() {
         // One node and one mesh for every leaf.
         assert_eq!(glb.json["nodes"].as_array().unwrap().len(), 3, "{name}: sylva_tree, bark, leaves");
         assert_eq!(glb.json["meshes"].as_array().unwrap().len(), 2, "{name}");
-        // The tint, scaled by one factor that brings the largest component to 1.
-        let scale = leaves["extras"]["leaf_tint_scale"].as_f64().unwrap() as f32;
-        let max = f.colors.iter().cloned().fold(0.0, f32::max);
-        assert!(max > 1.0 && (scale * max - 1.0).abs() < 1e-6, "{name}: {scale} x {max}");
+        // The tint: the instanced file's (`_COLOR_0`, the crown's shade included) as bytes,
+        // clamped to 0..1.
         let colors = unorm8(&glb, attrs["COLOR_0"].as_u64().unwrap());
+        assert_eq!(colors.len(), nv * f.count(), "{name}");
         for (k, tint) in f.colors.chunks_exact(3).enumerate() {
-            for c in &colors[k * nv..(k + 1) * nv] {
-                for i in 0..3 {
-                    let want = tint[i] * scale;
-                    assert!(
-                        (f32::from(c[i]) / 255.0 - want).abs() <= 0.5 / 255.0 + 1e-6,
-                        "{name} leaf {k}: {c:?} vs {want}"
-                    );
-                }
-                assert_eq!(c[3], 255);
-            }
+            let want: [u8; 4] =
+                std::array::from_fn(|i| tint.get(i).map_or(255, |&c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
+            assert!(colors[k * nv..(k + 1) * nv].iter().all(|c| *c == want), "{name} leaf {k}: {want:?}");
         }
+        assert!(leaves["extras"].get("leaf_tint_scale").is_none());
         // The wind: coded as the bark's, one record per leaf, the record of the bark of the stem
         // it hangs on where it meets it.
         let bark = glb.mesh_of("bark");
@@ -123,17 +116,51 @@ fn baked_leaves_carry_their_tint_and_their_twigs_wind() {
     }
 }
 
+/// The indices of a primitive, widened: `u16` up to 65,535 vertices, `u32` past that.
+fn indices(glb: &Glb, primitive: &Value, vertices: usize) -> Vec<u32> {
+    let a = glb.accessor(primitive["indices"].as_u64().unwrap());
+    let wide = vertices > 65_535;
+    assert_eq!(a["componentType"], if wide { 5125 } else { 5123 }, "{vertices} vertices");
+    let v = &glb.json["bufferViews"][a["bufferView"].as_u64().unwrap() as usize];
+    let base = v["byteOffset"].as_u64().unwrap() as usize + a["byteOffset"].as_u64().unwrap_or(0) as usize;
+    let count = a["count"].as_u64().unwrap() as usize;
+    if wide {
+        (0..count).map(|i| u32_at(&glb.bin, base + 4 * i)).collect()
+    } else {
+        (0..count).map(|i| u32::from(u16::from_le_bytes(glb.bin[base + 2 * i..][..2].try_into().unwrap()))).collect()
+    }
+}
+
 #[test]
 fn baked_leaves_hang_on_a_stem_on_every_preset() {
-    // Each leaf's pivot is the base of a stem whose centre curve passes within 5 mm of the
-    // leaf's foot (the pivot decoded within a millimetre), at that stem's level.
+    // Sound geometry: one copy of the leaf mesh per leaf, a colour and a wind record on every
+    // vertex, finite positions, unit normals (within the validator's 0.00674 for quantised
+    // ones), indices in range (`u32` past 65,535 vertices). And each leaf's pivot is the base of
+    // a stem whose centre curve passes within 5 mm of the leaf's foot (the pivot decoded within
+    // a millimetre), at that stem's level.
     for name in presets::PRESETS.iter().map(|p| p.name) {
         let g = preset(name);
         let glb = parse(&export::to_glb(
             &g,
             &ExportOptions { leaves: LeafMode::Baked, textures: false, ..Default::default() },
         ));
+        glb.check_layout();
         let leaves = glb.mesh_of("leaves");
+        let prim = &leaves["primitives"][0];
+        let attrs = &prim["attributes"];
+        let n = g.foliage.count() * g.foliage.mesh.vertex_count();
+        for key in ["POSITION", "NORMAL", "TEXCOORD_0", "COLOR_0", "_WIND_PIVOT", "_WIND_PARAMS"] {
+            assert_eq!(glb.accessor(attrs[key].as_u64().unwrap())["count"], n, "{name} {key}");
+        }
+        let positions = glb.floats(attrs["POSITION"].as_u64().unwrap());
+        assert!(positions.iter().flatten().all(|c| c.is_finite()), "{name}");
+        for (v, normal) in glb.snorm8(attrs["NORMAL"].as_u64().unwrap()).iter().enumerate() {
+            let len = normal.iter().map(|c| c * c).sum::<f32>().sqrt();
+            assert!((len - 1.0).abs() <= 0.00674, "{name} vertex {v}: |n| = {len}");
+        }
+        let idx = indices(&glb, prim, n);
+        assert_eq!(idx.len(), g.foliage.count() * g.foliage.mesh.indices.len(), "{name}");
+        assert!(idx.iter().all(|&i| (i as usize) < n), "{name}");
         let doc = &leaves["extras"]["wind_attributes"]["_WIND_PIVOT"];
         let decode = |q: &[u16], c: usize| {
             doc["offset"][c].as_f64().unwrap() as f32

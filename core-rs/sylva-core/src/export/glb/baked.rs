@@ -5,37 +5,32 @@
 //! Every leaf's copy of the leaf mesh ([`crate::export::bake_leaves`]: positions, normals, UVs,
 //! tangents) carries two more things per vertex:
 //!
-//! * **Its leaf's tint** as `COLOR_0`, times one factor for the whole file ([`tint_scale`]):
-//!   glTF clamps `COLOR_0` to 0..1 and the foliage's tints reach about 1.15 (a leaf brighter
-//!   and yellower than the texture), so the tints are scaled to fit rather than clipped, which
-//!   keeps every leaf's colour relative to the others. The factor is in the leaf mesh's
-//!   `extras.leaf_tint_scale`; it does not depend on the textures.
+//! * **Its leaf's tint** as `COLOR_0` (RGBA8): the instanced file's `_COLOR_0`, which already
+//!   holds the crown's shade (inner leaves darker, [`crate::crown_shade`]), clamped to glTF's
+//!   0..1 as the OBJ's vertex colours are. On the presets at most 0.6% of the leaves have a
+//!   component past 1 (bright outer leaves; 22% of the small `grown_bushy`, whose brightest
+//!   reach 1.10): clamping keeps every other leaf exactly as the engines' file shows it, where
+//!   scaling all of them to fit would darken the whole crown.
 //! * **The wind record of its twig** (`_WIND_PIVOT`, `_WIND_PARAMS`, [`leaf_wind`]), so a
 //!   shader that sways the bark with them sways each leaf with the twig it hangs on: the same
 //!   pivot, level and phase, and the twig's stiffness, distance from the root and radius where
-//!   the leaf meets it. All the vertices of one leaf share its record.
+//!   the leaf meets it. All the vertices of one leaf share its record. (The instanced file
+//!   has no per-leaf wind record: a shader there takes a leaf's anchor from its instance
+//!   translation, which the baked file no longer has.)
 
-use crate::export::{bake_leaves, unorm8, BakedLeaves};
-use crate::foliage::Foliage;
+use crate::export::{bake_leaves, BakedLeaves};
 use crate::mesh::{Bounds, WIND_STRIDE};
 use crate::Generated;
 use glam::Vec3;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
-/// The baked leaves of `g` ([`bake_leaves`]) with the scaled tints ([`tint_scale`]) as
-/// colours and, with `wind`, each leaf's wind record repeated on its vertices (`mesh.wind`,
-/// when the bark carries wind data; [`leaf_wind`]).
+/// The baked leaves of `g` ([`bake_leaves`]: the clamped tints as colours) and, with `wind`,
+/// each leaf's wind record repeated on its vertices (`mesh.wind`, when the bark carries wind
+/// data; [`leaf_wind`]).
 pub(super) fn bake(g: &Generated, with_tangents: bool, wind: bool, threads: usize) -> BakedLeaves {
-    let f = &g.foliage;
-    let mut b = bake_leaves(f, with_tangents);
-    let nv = f.mesh.vertex_count();
-    let s = tint_scale(f);
-    b.colors.clear();
-    for rgb in f.colors.chunks_exact(3) {
-        let c = [unorm8(rgb[0] * s), unorm8(rgb[1] * s), unorm8(rgb[2] * s), 255];
-        (0..nv).for_each(|_| b.colors.extend_from_slice(&c));
-    }
+    let mut b = bake_leaves(&g.foliage, with_tangents);
+    let nv = g.foliage.mesh.vertex_count();
     if let Some(records) = wind.then(|| leaf_wind(g, threads)).flatten() {
         b.mesh.wind = Vec::with_capacity(records.len() * nv * WIND_STRIDE);
         for r in &records {
@@ -45,12 +40,6 @@ pub(super) fn bake(g: &Generated, with_tangents: bool, wind: bool, threads: usiz
     b
 }
 
-/// The factor the baked leaves' tints are multiplied by to fit `COLOR_0`'s 0..1: one over the
-/// largest tint component of the tree, or 1 when no component passes 1.
-pub fn tint_scale(f: &Foliage) -> f32 {
-    1.0 / f.colors.iter().fold(1.0f32, |m, &c| if c > m { c } else { m })
-}
-
 /// Per leaf of `g`, a wind record (`TreeMesh::wind` layout: pivot, level, phase, stiffness,
 /// distance, radius) of the stem it hangs on: the stem whose centre curve passes nearest to
 /// where the leaf meets it ([`attachment`]; ties go to the lower stem index), and of that
@@ -58,7 +47,7 @@ pub fn tint_scale(f: &Foliage) -> f32 {
 /// one nearest to that point (ties to the lower vertex index). A stem without bark vertices
 /// hands its leaves to its parent. `None` when the bark has no wind data or there are no
 /// leaves. The same records on any number of `threads`.
-pub fn leaf_wind(g: &Generated, threads: usize) -> Option<Vec<[f32; WIND_STRIDE]>> {
+pub(super) fn leaf_wind(g: &Generated, threads: usize) -> Option<Vec<[f32; WIND_STRIDE]>> {
     let (bark, f, stems) = (&g.mesh, &g.foliage, &g.skeleton.stems);
     let n = bark.vertex_count();
     if n == 0 || bark.wind.len() != n * WIND_STRIDE || f.count() == 0 || stems.is_empty() {
@@ -170,7 +159,7 @@ fn stem_key(pivot: &[f32], level: f32) -> (u64, u64) {
 /// Where a leaf with instance matrix `m` (column-major 4×4, leaf units to metres) meets its
 /// stem: the foot of its petiole, leaf point `(0, −petiole, 0)` (the blade's base when
 /// `petiole` is 0), which the foliage places on the stem's centre curve.
-pub fn attachment(m: &[f32], petiole: f32) -> Vec3 {
+fn attachment(m: &[f32], petiole: f32) -> Vec3 {
     Vec3::new(m[12] - petiole * m[4], m[13] - petiole * m[5], m[14] - petiole * m[6])
 }
 

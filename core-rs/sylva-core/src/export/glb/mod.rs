@@ -44,9 +44,9 @@
 //!   `instanceColor`). The extension is listed in `extensionsUsed` but not required: a viewer
 //!   without it shows the single leaf mesh at the origin. [`LeafMode::Baked`] (the file for
 //!   editors, which import the extension as one object per leaf): all leaves transformed into
-//!   one mesh (`baked.rs`) with the tint as `COLOR_0` (scaled into 0..1 by one factor, the
-//!   mesh's `extras.leaf_tint_scale`) and, with wind, each leaf's twig's wind record, coded as
-//!   the bark's.
+//!   one mesh (`baked.rs`) with the tint as `COLOR_0` (RGBA8, clamped to 0..1) and, with
+//!   wind, each leaf's twig's wind record, coded as the bark's (the bark's codec and
+//!   `extras`); indices `u32` past 65,535 vertices, as the bark's.
 //! * **Materials** (metallic-roughness, metallic 0): `bark` (roughness 0.9, bark colour map,
 //!   bark normal map, textures REPEAT-wrapped: bark UVs run past 1 along the stems); `leaves`
 //!   (roughness 0.7, leaf colour map with `alphaMode` MASK, cutoff 0.5, `doubleSided`, leaf
@@ -240,9 +240,6 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
             bounds: None,
         };
         let mesh = doc.mesh("leaves", &b.mesh, &extra, pick);
-        if opts.vertex_colors {
-            doc.meshes[mesh]["extras"]["leaf_tint_scale"] = json!(f64::from(baked::tint_scale(f)));
-        }
         doc.nodes.push(json!({"name": "leaves", "mesh": mesh}));
         children.push(doc.nodes.len());
     }
