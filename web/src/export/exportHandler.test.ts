@@ -133,7 +133,9 @@ describe('export request (worker handler, real core)', () => {
     expect(names.length).toBeGreaterThan(2);
     for (const texture of names.slice(2)) {
       expect(mtl).toContain(texture);
-      expect([...(files[texture] ?? new Uint8Array(0)).subarray(0, 4)]).toEqual([0x89, 0x50, 0x4e, 0x47]);
+      expect([...(files[texture] ?? new Uint8Array(0)).subarray(0, 4)]).toEqual([
+        0x89, 0x50, 0x4e, 0x47,
+      ]);
     }
     // The same files as the core's exporters write, compressed.
     const tree = loadWasm().generate(JSON.stringify({ levels: 2 })) as ExportableTree;
