@@ -2,7 +2,8 @@
 // through the native CLI (`sylva generate --preset NAME --out FILE.glb --leaves MODE`), in both
 // leaf modes (instanced, baked), and validates each file with the Khronos glTF Validator
 // (npm `gltf-validator`, `validateBytes`). Prints one line per file with the error, warning and
-// info counts and the messages of any error or warning; exits 1 if any file has an error.
+// info counts and the messages of any error or warning; exits 1 if any file has an error or a
+// warning (both kinds must pass with none).
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
 //
@@ -41,11 +42,11 @@ for (const name of presets) {
     if (keepAt < 0) rmSync(file);
     const report = await validateBytes(bytes, { maxIssues: 100 });
     const { numErrors, numWarnings, numInfos } = report.issues;
-    if (numErrors > 0) failed++;
+    if (numErrors > 0 || numWarnings > 0) failed++;
     warnings += numWarnings;
     console.log(
       `${name.padEnd(19)} ${leaves.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
-        (numErrors ? '  FAIL' : ''),
+        (numErrors || numWarnings ? '  FAIL' : ''),
     );
     for (const m of report.issues.messages) {
       if (m.severity <= 1)

@@ -1,10 +1,16 @@
 /**
- * The app toolbar: PNG screenshot, preset JSON save → load, GLB/OBJ (when the core has the
- * exporters), "Copy embed code" and the docs link.
+ * The app toolbar: PNG screenshot, preset JSON save → load, the GLB for engines, the GLB for
+ * editors and the zipped OBJ (when the core has the exporters; both GLBs the same bytes as the
+ * native CLI's, the baked one drawn by three.js), "Copy embed code" and the docs link.
  */
 import { expect, test, type Download, type Page } from '@playwright/test';
-import { readFileSync } from 'node:fs';
+import { unzipSync } from 'fflate';
+import { execFileSync } from 'node:child_process';
+import { copyFileSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { nativeCli } from '../../scripts/native-cli.mjs';
 import { waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 const QUERY = 'v=1&seed=5&levels=2';
@@ -88,34 +94,195 @@ test('PNG screenshot and preset JSON save → load', async ({ page }) => {
   expect(errors).toEqual([]);
 });
 
+/** The native CLI's GLB of the app's `QUERY` tree (seed 5, two levels) with `leaves`. */
+function cliGlb(leaves: 'instanced' | 'baked'): Buffer {
+  const dir = mkdtempSync(join(tmpdir(), 'sylva-e2e-glb-'));
+  try {
+    const file = join(dir, 'tree.glb');
+    execFileSync(
+      nativeCli(),
+      ['generate', '--seed', '5', '--set', 'levels=2', '--leaves', leaves, '--out', file],
+      { stdio: 'ignore' },
+    );
+    return readFileSync(file);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+}
+
 test('GLB and OBJ export follow the core', async ({ page }) => {
+  test.setTimeout(240_000);
   const errors = watchErrors(page);
   await page.goto(`/?${QUERY}`);
   await waitForTree(page);
   await page.getByTestId('export-menu').click();
   const glb = page.getByTestId('export-glb');
+  const baked = page.getByTestId('export-glb-baked');
   const obj = page.getByTestId('export-obj');
+  // The two GLBs say what they are for and when to choose them.
+  await expect(glb).toContainText('GLB for engines (instanced leaves)');
+  await expect(page.getByTestId('export-glb-hint')).toContainText('three.js');
+  await expect(baked).toContainText(
+    'GLB for Blender and other editors (leaves merged into one mesh)',
+  );
+  await expect(page.getByTestId('export-glb-baked-hint')).toContainText('Blender');
   if (coreHasExporters()) {
     await expect(glb).toBeEnabled();
+    await expect(baked).toBeEnabled();
     await page.getByTestId('export-menu').click();
+    // Both GLBs: the same bytes as the native CLI for the same parameters.
     const file = await bytesOf(await exportItem(page, 'export-glb'));
     expect(file.subarray(0, 4).toString('latin1')).toBe('glTF');
-    expect(file.readUInt32LE(4)).toBe(2);
     expect(file.readUInt32LE(8)).toBe(file.length);
+    expect(file.equals(cliGlb('instanced'))).toBe(true);
+    const bakedDownload = await exportItem(page, 'export-glb-baked');
+    expect(bakedDownload.suggestedFilename()).toMatch(/\.glb$/);
+    const bakedFile = await bytesOf(bakedDownload);
+    expect(bakedFile.equals(cliGlb('baked'))).toBe(true);
+    const json = JSON.parse(bakedFile.subarray(20, 20 + bakedFile.readUInt32LE(12)).toString()) as {
+      extensionsUsed?: string[];
+      meshes: { name: string; primitives: { attributes: Record<string, number> }[] }[];
+    };
+    expect(json.extensionsUsed ?? []).not.toContain('EXT_mesh_gpu_instancing');
+    const leaves = json.meshes.find((m) => m.name === 'leaves');
+    expect(Object.keys(leaves?.primitives[0]?.attributes ?? {})).toEqual(
+      expect.arrayContaining(['COLOR_0', '_WIND_PIVOT', '_WIND_PARAMS']),
+    );
+    await expect(page.getByTestId('toolbar-status')).toContainText('.glb');
+
     const zip = await exportItem(page, 'export-obj');
-    expect(zip.suggestedFilename()).toMatch(/\.zip$/);
-    const archive = (await bytesOf(zip)).toString('latin1');
-    expect(archive.startsWith('PK\x03\x04')).toBe(true);
-    expect(archive).toMatch(/\nv -?\d/);
-    expect(archive).toContain('newmtl');
+    expect(zip.suggestedFilename()).toMatch(/-obj\.zip$/);
+    const archive = unzipSync(new Uint8Array(await bytesOf(zip)));
+    const names = Object.keys(archive);
+    expect(names.some((n) => n.endsWith('.obj'))).toBe(true);
+    const objName = names.find((n) => n.endsWith('.obj')) ?? '';
+    const mtlName = names.find((n) => n.endsWith('.mtl')) ?? '';
+    expect(new TextDecoder().decode(archive[objName])).toMatch(/\nv -?\d/);
+    expect(new TextDecoder().decode(archive[mtlName])).toContain('newmtl');
+    await expect(page.getByTestId('toolbar-status')).toContainText('OBJ, MTL and textures');
   } else {
     // This core has no exporters yet: the items are offered but disabled, with the reason.
     await expect(glb).toBeDisabled();
+    await expect(baked).toBeDisabled();
     await expect(obj).toBeDisabled();
     await expect(glb).toHaveAttribute('title', /no exporter/);
   }
   expect(errors).toEqual([]);
 });
+
+test("the baked GLB in three.js: leaves in the crown, tinted, with their twigs' wind", async ({
+  page,
+}) => {
+  test.skip(!coreHasExporters(), 'this core has no exporters');
+  const glb = cliGlb('baked');
+  const three = fileURLToPath(new URL('../../node_modules/three/', import.meta.url));
+  // A bare page (no app) that loads the file with three.js's GLTFLoader and draws it.
+  await page.route('**/baked-view/**', async (route) => {
+    const path = new URL(route.request().url()).pathname.replace(/^\/baked-view\//, '');
+    if (path === 'index.html') {
+      await route.fulfill({ contentType: 'text/html', body: BAKED_VIEW_HTML });
+    } else if (path === 'tree.glb') {
+      await route.fulfill({ contentType: 'model/gltf-binary', body: glb });
+    } else if (path.startsWith('three/')) {
+      const file = join(three, path.slice('three/'.length));
+      await route.fulfill({ contentType: 'text/javascript', body: readFileSync(file) });
+    } else {
+      await route.fulfill({ status: 404 });
+    }
+  });
+  await page.goto('/baked-view/index.html');
+  const report = await page.waitForFunction(() => (window as { report?: unknown }).report, null, {
+    timeout: 120_000,
+  });
+  const r = (await report.jsonValue()) as {
+    error?: string;
+    leafVertices: number;
+    leafBox: number[];
+    barkBox: number[];
+    tint: number[];
+    windLevels: number[];
+    hasTexture: boolean;
+  };
+  expect(r.error).toBeUndefined();
+  expect(r.leafVertices).toBeGreaterThan(1000);
+  expect(r.hasTexture).toBe(true);
+  // The leaves sit in the crown: within the bark's box grown by half a metre, and above its foot.
+  const [lx0, ly0, lz0, lx1, ly1, lz1] = r.leafBox;
+  const [bx0, by0, bz0, bx1, by1, bz1] = r.barkBox;
+  for (const [inner, outer] of [
+    [lx0, (bx0 ?? 0) - 0.5],
+    [ly0, by0 ?? 0],
+    [lz0, (bz0 ?? 0) - 0.5],
+  ] as const) {
+    expect(inner).toBeGreaterThanOrEqual(outer);
+  }
+  for (const [inner, outer] of [
+    [lx1, (bx1 ?? 0) + 0.5],
+    [ly1, (by1 ?? 0) + 0.5],
+    [lz1, (bz1 ?? 0) + 0.5],
+  ] as const) {
+    expect(inner).toBeLessThanOrEqual(outer);
+  }
+  // Tinted (the crown's shade: some leaves darker than others) and hung on twigs (level >= 1).
+  const [tmin, tmax] = r.tint;
+  expect((tmax ?? 0) - (tmin ?? 0)).toBeGreaterThan(0.1);
+  expect(Math.min(...r.windLevels)).toBeGreaterThanOrEqual(1);
+  await page.screenshot({ path: test.info().outputPath('baked-glb.png') });
+  const shot = test.info().outputPath('baked-glb.png');
+  await test.info().attach('baked GLB in three.js', { path: shot, contentType: 'image/png' });
+  if (process.env.SYLVA_E2E_SHOT) copyFileSync(shot, process.env.SYLVA_E2E_SHOT);
+});
+
+/** The bare three.js page of the baked-GLB test: loads tree.glb, draws it, reports on it. */
+const BAKED_VIEW_HTML = `<!doctype html>
+<html><head><meta charset="utf-8"><style>html,body{margin:0;background:#cfe3f0}</style>
+<script type="importmap">{"imports":{"three":"/baked-view/three/build/three.module.js",
+"three/addons/":"/baked-view/three/examples/jsm/"}}</script></head>
+<body><script type="module">
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+try {
+  const gltf = await new GLTFLoader().loadAsync('/baked-view/tree.glb');
+  const scene = new THREE.Scene();
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x445533, 2.5));
+  const sun = new THREE.DirectionalLight(0xffffff, 2);
+  sun.position.set(3, 8, 5);
+  scene.add(sun, gltf.scene);
+  const leaves = gltf.scene.getObjectByName('leaves');
+  const bark = gltf.scene.getObjectByName('bark');
+  const box = (o) => { const b = new THREE.Box3().setFromObject(o); return [...b.min.toArray(), ...b.max.toArray()]; };
+  const g = leaves.geometry;
+  const color = g.getAttribute('color');
+  const lum = [];
+  for (let i = 0; i < color.count; i += 97) lum.push((color.getX(i) + color.getY(i) + color.getZ(i)) / 3);
+  const pivot = g.getAttribute('_wind_pivot');
+  const doc = leaves.userData.wind_attributes._WIND_PIVOT;
+  const levels = [];
+  for (let i = 0; i < pivot.count; i += 97) levels.push(Math.round(doc.offset[3] + doc.scale[3] * pivot.getW(i)));
+  const all = new THREE.Box3().setFromObject(gltf.scene);
+  const size = all.getSize(new THREE.Vector3());
+  const centre = all.getCenter(new THREE.Vector3());
+  const camera = new THREE.PerspectiveCamera(40, innerWidth / innerHeight, 0.1, 200);
+  const d = Math.max(size.x, size.y, size.z) * 1.6;
+  camera.position.set(centre.x + d * 0.6, centre.y + d * 0.15, centre.z + d * 0.8);
+  camera.lookAt(centre);
+  const renderer = new THREE.WebGLRenderer({ antialias: true });
+  renderer.setSize(innerWidth, innerHeight);
+  renderer.setClearColor(0xcfe3f0);
+  document.body.appendChild(renderer.domElement);
+  renderer.render(scene, camera);
+  window.report = {
+    leafVertices: g.getAttribute('position').count,
+    leafBox: box(leaves),
+    barkBox: box(bark),
+    tint: [Math.min(...lum), Math.max(...lum)],
+    windLevels: levels,
+    hasTexture: !!leaves.material.map,
+  };
+} catch (e) {
+  window.report = { error: String(e && e.stack || e) };
+}
+</script></body></html>`;
 
 test('Copy embed code and the docs link', async ({ page, context, baseURL }) => {
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);

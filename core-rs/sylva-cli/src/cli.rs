@@ -147,8 +147,8 @@ pub struct Sets {
 /// How an export is written (`generate --out`, `bench --glb`).
 #[derive(Args, Debug)]
 pub struct ExportArgs {
-    /// How leaves are written: instanced (default; GLB: EXT_mesh_gpu_instancing), baked into one
-    /// mesh, or none
+    /// How leaves are written: instanced (default; GLB: EXT_mesh_gpu_instancing, for engines and
+    /// three.js), baked into one mesh (for Blender and other editors), or none
     #[arg(long, value_name = "instanced|baked|none", value_parser = leaf_mode)]
     pub leaves: Option<LeafMode>,
     /// No images: plain material colours

@@ -545,3 +545,7 @@ fn obj_and_mtl() {
     let bare = export::obj::obj(&g, &ExportOptions { leaves: LeafMode::None, ..o }, "bush");
     assert_eq!(bare.lines().filter(|l| l.starts_with("f ")).count(), g.mesh.triangle_count());
 }
+
+/// Baked leaves: the tint and the wind records of every leaf vertex.
+#[path = "export/baked.rs"]
+mod baked;

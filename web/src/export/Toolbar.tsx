@@ -1,6 +1,7 @@
 /**
- * The viewer toolbar: Export menu (PNG screenshot, preset JSON save/load, GLB and OBJ when the
- * core has exporters), "Copy embed code" and a link to the docs page.
+ * The viewer toolbar: Export menu (PNG screenshot, preset JSON save/load and, when the core has
+ * exporters, a GLB for engines, a GLB for editors and a zipped OBJ, each with a line saying when
+ * to choose it), "Copy embed code" and a link to the docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
@@ -11,14 +12,13 @@ import { encodeVolumes } from '../url/codec';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { canvasPng, downloadBlob, readTextFile } from './download';
 import { ExportClient } from './exportClient';
-import type { ExportFormat } from './exportProtocol';
+import type { ExportFormat, LeafExport } from './exportProtocol';
 import {
   MAX_PRESET_FILE_BYTES,
   parsePresetFile,
   presetFileName,
   presetFileText,
 } from './presetFile';
-import { zipStore } from './zip';
 import './toolbar.css';
 
 interface Props {
@@ -34,6 +34,41 @@ interface Props {
 }
 
 type Status = { kind: 'ok' | 'error' | 'busy'; text: string } | null;
+
+/** A mesh download of the Export menu. */
+interface MeshExport {
+  testId: string;
+  format: ExportFormat;
+  /** GLB: how the leaves are written (the core's default: instanced). */
+  leaves?: LeafExport;
+  label: string;
+  /** One line: when to choose it. */
+  hint: string;
+}
+
+/** The mesh downloads, in menu order (docs/formats.md says which to choose for which tool). */
+export const MESH_EXPORTS: readonly MeshExport[] = [
+  {
+    testId: 'export-glb',
+    format: 'glb',
+    leaves: 'instanced',
+    label: 'GLB for engines (instanced leaves)',
+    hint: 'For three.js and Unity (glTFast): one leaf mesh drawn once per leaf, the lightest file.',
+  },
+  {
+    testId: 'export-glb-baked',
+    format: 'glb',
+    leaves: 'baked',
+    label: 'GLB for Blender and other editors (leaves merged into one mesh)',
+    hint: 'For Blender, Unreal and other editors, which would make one object per instanced leaf.',
+  },
+  {
+    testId: 'export-obj',
+    format: 'obj',
+    label: 'OBJ + MTL + textures (zip)',
+    hint: 'For tools without glTF (and Godot): leaves merged, no wind data.',
+  },
+];
 
 /** Toolbar over the viewer (top right). */
 export function Toolbar(props: Props) {
@@ -114,48 +149,29 @@ export function Toolbar(props: Props) {
       });
   };
 
-  const exportMesh = (format: ExportFormat) => {
+  const exportMesh = ({ format, leaves, label }: MeshExport) => {
     closeMenu();
-    setStatus({ kind: 'busy', text: `Exporting ${format.toUpperCase()}…` });
+    setStatus({ kind: 'busy', text: `Exporting ${label}…` });
     client()
-      .export(params, volumesRef.current ?? [], format, { name: baseName })
+      .export(params, volumesRef.current ?? [], format, {
+        name: baseName,
+        ...(leaves ? { leaves } : {}),
+      })
       .then((response) => {
-        const [first] = response.files;
-        if (response.files.length === 1 && first) {
-          const name = first.name;
-          const blob =
-            'blob' in first
-              ? first.blob
-              : new Blob([first.bytes as BlobPart], { type: first.mime });
-          downloadBlob(blob, name);
-          setStatus({ kind: 'ok', text: `Saved ${name}.` });
-        } else {
-          const name = `${baseName}-${format}.zip`;
-          downloadBlob(
-            new Blob(
-              [zipStore(response.files.flatMap((f) => ('bytes' in f ? [f] : []))) as BlobPart],
-              {
-                type: 'application/zip',
-              },
-            ),
-            name,
-          );
-          setStatus({
-            kind: 'ok',
-            text: `Saved ${name} (${response.files.length} files: OBJ, MTL and textures).`,
-          });
-        }
+        // One file: the GLB, or the ZIP of the OBJ, its MTL and its textures.
+        const [file] = response.files;
+        if (!file) throw new Error('the exporter returned no file');
+        const blob =
+          'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
+        downloadBlob(blob, file.name);
+        const contents = format === 'obj' ? ' (OBJ, MTL and textures)' : '';
+        setStatus({ kind: 'ok', text: `Saved ${file.name}${contents}.` });
       })
       .catch((error: unknown) => {
         const message = error instanceof Error ? error.message : String(error);
         setStatus({ kind: 'error', text: `Export failed: ${message}` });
       });
   };
-
-  const meshFormats: { format: ExportFormat; label: string }[] = [
-    { format: 'glb', label: 'GLB (glTF 2.0)' },
-    { format: 'obj', label: 'OBJ + MTL + textures (zip)' },
-  ];
 
   return (
     <div className="toolbar" data-testid="toolbar">
@@ -178,13 +194,14 @@ export function Toolbar(props: Props) {
           >
             Load preset JSON…
           </button>
-          {meshFormats.map(({ format, label }) => {
-            const available = Array.isArray(formats) && formats.includes(format);
+          {MESH_EXPORTS.map((item) => {
+            const available = Array.isArray(formats) && formats.includes(item.format);
             return (
               <button
-                key={format}
+                key={item.testId}
                 type="button"
-                data-testid={`export-${format}`}
+                className="toolbar-item-hinted"
+                data-testid={item.testId}
                 disabled={!available}
                 title={
                   available
@@ -193,9 +210,12 @@ export function Toolbar(props: Props) {
                       ? 'Checking the core…'
                       : 'This build of the Sylva core has no exporter for this format yet'
                 }
-                onClick={() => exportMesh(format)}
+                onClick={() => exportMesh(item)}
               >
-                {label}
+                {item.label}
+                <span className="toolbar-hint" data-testid={`${item.testId}-hint`}>
+                  {item.hint}
+                </span>
               </button>
             );
           })}

@@ -1,4 +1,5 @@
 /** Mesh export, worker side (the real core's exporters), the client, and the ZIP writer. */
+import { unzipSync } from 'fflate';
 import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
 import { harness } from '../testing/workerHarness';
@@ -6,9 +7,8 @@ import type { WasmApi } from '../core/types';
 import { createHandler } from '../worker/handler';
 import type { WorkerResponse } from '../worker/protocol';
 import { ExportClient } from './exportClient';
-import { exportFormatsOf, fileStem, type ExportableTree } from './exportHandler';
-import type { ExportedFile } from './exportProtocol';
-import { crc32, zipStore } from './zip';
+import { exportFiles, exportFormatsOf, fileStem, type ExportableTree } from './exportHandler';
+import { zipFiles } from './zip';
 
 /** The real wasm whose trees hide the exporters (a core from before the export branch). */
 function withoutExporters(): WasmApi {
@@ -113,23 +113,40 @@ describe('export request (worker handler, real core)', () => {
     expect(sent.at(-1)?.transfer).toEqual([file.bytes.buffer]);
   });
 
-  it('OBJ: the OBJ, its MTL and the textures the MTL names', () => {
+  it('OBJ: one deflated ZIP of the OBJ, its MTL and the textures the MTL names', () => {
     const { sent, handle } = collect(loadWasm());
     handle({ type: 'export', id: 1, params: { levels: 2 }, format: 'obj', name: 'fir' });
-    const files = exported(sent).files;
-    const names = files.map((f) => f.name);
+    const [zip, ...more] = exported(sent).files;
+    expect(more).toEqual([]);
+    if (!zip || !('bytes' in zip)) throw new Error('a ZIP comes as bytes');
+    expect(zip.name).toBe('fir-obj.zip');
+    expect(zip.mime).toBe('application/zip');
+    expect(sent.at(-1)?.transfer).toEqual([zip.bytes.buffer]);
+    const files = unzipSync(zip.bytes);
+    const names = Object.keys(files);
     expect(names.slice(0, 2)).toEqual(['fir.obj', 'fir.mtl']);
-    const bytesOf = (f: ExportedFile | undefined) =>
-      f && 'bytes' in f ? f.bytes : new Uint8Array(0);
-    const obj = new TextDecoder().decode(bytesOf(files[0]));
-    const mtl = new TextDecoder().decode(bytesOf(files[1]));
+    const obj = new TextDecoder().decode(files['fir.obj']);
+    const mtl = new TextDecoder().decode(files['fir.mtl']);
     expect(obj).toMatch(/^mtllib fir\.mtl$/m);
     expect(obj).toMatch(/^v -?\d/m);
     expect(mtl).toMatch(/^newmtl /m);
-    for (const texture of files.slice(2)) {
-      expect(mtl).toContain(texture.name);
-      expect([...bytesOf(texture).subarray(0, 4)]).toEqual([0x89, 0x50, 0x4e, 0x47]);
+    expect(names.length).toBeGreaterThan(2);
+    for (const texture of names.slice(2)) {
+      expect(mtl).toContain(texture);
+      expect([...(files[texture] ?? new Uint8Array(0)).subarray(0, 4)]).toEqual([
+        0x89, 0x50, 0x4e, 0x47,
+      ]);
     }
+    // The same files as the core's exporters write, compressed.
+    const tree = loadWasm().generate(JSON.stringify({ levels: 2 })) as ExportableTree;
+    const loose = exportFiles(tree, 'obj', undefined, 'fir');
+    tree.free();
+    expect(names).toEqual(loose.map((f) => f.name));
+    for (const file of loose) {
+      expect(files[file.name]).toEqual('bytes' in file ? file.bytes : null);
+    }
+    const stored = loose.reduce((n, f) => n + ('bytes' in f ? f.bytes.length : 0), 0);
+    expect(zip.bytes.length).toBeLessThan(stored / 2);
   });
 
   it('a core without exporters, or invalid params, answer a typed error', () => {
@@ -185,30 +202,44 @@ describe('ExportClient', () => {
   });
 });
 
-describe('zipStore', () => {
-  it('writes a valid stored archive (signatures, CRC, sizes, offsets)', () => {
-    const enc = new TextEncoder();
-    const a = enc.encode('mtllib tree.mtl\nv 0 0 0\n');
-    const b = enc.encode('newmtl bark\n');
-    const zip = zipStore([
-      { name: 'tree.obj', bytes: a },
-      { name: 'tree.mtl', bytes: b },
-    ]);
-    const view = new DataView(zip.buffer);
+describe('zipFiles', () => {
+  const enc = new TextEncoder();
+  const obj = enc.encode('mtllib tree.mtl\n' + 'v 0.125 1.5 -0.25 0.8 0.7 0.6\n'.repeat(4000));
+  const mtl = enc.encode('newmtl bark\nKd 1 1 1\n');
+  // A PNG-like file: bytes that do not compress (already deflated), stored as they are.
+  const png = new Uint8Array(4096).map((_, i) => (i * 2654435761) >>> 24);
+  const files = [
+    { name: 'tree.obj', bytes: obj },
+    { name: 'tree.mtl', bytes: mtl },
+    { name: 'tree_bark_color.png', bytes: png },
+  ];
+
+  it('fflate unzips the archive back to the same files, in order', () => {
+    const back = unzipSync(zipFiles(files));
+    expect(Object.keys(back)).toEqual(['tree.obj', 'tree.mtl', 'tree_bark_color.png']);
+    for (const f of files) expect(back[f.name]).toEqual(f.bytes);
+  });
+
+  it('deflates text (smaller than a stored archive), stores PNGs, same bytes every time', () => {
+    const zip = zipFiles(files);
+    const stored = files.reduce((n, f) => n + 30 + 46 + 2 * f.name.length + f.bytes.length, 22);
+    expect(zip.length).toBeLessThan(stored / 10);
+    // Local headers: method 8 (deflate) for the OBJ, 0 (stored) for the PNG, 1980-01-01.
+    const view = new DataView(zip.buffer, zip.byteOffset, zip.byteLength);
     expect(view.getUint32(0, true)).toBe(0x04034b50);
-    expect(view.getUint32(14, true)).toBe(crc32(a));
-    expect(view.getUint32(18, true)).toBe(a.length);
+    expect(view.getUint16(8, true)).toBe(8);
+    expect(view.getUint16(12, true)).toBe(0x21);
     const end = zip.length - 22;
-    expect(view.getUint32(end, true)).toBe(0x06054b50);
-    expect(view.getUint16(end + 10, true)).toBe(2);
-    const centralAt = view.getUint32(end + 16, true);
-    expect(view.getUint32(centralAt, true)).toBe(0x02014b50);
-    const secondCentral = centralAt + 46 + 'tree.obj'.length;
-    const secondLocal = view.getUint32(secondCentral + 42, true);
-    expect(view.getUint32(secondLocal, true)).toBe(0x04034b50);
-    expect(new TextDecoder().decode(zip.subarray(secondLocal + 30, secondLocal + 38))).toBe(
-      'tree.mtl',
+    const central = view.getUint32(end + 16, true);
+    const thirdCentral = central + 2 * 46 + 'tree.obj'.length + 'tree.mtl'.length;
+    expect(view.getUint16(thirdCentral + 10, true)).toBe(0);
+    expect(view.getUint32(thirdCentral + 20, true)).toBe(png.length);
+    expect(zipFiles(files)).toEqual(zip);
+  });
+
+  it('refuses two files of one name', () => {
+    expect(() => zipFiles([files[1], files[1]].flatMap((f) => (f ? [f] : [])))).toThrow(
+      /Two files named "tree.mtl"/,
     );
-    expect(crc32(enc.encode('123456789'))).toBe(0xcbf43926);
   });
 });

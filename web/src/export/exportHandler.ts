@@ -1,6 +1,6 @@
 /**
  * Worker side of the mesh export: feature detection of the core's exporters and one export
- * (regenerate, serialise, transfer). The core's API (`GeneratedTree`): `to_glb_file(options_json)`
+ * (regenerate, serialise, zip an OBJ's files, transfer). The core's API (`GeneratedTree`): `to_glb_file(options_json)`
  * (the GLB left in the module's memory, read through a view) or `to_glb(options_json)` (a copy),
  * `to_obj(name, options_json)`, `to_mtl(name, options_json)`, `obj_texture_names(name,
  * options_json)` and `obj_texture(options_json, index)` (PNG files the MTL refers to).
@@ -10,6 +10,7 @@ import type { WasmApi, WasmTree } from '../core/types';
 import { volumeToCore } from '../core/volumes';
 import type { WorkerResponse } from '../worker/protocol';
 import type { ExportedFile, ExportFormat, ExportRequest } from './exportProtocol';
+import { zipFiles } from './zip';
 
 /** A GLB in the core's memory (`GeneratedTree.to_glb_file`): read it, then free it. */
 export interface CoreFile {
@@ -100,8 +101,17 @@ export function exportFiles(
 }
 
 /**
+ * The files of an OBJ export as one download: a ZIP (deflated, `zipFiles`) named after the stem,
+ * made here in the worker so the compression never holds up the page.
+ */
+export function objArchive(files: readonly ExportedFile[], name?: string): ExportedFile {
+  const loose = files.flatMap((f) => ('bytes' in f ? [f] : []));
+  return { name: `${fileStem(name)}-obj.zip`, mime: 'application/zip', bytes: zipFiles(loose) };
+}
+
+/**
  * Answers an export request: regenerates the tree and posts the files (byte buffers
- * transferred, Blobs shared).
+ * transferred, Blobs shared): a GLB, or the OBJ, its MTL and its textures in one ZIP.
  * Throws what `generate` or an exporter threw; the handler reports it like a generate error.
  */
 export function exportTree(
@@ -115,7 +125,8 @@ export function exportTree(
   const tree: ExportableTree = wasm.generate(JSON.stringify(input));
   try {
     const { hash } = parseMeta(tree.meta_json());
-    const files = exportFiles(tree, request.format, request.leaves, request.name);
+    const exported = exportFiles(tree, request.format, request.leaves, request.name);
+    const files = request.format === 'obj' ? [objArchive(exported, request.name)] : exported;
     post(
       { type: 'exported', id: request.id, format: request.format, hash, files },
       files.flatMap((f) => ('bytes' in f ? [f.bytes.buffer] : [])),

@@ -8,7 +8,11 @@ import type { Params, VolumePrimitive } from '../core/types';
 /** File formats the core may export. */
 export type ExportFormat = 'glb' | 'obj';
 
-/** How leaves go into a GLB: one instanced mesh, baked into the tree mesh, or left out. */
+/**
+ * How leaves go into a GLB: one leaf mesh instanced per leaf (`EXT_mesh_gpu_instancing`, for
+ * engines), every leaf merged into one leaf mesh (`baked`, for Blender and other editors), or
+ * left out.
+ */
 export type LeafExport = 'instanced' | 'baked' | 'none';
 
 /** Ask the worker to regenerate `params` and export the tree. */
@@ -33,7 +37,10 @@ export type ExportedFile = { name: string; mime: string } & (
   { bytes: Uint8Array } | { blob: Blob }
 );
 
-/** The exported files of request `id`, with the tree's content hash. */
+/**
+ * The exported files of request `id`, with the tree's content hash: one GLB, or for an OBJ one
+ * ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and the textures the MTL names.
+ */
 export interface ExportResponse {
   type: 'exported';
   id: number;

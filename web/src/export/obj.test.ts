@@ -123,6 +123,39 @@ describe('GLB export', () => {
     }
   });
 
+  it("three.js's GLTFLoader reads the baked leaves: one mesh, a tint and a twig's wind per vertex", async () => {
+    const tree = generate({});
+    try {
+      const meta = JSON.parse(tree.meta_json()) as { leaves: number };
+      const leafVertices = (tree.leaf_positions?.().length ?? 0) / 3;
+      const glb = tree.to_glb('{"textures":false,"leaves":"baked"}');
+      const buffer = glb.buffer.slice(
+        glb.byteOffset,
+        glb.byteOffset + glb.byteLength,
+      ) as ArrayBuffer;
+      const gltf = await new GLTFLoader().parseAsync(buffer, '');
+      const meshes: Mesh[] = [];
+      gltf.scene.traverse((o) => {
+        if (o instanceof Mesh) meshes.push(o as Mesh);
+      });
+      expect(meshes.map((m) => m.name).sort()).toEqual(['bark', 'leaves']);
+      const leaves = meshes.find((m) => m.name === 'leaves') as Mesh<BufferGeometry>;
+      expect(leaves).not.toBeInstanceOf(InstancedMesh);
+      const count = leafVertices * meta.leaves;
+      expect(count).toBeGreaterThan(65_535);
+      expect(leaves.geometry.getAttribute('position').count).toBe(count);
+      expect(leaves.geometry.index?.array).toBeInstanceOf(Uint32Array);
+      for (const name of ['color', '_wind_pivot', '_wind_params']) {
+        expect(leaves.geometry.getAttribute(name).count).toBe(count);
+      }
+      // The wind is coded as the bark's (same offsets and scales).
+      const bark = meshes.find((m) => m.name === 'bark') as Mesh;
+      expect(leaves.userData.wind_attributes).toEqual(bark.userData.wind_attributes);
+    } finally {
+      tree.free();
+    }
+  });
+
   it("three.js's GLTFLoader reads the instanced leaves (textures off: no image decoding in Node)", async () => {
     const tree = generate({});
     try {

@@ -42,8 +42,11 @@
 //!   `EXT_mesh_gpu_instancing` (`TRANSLATION`, `ROTATION`, `SCALE` decomposed from the foliage
 //!   matrices, `_COLOR_0` the per-leaf RGB tint, float, as three.js reads it into
 //!   `instanceColor`). The extension is listed in `extensionsUsed` but not required: a viewer
-//!   without it shows the single leaf mesh at the origin. [`LeafMode::Baked`]: all leaves
-//!   transformed into one mesh ([`super::bake_leaves`]) with the tint as `COLOR_0`.
+//!   without it shows the single leaf mesh at the origin. [`LeafMode::Baked`] (the file for
+//!   editors, which import the extension as one object per leaf): all leaves transformed into
+//!   one mesh (`baked.rs`) with the tint as `COLOR_0` (RGBA8, clamped to 0..1) and, with
+//!   wind, each leaf's twig's wind record, coded as the bark's (the bark's codec and
+//!   `extras`); indices `u32` past 65,535 vertices, as the bark's.
 //! * **Materials** (metallic-roughness, metallic 0): `bark` (roughness 0.9, bark colour map,
 //!   bark normal map, textures REPEAT-wrapped: bark UVs run past 1 along the stems); `leaves`
 //!   (roughness 0.7, leaf colour map with `alphaMode` MASK, cutoff 0.5, `doubleSided`, leaf
@@ -70,6 +73,7 @@
 //! Code: this file lays the file out (`write_into`, `assemble`); `doc.rs` builds the JSON
 //! (views, accessors, meshes), `data.rs` holds the BIN chunk's arrays and their encoders.
 
+mod baked;
 mod data;
 mod doc;
 
@@ -139,7 +143,7 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let owned = Owned {
         bark_pngs: (has_bark && opts.textures).then(|| super::bark_pngs(g.bark, opts.bark_texture_size)),
         baked: (has_leaves && opts.leaves == LeafMode::Baked)
-            .then(|| super::bake_leaves(f, tangents && leaf_pngs.is_some())),
+            .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads)),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
             .then(|| super::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
         leaf_pngs,
@@ -211,9 +215,11 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         Material::Bark => bark_material.or(leaf_material).unwrap_or(0),
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
     };
+    let mut bark_wind = None;
     if has_bark {
         let wind = opts.wind && bark.wind.len() == bark.vertex_count() * WIND_STRIDE;
         let (bounds, wind) = bark_ranges(bark, wind, threads);
+        bark_wind = wind;
         let extra = VertexExtras {
             tangents: (tangents && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
             colors: opts.vertex_colors.then_some(Colors::Bark(bounds)),
@@ -228,7 +234,9 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         let extra = VertexExtras {
             tangents: (!b.tangents.is_empty()).then_some(Data::FramesOf(&b.mesh.normals, &b.tangents)),
             colors: opts.vertex_colors.then_some(Colors::Bytes(&b.colors)),
-            wind: None,
+            // Copies of bark records: the bark's codec covers them, and a leaf's quantised
+            // record is its twig's.
+            wind: bark_wind.filter(|_| !b.mesh.wind.is_empty()),
             bounds: None,
         };
         let mesh = doc.mesh("leaves", &b.mesh, &extra, pick);
