@@ -22,11 +22,7 @@ const root = fileURLToPath(new URL('..', import.meta.url));
  * a branch in flight that rewrites it (issue #18 leaves them to their owners); the lead removes
  * the line when that branch lands.
  */
-export const ALLOWED = [
-  // The GLB writer's entry point is rewritten by the export branch (baked leaves with wind):
-  // split it when that lands.
-  'core-rs/sylva-core/src/export/glb/mod.rs fn write_into_threads',
-];
+export const ALLOWED = [];
 
 /** True for the files the rule leaves out: tests, benches, generated code. */
 export function isExempt(path, text = '') {

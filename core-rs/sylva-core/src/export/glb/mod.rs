@@ -78,6 +78,7 @@ mod data;
 mod doc;
 
 use super::{ExportOptions, LeafMode, TexturePngs};
+use crate::foliage::Foliage;
 use crate::mesh::{merge_ranges, ranges, Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
 use data::{Data, Part, WindCodec};
@@ -155,62 +156,10 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     ]);
     let mut children = Vec::new();
     let mut used_samplers = [false; 2];
-    let mut bark_material = None;
-    if has_bark {
-        let mut pbr = Map::new();
-        pbr.insert("metallicFactor".into(), json!(0.0));
-        pbr.insert("roughnessFactor".into(), json!(0.9));
-        let mut mat = Map::new();
-        mat.insert("name".into(), json!("bark"));
-        if let Some(p) = &owned.bark_pngs {
-            used_samplers[0] = true;
-            let color = doc.texture(&p.color, "bark_color", 0);
-            pbr.insert("baseColorTexture".into(), json!({"index": color}));
-            if let Some(orm) = &p.orm {
-                // One packed map: glTF reads roughness from G (metalness B = 0) and occlusion from R.
-                let orm = doc.texture(orm, "bark_orm", 0);
-                pbr.insert("metallicRoughnessTexture".into(), json!({"index": orm}));
-                pbr.insert("roughnessFactor".into(), json!(1.0));
-                mat.insert("occlusionTexture".into(), json!({"index": orm}));
-            }
-            if normal_maps {
-                let normal = doc.texture(&p.normal, "bark_normal", 0);
-                mat.insert("normalTexture".into(), json!({"index": normal}));
-            }
-        } else {
-            // The viewer's plain bark colour #5b3d26, in linear RGB.
-            pbr.insert("baseColorFactor".into(), json!([0.1046, 0.0467, 0.0194, 1.0]));
-        }
-        mat.insert("pbrMetallicRoughness".into(), Value::Object(pbr));
-        doc.materials.push(Value::Object(mat));
-        bark_material = Some(doc.materials.len() - 1);
-    }
-    let mut leaf_material = None;
-    if has_leaves || bark.groups.iter().any(|g| g.material == Material::Leaves) {
-        let mut pbr = Map::new();
-        pbr.insert("metallicFactor".into(), json!(0.0));
-        pbr.insert("roughnessFactor".into(), json!(0.7));
-        let mut mat = Map::new();
-        mat.insert("name".into(), json!("leaves"));
-        mat.insert("doubleSided".into(), json!(true));
-        if let Some(p) = &owned.leaf_pngs {
-            used_samplers[1] = true;
-            let color = doc.texture(&p.color, "leaf_color", 1);
-            pbr.insert("baseColorTexture".into(), json!({"index": color}));
-            mat.insert("alphaMode".into(), json!("MASK"));
-            mat.insert("alphaCutoff".into(), json!(0.5));
-            if normal_maps {
-                let normal = doc.texture(&p.normal, "leaf_normal", 1);
-                mat.insert("normalTexture".into(), json!({"index": normal}));
-            }
-        } else {
-            // The leaf texture's blade green (0.30, 0.52, 0.18 in sRGB), in linear RGB.
-            pbr.insert("baseColorFactor".into(), json!([0.0742, 0.2346, 0.0273, 1.0]));
-        }
-        mat.insert("pbrMetallicRoughness".into(), Value::Object(pbr));
-        doc.materials.push(Value::Object(mat));
-        leaf_material = Some(doc.materials.len() - 1);
-    }
+    let bark_material =
+        has_bark.then(|| material(&mut doc, &BARK, owned.bark_pngs.as_deref(), normal_maps, &mut used_samplers));
+    let leaf_material = (has_leaves || bark.groups.iter().any(|g| g.material == Material::Leaves))
+        .then(|| material(&mut doc, &LEAVES, owned.leaf_pngs.as_deref(), normal_maps, &mut used_samplers));
     let pick = |m: Material| match m {
         Material::Bark => bark_material.or(leaf_material).unwrap_or(0),
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
@@ -244,31 +193,120 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         children.push(doc.nodes.len());
     }
     if instanced {
-        let m = &f.matrices[..];
-        let extra = VertexExtras {
-            tangents: owned.leaf_tangents.as_deref().map(|t| Data::FramesOf(&f.mesh.normals, t)),
-            ..VertexExtras::default()
-        };
-        let mesh = doc.mesh("leaf", &f.mesh, &extra, |_| pick(Material::Leaves));
-        let n = f.count();
-        let mut attrs = Map::new();
-        let mut trs = |key: &str, part: Part, kind: &'static str| {
-            attrs.insert(key.into(), json!(doc.array(Data::Trs(m, part), None, Acc::new(FLOAT, kind, n))));
-        };
-        trs("TRANSLATION", Part::Translation, "VEC3");
-        trs("ROTATION", Part::Rotation, "VEC4");
-        trs("SCALE", Part::Scale, "VEC3");
-        if opts.vertex_colors {
-            attrs.insert("_COLOR_0".into(), json!(doc.array(Data::F32(&f.colors), None, Acc::new(FLOAT, "VEC3", n))));
-        }
-        doc.nodes.push(json!({
-            "name": "leaves",
-            "mesh": mesh,
-            "extensions": {"EXT_mesh_gpu_instancing": {"attributes": Value::Object(attrs)}},
-        }));
+        let mesh = doc.mesh("leaf", &f.mesh, &extra_of(owned.leaf_tangents.as_deref(), f), |_| pick(Material::Leaves));
+        instanced_leaves_node(&mut doc, f, mesh, opts.vertex_colors);
         children.push(doc.nodes.len());
     }
     assemble(doc, g, samplers, used_samplers, instanced, children, out, threads);
+}
+
+/// What differs between the bark's and the leaves' materials.
+struct MaterialSpec {
+    name: &'static str,
+    roughness: f64,
+    /// Sampler index: 0 repeats (bark), 1 clamps (the leaf texture).
+    sampler: usize,
+    /// Two-sided and alpha-masked (leaves).
+    leaves: bool,
+    color_name: &'static str,
+    orm_name: &'static str,
+    normal_name: &'static str,
+    /// Linear RGBA without textures.
+    fallback: [f64; 4],
+}
+
+const BARK: MaterialSpec = MaterialSpec {
+    name: "bark",
+    roughness: 0.9,
+    sampler: 0,
+    leaves: false,
+    color_name: "bark_color",
+    orm_name: "bark_orm",
+    normal_name: "bark_normal",
+    // The viewer's plain bark colour #5b3d26, in linear RGB.
+    fallback: [0.1046, 0.0467, 0.0194, 1.0],
+};
+
+const LEAVES: MaterialSpec = MaterialSpec {
+    name: "leaves",
+    roughness: 0.7,
+    sampler: 1,
+    leaves: true,
+    color_name: "leaf_color",
+    orm_name: "leaf_orm",
+    normal_name: "leaf_normal",
+    // The leaf texture's blade green (0.30, 0.52, 0.18 in sRGB), in linear RGB.
+    fallback: [0.0742, 0.2346, 0.0273, 1.0],
+};
+
+/// A material as `spec` says (textures when `pngs`); returns its index.
+fn material<'a>(
+    doc: &mut Doc<'a>,
+    spec: &MaterialSpec,
+    pngs: Option<&'a TexturePngs>,
+    normal_maps: bool,
+    used_samplers: &mut [bool; 2],
+) -> usize {
+    let mut pbr = Map::new();
+    pbr.insert("metallicFactor".into(), json!(0.0));
+    pbr.insert("roughnessFactor".into(), json!(spec.roughness));
+    let mut mat = Map::new();
+    mat.insert("name".into(), json!(spec.name));
+    if spec.leaves {
+        mat.insert("doubleSided".into(), json!(true));
+    }
+    if let Some(p) = pngs {
+        used_samplers[spec.sampler] = true;
+        let color = doc.texture(&p.color, spec.color_name, spec.sampler);
+        pbr.insert("baseColorTexture".into(), json!({"index": color}));
+        if spec.leaves {
+            mat.insert("alphaMode".into(), json!("MASK"));
+            mat.insert("alphaCutoff".into(), json!(0.5));
+        }
+        if let Some(orm) = p.orm.as_ref().filter(|_| !spec.leaves) {
+            // One packed map: glTF reads roughness from G (metalness B = 0) and occlusion from R.
+            let orm = doc.texture(orm, spec.orm_name, spec.sampler);
+            pbr.insert("metallicRoughnessTexture".into(), json!({"index": orm}));
+            pbr.insert("roughnessFactor".into(), json!(1.0));
+            mat.insert("occlusionTexture".into(), json!({"index": orm}));
+        }
+        if normal_maps {
+            let normal = doc.texture(&p.normal, spec.normal_name, spec.sampler);
+            mat.insert("normalTexture".into(), json!({"index": normal}));
+        }
+    } else {
+        pbr.insert("baseColorFactor".into(), json!(spec.fallback));
+    }
+    mat.insert("pbrMetallicRoughness".into(), Value::Object(pbr));
+    doc.materials.push(Value::Object(mat));
+    doc.materials.len() - 1
+}
+
+/// The instanced leaf mesh's extra vertex data: its tangents, when computed.
+fn extra_of<'a>(tangents: Option<&'a [f32]>, f: &'a Foliage) -> VertexExtras<'a> {
+    VertexExtras { tangents: tangents.map(|t| Data::FramesOf(&f.mesh.normals, t)), ..VertexExtras::default() }
+}
+
+/// The node drawing `mesh` once per leaf through `EXT_mesh_gpu_instancing` (translation,
+/// rotation, scale and, with `colors`, the leaf tint as `_COLOR_0`).
+fn instanced_leaves_node<'a>(doc: &mut Doc<'a>, f: &'a Foliage, mesh: usize, colors: bool) {
+    let m = &f.matrices[..];
+    let n = f.count();
+    let mut attrs = Map::new();
+    let mut trs = |key: &str, part: Part, kind: &'static str| {
+        attrs.insert(key.into(), json!(doc.array(Data::Trs(m, part), None, Acc::new(FLOAT, kind, n))));
+    };
+    trs("TRANSLATION", Part::Translation, "VEC3");
+    trs("ROTATION", Part::Rotation, "VEC4");
+    trs("SCALE", Part::Scale, "VEC3");
+    if colors {
+        attrs.insert("_COLOR_0".into(), json!(doc.array(Data::F32(&f.colors), None, Acc::new(FLOAT, "VEC3", n))));
+    }
+    doc.nodes.push(json!({
+        "name": "leaves",
+        "mesh": mesh,
+        "extensions": {"EXT_mesh_gpu_instancing": {"attributes": Value::Object(attrs)}},
+    }));
 }
 
 /// The bark's bounds and, when `wind`, the codec of its wind data: one pass over the positions
