@@ -141,6 +141,19 @@ pub(crate) fn tree_meta(
 pub const ENVELOPE_SAMPLES: usize = 48;
 
 /// Generate a tree: validate, build the skeleton, sweep the surfaces, hash the buffers.
+///
+/// ```
+/// use sylva_core::{generate, TreeParams};
+///
+/// let mut params = TreeParams::default();
+/// params.set("levels", 1.0)?; // the trunk and one branch level: quick
+/// params.set("seed", 7.0)?;
+/// let tree = generate(&params)?;
+/// assert!(tree.mesh.vertex_count() > 0);
+/// // The same parameters and seed give the same bytes, here and in wasm.
+/// assert_eq!(generate(&params)?.hash_hex(), tree.hash_hex());
+/// # Ok::<(), sylva_core::SylvaError>(())
+/// ```
 pub fn generate(params: &TreeParams) -> Result<Generated, SylvaError> {
     generate_with_clock(params, clock::default_clock().as_ref())
 }

@@ -140,6 +140,18 @@ impl ExportOptions {
 }
 
 /// The glTF GLB bytes of a tree ([`glb::write`]).
+///
+/// ```
+/// use sylva_core::export::{to_glb, ExportOptions};
+/// use sylva_core::{generate, TreeParams};
+///
+/// let mut params = TreeParams::default();
+/// params.set("levels", 1.0)?;
+/// let glb = to_glb(&generate(&params)?, &ExportOptions::default());
+/// assert_eq!(&glb[..4], b"glTF"); // a binary glTF 2.0 container
+/// assert_eq!(u32::from_le_bytes(glb[8..12].try_into().unwrap()) as usize, glb.len());
+/// # Ok::<(), sylva_core::SylvaError>(())
+/// ```
 pub fn to_glb(g: &Generated, opts: &ExportOptions) -> Vec<u8> {
     glb::write(g, opts)
 }

@@ -69,6 +69,18 @@ pub fn registry_json() -> String {
 
 impl TreeParams {
     /// Set parameter `id` to the wire value `v` after checking it against its spec.
+    ///
+    /// ```
+    /// use sylva_core::TreeParams;
+    ///
+    /// let mut params = TreeParams::default();
+    /// params.set("l1_branches", 40.0)?;
+    /// assert_eq!(params.get("l1_branches"), Some(40.0));
+    /// // Out of range: the message names the field and the allowed range.
+    /// let error = params.set("l1_length", 3.0).unwrap_err();
+    /// assert_eq!(error.to_string(), "l1_length (Length) is 3: allowed range is 0 to 2");
+    /// # Ok::<(), sylva_core::SylvaError>(())
+    /// ```
     pub fn set(&mut self, id: &str, v: f64) -> Result<(), SylvaError> {
         let spec = spec(id).ok_or_else(|| unknown(id))?;
         spec.check(v)?;
