@@ -5,7 +5,7 @@ import { createGeneratorWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { GenerationScheduler } from '../worker/scheduler';
-import { emitDebug, installDebugHook, type TreeApplied } from './debugHook';
+import { debugMode, emitDebug, installDebugHook, type TreeApplied } from './debugHook';
 import { StatsStore } from './statsStore';
 
 export type { TreeStats } from './statsStore';
@@ -62,59 +62,72 @@ export function useGenerator(
 
   useEffect(() => {
     let announced = false;
-    const scheduler = new GenerationScheduler(createGeneratorWorker, {
-      onReady: (info, restartCount) => {
-        setRestarts(restartCount);
-        if (!announced) {
-          announced = true;
-          const initial = onReadyRef.current(info);
-          requestedAtRef.current.set(
-            scheduler.request(initial, initialVolumes?.current),
-            performance.now(),
-          );
-        }
+    const scheduler = new GenerationScheduler(
+      createGeneratorWorker,
+      {
+        onReady: (info, restartCount) => {
+          setRestarts(restartCount);
+          if (!announced) {
+            announced = true;
+            const initial = onReadyRef.current(info);
+            requestedAtRef.current.set(
+              scheduler.request(initial, initialVolumes?.current),
+              performance.now(),
+            );
+          }
+        },
+        onResult: (result) => {
+          const received = performance.now();
+          const frame =
+            !hadResultRef.current ||
+            (frameFromIdRef.current > 0 && result.id >= frameFromIdRef.current);
+          if (frame) frameFromIdRef.current = 0;
+          hadResultRef.current = true;
+          const requestedAt = requestedAtRef.current.get(result.id);
+          for (const id of requestedAtRef.current.keys()) {
+            if (id <= result.id) requestedAtRef.current.delete(id); // this one and the superseded
+          }
+          viewer.current?.apply(result, frame);
+          const built = performance.now();
+          const { vertices, triangles, hash, total_ms, stems } = result.meta;
+          const preview = result.meta.preview === true;
+          const log = treeLogRef.current;
+          const applied = { id: result.id, at: built, requestedAt: requestedAt ?? null, preview };
+          log.push(applied);
+          if (log.length > TREE_LOG) log.splice(0, log.length - TREE_LOG);
+          emitDebug('applied', {
+            kind: 'tree',
+            ...applied,
+            received,
+            workerMs: result.meta.total_ms,
+          });
+          // The upload and draw happen on the next animation frame (never a synchronous draw
+          // here: that would block the main thread while a slider is dragged).
+          const roundTripMs = requestedAt === undefined ? null : built - requestedAt;
+          stats.set({
+            stats: {
+              vertices,
+              triangles,
+              hash,
+              total_ms,
+              stems,
+              roundTripMs,
+              drawMs: null,
+              preview,
+            },
+          });
+          setError(null);
+        },
+        onHash: (hash) => {
+          viewer.current?.setHash(hash);
+          stats.setHash(hash);
+        },
+        onError: (err) => setError(err),
+        onBusyChange: (busy) => stats.set({ busy }),
+        onProgress: (fraction) => setProgress(fraction),
       },
-      onResult: (result) => {
-        const received = performance.now();
-        const frame =
-          !hadResultRef.current ||
-          (frameFromIdRef.current > 0 && result.id >= frameFromIdRef.current);
-        if (frame) frameFromIdRef.current = 0;
-        hadResultRef.current = true;
-        const requestedAt = requestedAtRef.current.get(result.id);
-        for (const id of requestedAtRef.current.keys()) {
-          if (id <= result.id) requestedAtRef.current.delete(id); // this one and the superseded
-        }
-        viewer.current?.apply(result, frame);
-        const built = performance.now();
-        const { vertices, triangles, hash, total_ms, stems } = result.meta;
-        const preview = result.meta.preview === true;
-        const log = treeLogRef.current;
-        const applied = { id: result.id, at: built, requestedAt: requestedAt ?? null, preview };
-        log.push(applied);
-        if (log.length > TREE_LOG) log.splice(0, log.length - TREE_LOG);
-        emitDebug('applied', {
-          kind: 'tree',
-          ...applied,
-          received,
-          workerMs: result.meta.total_ms,
-        });
-        // The upload and draw happen on the next animation frame (never a synchronous draw
-        // here: that would block the main thread while a slider is dragged).
-        const roundTripMs = requestedAt === undefined ? null : built - requestedAt;
-        stats.set({
-          stats: { vertices, triangles, hash, total_ms, stems, roundTripMs, drawMs: null, preview },
-        });
-        setError(null);
-      },
-      onHash: (hash) => {
-        viewer.current?.setHash(hash);
-        stats.setHash(hash);
-      },
-      onError: (err) => setError(err),
-      onBusyChange: (busy) => stats.set({ busy }),
-      onProgress: (fraction) => setProgress(fraction),
-    });
+      { debug: debugMode() },
+    );
     schedulerRef.current = scheduler;
     const uninstall = installDebugHook({
       panic: () => scheduler.debugPanic(),

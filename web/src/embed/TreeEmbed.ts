@@ -6,7 +6,7 @@
 import type { ParamSpec, Params, SylvaError, VolumePrimitive } from '../core/types';
 import { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
-import { GenerationScheduler, type WorkerFactory } from '../worker/scheduler';
+import { GenerationScheduler, type GeneratorFactory } from '../worker/scheduler';
 import type { Background } from './options';
 
 /** What to generate once the registry is known (or why nothing can be generated). */
@@ -27,7 +27,7 @@ export type EmbedState =
 
 /** Settings of a TreeEmbed. */
 export interface TreeEmbedOptions {
-  workerFactory: WorkerFactory;
+  workerFactory: GeneratorFactory;
   background: Background;
   autorotate: boolean;
   /** Wind animation on (default) or off. */
