@@ -8,9 +8,10 @@ import type { WorkerHandle, WorkerStartOptions } from './worker/client';
 import { DEBUG_WORKER_NAME } from './worker/debug';
 
 function newWorker(debug: boolean): Worker {
+  // Vite reads `type` statically: the name (empty for a production worker) comes after it.
   return new Worker(new URL('./worker/worker.ts', import.meta.url), {
     type: 'module',
-    ...(debug ? { name: DEBUG_WORKER_NAME } : {}),
+    name: debug ? DEBUG_WORKER_NAME : '',
   });
 }
 
