@@ -4,6 +4,7 @@
  */
 import { debugMode } from './app/debugHook';
 import { prestartGenerator } from './createWorker';
+import './fonts.css';
 import './styles.css';
 
 prestartGenerator({ debug: debugMode() });

@@ -1,5 +1,18 @@
 /** The docs page's embedding section: the iframe and the `<sylva-tree>` element. */
+import type { ReactNode } from 'react';
 import { Code, DocsTable, Section } from './DocsParts';
+
+/** A table row: an option's name (as code), then its cells. */
+function OptionRow({ name, children }: { name: string; children: ReactNode }) {
+  return (
+    <tr>
+      <td>
+        <code>{name}</code>
+      </td>
+      {children}
+    </tr>
+  );
+}
 
 /** See the module comment; the examples use absolute URLs next to `pageHref`. */
 export function EmbeddingSection({ pageHref }: { pageHref: string }) {
@@ -36,35 +49,23 @@ function IframeDocs({ pageHref }: { pageHref: string }) {
           <td>as in a share link</td>
           <td>the tree (missing ids take their default)</td>
         </tr>
-        <tr>
-          <td>
-            <code>vol</code>
-          </td>
+        <OptionRow name="vol">
           <td>as in a share link</td>
           <td>growth volume primitives</td>
-        </tr>
-        <tr>
-          <td>
-            <code>autorotate</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="autorotate">
           <td>
             <code>1</code> or <code>0</code>
           </td>
           <td>turns the tree slowly (not when the visitor prefers reduced motion)</td>
-        </tr>
-        <tr>
-          <td>
-            <code>wind</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="wind">
           <td>
             <code>1</code> (default) or <code>0</code>
           </td>
           <td>the tree sways in the wind, or holds still</td>
-        </tr>
-        <tr>
-          <td>
-            <code>bg</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="bg">
           <td>
             <code>transparent</code>, <code>#rrggbb</code>, <code>#rgb</code> or a CSS colour name
           </td>
@@ -72,7 +73,7 @@ function IframeDocs({ pageHref }: { pageHref: string }) {
             the background; transparent drops the sky, ground and fog so the page shows through
             (write <code>#</code> as <code>%23</code>)
           </td>
-        </tr>
+        </OptionRow>
       </DocsTable>
       <p>
         A link with an unsupported version or over-long query shows an error in the frame; ignored
@@ -102,50 +103,32 @@ function ElementDocs({ pageHref }: { pageHref: string }) {
         testId="docs-element-attributes"
         columns={['Attribute', 'Value']}
       >
-        <tr>
-          <td>
-            <code>preset</code>
-          </td>
+        <OptionRow name="preset">
           <td>a preset name (see Presets); without it, the defaults</td>
-        </tr>
-        <tr>
-          <td>
-            <code>seed</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="seed">
           <td>the random seed (applied last)</td>
-        </tr>
-        <tr>
-          <td>
-            <code>params</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="params">
           <td>
             parameter values as a share-link query, <code>id=value&amp;id=value</code> (applied over
             the preset; may include <code>vol=</code>)
           </td>
-        </tr>
-        <tr>
-          <td>
-            <code>autorotate</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="autorotate">
           <td>present: the tree turns slowly</td>
-        </tr>
-        <tr>
-          <td>
-            <code>wind</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="wind">
           <td>
             absent or <code>on</code>: the tree sways; <code>off</code> or <code>0</code>: it holds
             still
           </td>
-        </tr>
-        <tr>
-          <td>
-            <code>background</code>
-          </td>
+        </OptionRow>
+        <OptionRow name="background">
           <td>
             <code>transparent</code>, <code>#rrggbb</code> or a colour name
           </td>
-        </tr>
+        </OptionRow>
       </DocsTable>
       <p>
         Changing any attribute regenerates the tree (the latest change wins). The element is 300 ×

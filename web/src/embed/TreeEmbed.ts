@@ -3,7 +3,8 @@
  * latest-wins generation scheduler over the wasm worker, plus autorotate, a background option
  * and a status line (loading, errors) drawn as text over the view. No React.
  */
-import type { ParamSpec, Params, SylvaError, VolumePrimitive } from '../core/types';
+import { describeError } from '../core/describeError';
+import type { Params, VolumePrimitive } from '../core/types';
 import { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { GenerationScheduler, type GeneratorFactory } from '../worker/scheduler';
@@ -33,18 +34,6 @@ export interface TreeEmbedOptions {
   /** Wind animation on (default) or off. */
   wind?: boolean;
   onState?(state: EmbedState): void;
-}
-
-/** Text for a generator error (like the app's banner; no React here). */
-export function describeError(error: SylvaError, registry: readonly ParamSpec[]): string {
-  if (error.kind === 'panic') return `The generator crashed: ${error.message}`;
-  if (error.param) {
-    const spec = registry.find((s) => s.id === error.param);
-    const name = spec ? `${spec.label} (${error.param})` : error.param;
-    return `Invalid parameter ${name}: ${error.message}`;
-  }
-  if (error.kind === 'budget') return `Tree too large: ${error.message}`;
-  return error.message;
 }
 
 /** The sky of the app viewer when no background option is given. */

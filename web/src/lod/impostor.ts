@@ -43,6 +43,7 @@ import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
 import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
 import impostorVertex from './shaders/impostor.vert.glsl?raw';
 import impostorFragment from './shaders/impostor.frag.glsl?raw';
+import impostorVaryings from './shaders/impostorVaryings.glsl?raw';
 
 /** One part of the tree to bake: its geometry (instanced or not), base colour and texture. */
 export interface BakePart {
@@ -225,8 +226,8 @@ export function impostorMaterial(
 ): ShaderMaterial {
   const coverage = options.coverage ?? false;
   const material = new ShaderMaterial({
-    vertexShader: impostorVertex,
-    fragmentShader: impostorFragment,
+    vertexShader: impostorVaryings + impostorVertex,
+    fragmentShader: impostorVaryings + impostorFragment,
     uniforms: UniformsUtils.merge([
       UniformsLib.fog,
       {

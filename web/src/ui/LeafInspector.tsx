@@ -13,7 +13,7 @@ import type { LeafInspection, ParamSpec, Params, Preset, SylvaError } from '../c
 import { createModuleWorker } from '../createWorker';
 import { downloadBlob } from '../export/download';
 import { LeafClient } from '../leaf/leafClient';
-import { ParamGroups } from './ParamGroups';
+import { ParamGroups, PresetOptions } from './ParamGroups';
 
 /** Registry groups the inspector edits. */
 export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
@@ -155,11 +155,7 @@ export function LeafInspector({ registry, params, onChange, onChangeMany }: Prop
           <option value="" disabled>
             Choose…
           </option>
-          {presets.map((p) => (
-            <option key={p.name} value={p.name} title={p.description}>
-              {p.label}
-            </option>
-          ))}
+          <PresetOptions presets={presets} />
         </select>
       </label>
       <label className="row">

@@ -1,6 +1,9 @@
-/** The parameter sections of a panel: one collapsible section per registry group. */
+/**
+ * The parts the parameter panel and the leaf inspector share: one collapsible section per
+ * registry group, and the options of a preset picker.
+ */
 import type { ReactNode } from 'react';
-import type { ParamSpec, Params } from '../core/types';
+import type { ParamSpec, Params, Preset } from '../core/types';
 import { ParamControl } from './ParamControl';
 
 interface Props {
@@ -29,5 +32,14 @@ export function ParamGroups({ groups, params, onChange, open, extras }: Props) {
         />
       ))}
     </details>
+  ));
+}
+
+/** One `<option>` per preset (its name as the value, the description as a tooltip). */
+export function PresetOptions({ presets }: { presets: readonly Preset[] }) {
+  return presets.map((p) => (
+    <option key={p.name} value={p.name} title={p.description}>
+      {p.label}
+    </option>
   ));
 }

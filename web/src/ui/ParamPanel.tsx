@@ -3,7 +3,7 @@ import { groupParams } from '../core/params';
 import type { ReactNode } from 'react';
 import type { ParamSpec, Params, Preset } from '../core/types';
 import { NumberField } from './NumberField';
-import { ParamGroups } from './ParamGroups';
+import { ParamGroups, PresetOptions } from './ParamGroups';
 
 interface Props {
   registry: readonly ParamSpec[];
@@ -70,11 +70,7 @@ export function ParamPanel(props: Props) {
               Custom
             </option>
           ) : null}
-          {presets.map((p) => (
-            <option key={p.name} value={p.name} title={p.description}>
-              {p.label}
-            </option>
-          ))}
+          <PresetOptions presets={presets} />
         </select>
       </div>
 

@@ -9,16 +9,6 @@ uniform vec3 uSunDir;
 uniform vec3 uSunColor;
 uniform vec3 uSky;
 uniform vec3 uGround;
-varying vec2 vUv0;
-varying vec2 vUv1;
-varying vec2 vUv2;
-varying vec2 vFrame0;
-varying vec2 vFrame1;
-varying vec2 vFrame2;
-varying vec3 vWeights;
-varying vec3 vRotX;
-varying vec3 vRotY;
-varying vec3 vRotZ;
 #include <common>
 #include <fog_pars_fragment>
 
