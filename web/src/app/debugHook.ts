@@ -79,12 +79,17 @@ export function debugEnabled(search: string, dev: boolean): boolean {
   return dev || new URLSearchParams(search).get('debug') === '1';
 }
 
+/** Whether this page runs with the hook (and so with a debug generator worker). */
+export function debugMode(): boolean {
+  return debugEnabled(window.location.search, import.meta.env.DEV);
+}
+
 /**
  * Dispatches `sylva:<name>` on `window` with `detail` when the hook is enabled (benchmarks
  * listen to `sylva:applied`: an answer is in the scene, ready for the next frame).
  */
 export function emitDebug(name: 'applied', detail: object): void {
-  if (!debugEnabled(window.location.search, import.meta.env.DEV)) return;
+  if (!debugMode()) return;
   window.dispatchEvent(new CustomEvent(`sylva:${name}`, { detail }));
 }
 
@@ -93,7 +98,7 @@ export function emitDebug(name: 'applied', detail: object): void {
  * function that removes exactly those parts again.
  */
 export function installDebugHook(parts: Partial<SylvaDebugHook>): () => void {
-  if (!debugEnabled(window.location.search, import.meta.env.DEV)) return () => undefined;
+  if (!debugMode()) return () => undefined;
   window.__sylva = { ...window.__sylva, ...parts };
   return () => {
     const hook = window.__sylva;

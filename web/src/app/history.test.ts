@@ -1,10 +1,56 @@
 /** Tests of the undo/redo stack and its keyboard shortcuts. */
 import { describe, expect, it } from 'vitest';
-import { COALESCE_MS, historyShortcut, ParamsHistory, type ShortcutKey } from './history';
+import type { Params, VolumePrimitive } from '../core/types';
+import {
+  COALESCE_MS,
+  historyShortcut,
+  record,
+  redo,
+  startHistory,
+  undo,
+  type ChangeOptions,
+  type History,
+  type ShortcutKey,
+  type Travel,
+} from './history';
+
+/** The history of params alone (no volumes), driven step by step as the app does. */
+class ParamsHistory {
+  h: History;
+  constructor(initial: Params, limit?: number) {
+    this.h = startHistory({ params: initial, volumes: [] }, limit);
+  }
+  get current(): Params {
+    return this.h.present.params;
+  }
+  get canUndo(): boolean {
+    return this.h.past.length > 0;
+  }
+  get canRedo(): boolean {
+    return this.h.future.length > 0;
+  }
+  get undoDepth(): number {
+    return this.h.past.length;
+  }
+  record(params: Params, options: ChangeOptions): void {
+    this.h = record(this.h, { params, volumes: this.h.present.volumes }, options);
+  }
+  private travel(step: Travel | null): { params: Params; frame: boolean } | null {
+    if (step === null) return null;
+    this.h = step.history;
+    return { params: step.shown.params, frame: step.shown.frame };
+  }
+  undo() {
+    return this.travel(undo(this.h));
+  }
+  redo() {
+    return this.travel(redo(this.h));
+  }
+}
 
 const base = { seed: 1, scale: 13, l1_length: 0.3 };
 
-describe('ParamsHistory', () => {
+describe('history of params', () => {
   it('starts with nothing to undo or redo', () => {
     const h = new ParamsHistory(base);
     expect(h.canUndo).toBe(false);
@@ -109,6 +155,41 @@ describe('ParamsHistory', () => {
     let last = h.current;
     while (h.canUndo) last = h.undo()?.params ?? last;
     expect(last.seed).toBe(14);
+  });
+});
+
+describe('history of volumes', () => {
+  const sphere: VolumePrimitive = {
+    kind: 'sphere',
+    group: 'crown',
+    centre: [0, 5, 0],
+    size: [2, 2, 2],
+  };
+  const at = (y: number): VolumePrimitive => ({ ...sphere, centre: [0, y, 0] });
+
+  it('a gizmo drag of one primitive is one step; volume and param edits undo in order', () => {
+    let h = startHistory({ params: base, volumes: [] });
+    h = record(h, { params: base, volumes: [at(5)] }, { key: null, now: 0 });
+    for (let i = 1; i <= 30; i++) {
+      h = record(h, { params: base, volumes: [at(5 + i / 10)] }, { key: 'volume:0', now: i * 16 });
+    }
+    const grown = { ...base, seed: 9 };
+    h = record(h, { params: grown, volumes: [at(8)] }, { key: null, now: 600 });
+    expect(h.past).toHaveLength(3);
+    const back = undo(h);
+    expect(back?.shown.volumes).toEqual([at(8)]);
+    const dragUndone = undo(back!.history);
+    expect(dragUndone?.shown.volumes).toEqual([at(5)]);
+    expect(dragUndone?.shown.params).toBe(base);
+    const addUndone = undo(dragUndone!.history);
+    expect(addUndone?.shown.volumes).toEqual([]);
+    const redone = redo(addUndone!.history);
+    expect(redone?.shown.volumes).toEqual([at(5)]);
+  });
+
+  it('the same volumes in a new array are no change', () => {
+    const h = startHistory({ params: base, volumes: [at(1)] });
+    expect(record(h, { params: { ...base }, volumes: [at(1)] }, { key: null, now: 0 })).toBe(h);
   });
 });
 

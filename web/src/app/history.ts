@@ -1,29 +1,48 @@
 /**
- * Undo/redo of parameter changes (plain module, no React). Every change is a snapshot of the
- * whole params; rapid changes of one parameter (a slider drag, typing a number) coalesce into
- * one undo step, while presets, Reset and Randomize are always steps of their own.
+ * Undo/redo of the editor's state (plain module, no React; immutable: every function returns a
+ * new history). Every change is a snapshot of the whole params and growth volumes; rapid changes
+ * of one thing (a slider drag, typing a number, a gizmo drag of one primitive) coalesce into one
+ * undo step, while presets, Reset, Randomize and adding or removing a primitive are always
+ * steps of their own.
  */
-import type { Params } from '../core/types';
+import type { Params, VolumePrimitive } from '../core/types';
 
-/** Changes of one parameter closer together than this (ms) are one undo step. */
+/** Changes of one key closer together than this (ms) are one undo step. */
 export const COALESCE_MS = 1000;
 /** Undo steps kept; older ones are dropped. */
 export const HISTORY_LIMIT = 200;
 
-/** A snapshot plus how to show it (`frame`: re-frame the camera, as for a preset). */
-export interface HistoryEntry {
+/** What undo restores: the params and the growth volumes. */
+export interface Snapshot {
   params: Params;
+  volumes: VolumePrimitive[];
+}
+
+/** A snapshot plus how to show it (`frame`: re-frame the camera, as for a preset). */
+export interface HistoryEntry extends Snapshot {
   frame: boolean;
 }
 
 /** How a change is recorded. */
 export interface ChangeOptions {
-  /** The parameter a continuous edit changes (coalesced); null for a discrete step. */
+  /** What a continuous edit changes (coalesced: a param id, `volume:<index>`); null: a step. */
   key: string | null;
   /** Re-frame the camera when this step is undone or redone. */
   frame?: boolean;
   /** Timestamp in ms (performance.now() in the app, a counter in tests). */
   now: number;
+}
+
+/** The undo stack: `past` steps, the present, and `future` steps to redo. */
+export interface History {
+  readonly past: readonly HistoryEntry[];
+  readonly present: HistoryEntry;
+  readonly future: readonly HistoryEntry[];
+  /** The key and time of the last change (its coalescing window). */
+  readonly lastKey: string | null;
+  readonly lastAt: number;
+  readonly limit: number;
+  readonly coalesceMs: number;
 }
 
 function sameParams(a: Params, b: Params): boolean {
@@ -32,94 +51,83 @@ function sameParams(a: Params, b: Params): boolean {
   return keys.every((k) => Object.is(a[k], b[k]));
 }
 
-/** The undo stack: `past` steps, the present, and `future` steps to redo. */
-export class ParamsHistory {
-  private past: HistoryEntry[] = [];
-  private future: HistoryEntry[] = [];
-  private present: HistoryEntry;
-  private lastKey: string | null = null;
-  private lastAt = Number.NEGATIVE_INFINITY;
+/** Whether two snapshots hold the same params and volumes. */
+export function sameSnapshot(a: Snapshot, b: Snapshot): boolean {
+  return (
+    sameParams(a.params, b.params) &&
+    (a.volumes === b.volumes || JSON.stringify(a.volumes) === JSON.stringify(b.volumes))
+  );
+}
 
-  constructor(
-    initial: Params,
-    private readonly limit = HISTORY_LIMIT,
-    private readonly coalesceMs = COALESCE_MS,
-  ) {
-    this.present = { params: initial, frame: false };
-  }
+/** A history whose present is `initial`, with nothing to undo. */
+export function startHistory(
+  initial: Snapshot,
+  limit = HISTORY_LIMIT,
+  coalesceMs = COALESCE_MS,
+): History {
+  const present = { ...initial, frame: false };
+  return { past: [], present, future: [], ...sealed, limit, coalesceMs };
+}
 
-  /** The current params. */
-  get current(): Params {
-    return this.present.params;
-  }
+/** No coalescing window open: the next change starts a new step. */
+const sealed = { lastKey: null, lastAt: Number.NEGATIVE_INFINITY } as const;
 
-  get canUndo(): boolean {
-    return this.past.length > 0;
-  }
+export const canUndo = (h: History): boolean => h.past.length > 0;
+export const canRedo = (h: History): boolean => h.future.length > 0;
 
-  get canRedo(): boolean {
-    return this.future.length > 0;
+/**
+ * Records that the state became `next`. A change with the same `key` as the previous one,
+ * within the coalescing window of it, extends that step instead of starting a new one; a
+ * step that ends where it started disappears. Clears the redo steps. No-op if nothing changed.
+ */
+export function record(h: History, next: Snapshot, options: ChangeOptions): History {
+  const { key, frame = false, now } = options;
+  if (sameSnapshot(next, h.present)) return h;
+  const coalesce = key !== null && key === h.lastKey && now - h.lastAt <= h.coalesceMs;
+  if (!coalesce) {
+    const past = [...h.past, h.present].slice(-h.limit);
+    return { ...h, past, present: { ...next, frame }, future: [], lastKey: key, lastAt: now };
   }
+  const before = h.past[h.past.length - 1];
+  if (before && sameSnapshot(before, next)) {
+    // Dragged back to where the step began: nothing left to undo in this step.
+    return { ...h, past: h.past.slice(0, -1), present: before, future: [], ...sealed };
+  }
+  const present = { ...next, frame: h.present.frame || frame };
+  return { ...h, present, future: [], lastKey: key, lastAt: now };
+}
 
-  /** Number of undo steps available. */
-  get undoDepth(): number {
-    return this.past.length;
-  }
+/** Ends the current coalescing window: the next change starts a new step. */
+export function seal(h: History): History {
+  return { ...h, ...sealed };
+}
 
-  /**
-   * Records that the params became `next`. A change with the same `key` as the previous one,
-   * within the coalescing window of it, extends that step instead of starting a new one; a
-   * step that ends where it started disappears. Clears the redo steps. No-op if nothing changed.
-   */
-  record(next: Params, { key, frame = false, now }: ChangeOptions): void {
-    if (sameParams(next, this.present.params)) return;
-    this.future = [];
-    const coalesce = key !== null && key === this.lastKey && now - this.lastAt <= this.coalesceMs;
-    if (coalesce) {
-      this.present = { params: next, frame: this.present.frame || frame };
-      const before = this.past[this.past.length - 1];
-      if (before && sameParams(before.params, next)) {
-        // Dragged back to where the step began: nothing left to undo in this step.
-        this.past.pop();
-        this.present = before;
-        this.seal();
-        return;
-      }
-    } else {
-      this.past.push(this.present);
-      if (this.past.length > this.limit) this.past.shift();
-      this.present = { params: next, frame };
-    }
-    this.lastKey = key;
-    this.lastAt = now;
-  }
+/** A step of undo or redo: the new history and the snapshot to show. */
+export interface Travel {
+  history: History;
+  /** The new present; `frame`: re-frame the camera (the undone or redone step asked for it). */
+  shown: HistoryEntry;
+}
 
-  /** Ends the current coalescing window: the next change starts a new step. */
-  seal(): void {
-    this.lastKey = null;
-    this.lastAt = Number.NEGATIVE_INFINITY;
-  }
+/** Steps back; null at the start. */
+export function undo(h: History): Travel | null {
+  const previous = h.past[h.past.length - 1];
+  if (!previous) return null;
+  const undone = h.present;
+  const past = h.past.slice(0, -1);
+  const history = { ...h, past, present: previous, future: [...h.future, undone], ...sealed };
+  return { history, shown: { ...previous, frame: undone.frame } };
+}
 
-  /** Steps back; returns the params to show and whether to re-frame, or null at the start. */
-  undo(): HistoryEntry | null {
-    const previous = this.past.pop();
-    if (!previous) return null;
-    const undone = this.present;
-    this.future.push(undone);
-    this.present = previous;
-    this.seal();
-    return { params: previous.params, frame: undone.frame };
-  }
-
-  /** Steps forward again; null when there is nothing to redo. */
-  redo(): HistoryEntry | null {
-    const next = this.future.pop();
-    if (!next) return null;
-    this.past.push(this.present);
-    this.present = next;
-    this.seal();
-    return { params: next.params, frame: next.frame };
-  }
+/** Steps forward again; null when there is nothing to redo. */
+export function redo(h: History): Travel | null {
+  const next = h.future[h.future.length - 1];
+  if (!next) return null;
+  const future = h.future.slice(0, -1);
+  return {
+    history: { ...h, past: [...h.past, h.present], present: next, future, ...sealed },
+    shown: next,
+  };
 }
 
 /** The keyboard event fields a shortcut depends on. */

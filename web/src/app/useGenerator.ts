@@ -5,7 +5,8 @@ import { createGeneratorWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
 import { GenerationScheduler } from '../worker/scheduler';
-import { emitDebug, installDebugHook, type TreeApplied } from './debugHook';
+import { debugMode, installDebugHook } from './debugHook';
+import { RequestLog, showResult } from './requestLog';
 import { StatsStore } from './statsStore';
 
 export type { TreeStats } from './statsStore';
@@ -30,9 +31,6 @@ export interface Generator {
   cancel(): void;
 }
 
-/** Most trees kept in the debug hook's log. */
-const TREE_LOG = 200;
-
 /**
  * Starts the worker on mount. `onReady` fires once with the registry and presets and returns the
  * initial params, which are requested right away.
@@ -48,13 +46,8 @@ export function useGenerator(
   const [error, setError] = useState<SylvaError | null>(null);
   const [restarts, setRestarts] = useState(0);
   const schedulerRef = useRef<GenerationScheduler | null>(null);
-  const frameFromIdRef = useRef(0);
-  const hadResultRef = useRef(false);
   const onReadyRef = useRef(onReady);
-  /** When each request was made; a result removes its own and every older (superseded) one. */
-  const requestedAtRef = useRef(new Map<number, number>());
-  /** Applied trees, for the debug hook (benchmarks read the answer times). */
-  const treeLogRef = useRef<TreeApplied[]>([]);
+  const [log] = useState(() => new RequestLog());
 
   useEffect(() => {
     onReadyRef.current = onReady;
@@ -62,59 +55,31 @@ export function useGenerator(
 
   useEffect(() => {
     let announced = false;
-    const scheduler = new GenerationScheduler(createGeneratorWorker, {
-      onReady: (info, restartCount) => {
-        setRestarts(restartCount);
-        if (!announced) {
-          announced = true;
-          const initial = onReadyRef.current(info);
-          requestedAtRef.current.set(
-            scheduler.request(initial, initialVolumes?.current),
-            performance.now(),
-          );
-        }
+    const scheduler = new GenerationScheduler(
+      createGeneratorWorker,
+      {
+        onReady: (info, restartCount) => {
+          setRestarts(restartCount);
+          if (!announced) {
+            announced = true;
+            const initial = onReadyRef.current(info);
+            log.requested(scheduler.request(initial, initialVolumes?.current));
+          }
+        },
+        onResult: (result) => {
+          showResult(result, log, stats, (tree, frame) => viewer.current?.apply(tree, frame));
+          setError(null);
+        },
+        onHash: (hash) => {
+          viewer.current?.setHash(hash);
+          stats.setHash(hash);
+        },
+        onError: (err) => setError(err),
+        onBusyChange: (busy) => stats.set({ busy }),
+        onProgress: (fraction) => setProgress(fraction),
       },
-      onResult: (result) => {
-        const received = performance.now();
-        const frame =
-          !hadResultRef.current ||
-          (frameFromIdRef.current > 0 && result.id >= frameFromIdRef.current);
-        if (frame) frameFromIdRef.current = 0;
-        hadResultRef.current = true;
-        const requestedAt = requestedAtRef.current.get(result.id);
-        for (const id of requestedAtRef.current.keys()) {
-          if (id <= result.id) requestedAtRef.current.delete(id); // this one and the superseded
-        }
-        viewer.current?.apply(result, frame);
-        const built = performance.now();
-        const { vertices, triangles, hash, total_ms, stems } = result.meta;
-        const preview = result.meta.preview === true;
-        const log = treeLogRef.current;
-        const applied = { id: result.id, at: built, requestedAt: requestedAt ?? null, preview };
-        log.push(applied);
-        if (log.length > TREE_LOG) log.splice(0, log.length - TREE_LOG);
-        emitDebug('applied', {
-          kind: 'tree',
-          ...applied,
-          received,
-          workerMs: result.meta.total_ms,
-        });
-        // The upload and draw happen on the next animation frame (never a synchronous draw
-        // here: that would block the main thread while a slider is dragged).
-        const roundTripMs = requestedAt === undefined ? null : built - requestedAt;
-        stats.set({
-          stats: { vertices, triangles, hash, total_ms, stems, roundTripMs, drawMs: null, preview },
-        });
-        setError(null);
-      },
-      onHash: (hash) => {
-        viewer.current?.setHash(hash);
-        stats.setHash(hash);
-      },
-      onError: (err) => setError(err),
-      onBusyChange: (busy) => stats.set({ busy }),
-      onProgress: (fraction) => setProgress(fraction),
-    });
+      { debug: debugMode() },
+    );
     schedulerRef.current = scheduler;
     const uninstall = installDebugHook({
       panic: () => scheduler.debugPanic(),
@@ -122,7 +87,7 @@ export function useGenerator(
       setTimeLimit: (ms) => {
         scheduler.timeLimitMs = ms;
       },
-      trees: () => [...treeLogRef.current],
+      trees: () => [...log.trees],
       settleWhenIdle: (on) => {
         scheduler.settleWhenIdle = on;
       },
@@ -132,23 +97,21 @@ export function useGenerator(
       scheduler.dispose();
       if (schedulerRef.current === scheduler) schedulerRef.current = null;
     };
-  }, [viewer, initialVolumes, stats]);
+  }, [viewer, initialVolumes, stats, log]);
 
   const request = useCallback(
     (params: Params, frame: boolean, volumes?: VolumePrimitive[], interactive = false) => {
       const scheduler = schedulerRef.current;
       if (!scheduler) return;
-      const id = scheduler.request(params, volumes, { interactive });
-      requestedAtRef.current.set(id, performance.now());
-      if (frame) frameFromIdRef.current = id;
+      log.requested(scheduler.request(params, volumes, { interactive }), frame);
     },
-    [],
+    [log],
   );
 
   const settle = useCallback(() => {
     const id = schedulerRef.current?.settle();
-    if (id != null) requestedAtRef.current.set(id, performance.now());
-  }, []);
+    if (id != null) log.requested(id);
+  }, [log]);
 
   const clearError = useCallback(() => setError(null), []);
 

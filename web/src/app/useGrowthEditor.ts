@@ -1,11 +1,13 @@
 /**
- * The interactive growth editor's state: the user's volume primitives (loaded from the share
- * URL's `vol=` key, written back to it), the selected one and the gizmo mode, and the
- * GrowthOverlay in the viewer. A gizmo drag regrows the tree on every move through `regrow`
- * (the scheduler is latest-wins, so only the newest shape is ever waited for).
+ * The interactive growth editor: the selected primitive and the gizmo mode, the GrowthOverlay in
+ * the viewer, and the share URL's `vol=` key, which follows the volumes. The volumes themselves
+ * live in the editor's reducer (with the params and the undo history): every edit goes through
+ * `change`, and a gizmo drag of one primitive is one undo step. A drag regrows the tree on every
+ * move (the scheduler is latest-wins, so only the newest shape is ever waited for).
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { Params, VolumeGroup, VolumeKind, VolumePrimitive } from '../core/types';
+import type { EditorChange } from './useEditor';
 import { MAX_VOLUMES, newVolume } from '../core/volumes';
 import { decodeVolumes, encodeVolumes, VOLUMES_KEY } from '../url/codec';
 import { GrowthOverlay } from '../viewer/GrowthOverlay';
@@ -17,6 +19,7 @@ export interface GrowthEditor {
   volumes: VolumePrimitive[];
   selected: number | null;
   mode: 'translate' | 'scale';
+  /** Adds a primitive and turns growth and the wireframes on (one undo step). */
   add(kind: VolumeKind, group: VolumeGroup): void;
   remove(index: number): void;
   select(index: number | null): void;
@@ -63,44 +66,40 @@ export function volumesFromUrl(): { volumes: VolumePrimitive[]; messages: string
   return decodeVolumes(new URLSearchParams(window.location.search).get(VOLUMES_KEY));
 }
 
+/** The params that show a newly added primitive of `group`: growth mode, wireframes on. */
+export function paramsForAdded(params: Params, group: VolumeGroup): Params {
+  const next = { ...params, growth_mode: 1, show_volumes: 1 };
+  return group === 'crown' ? { ...next, crown_volume: 2 } : next;
+}
+
 /**
- * See the module comment. `volumesRef` holds the latest volumes (its initial value is the
- * same list as `initialVolumes` at first; the app reads it for every request); `regrow` requests a tree of the current
- * params with new volumes.
+ * See the module comment. `params` and `volumes` are the editor's; `change` records an edit.
  */
 export function useGrowthEditor(
   viewerRef: RefObject<TreeViewer | null>,
   params: Params | null,
-  volumesRef: RefObject<VolumePrimitive[]>,
-  initialVolumes: VolumePrimitive[],
-  regrow: (volumes: VolumePrimitive[]) => void,
+  volumes: VolumePrimitive[],
+  change: (edit: EditorChange) => void,
 ): GrowthEditor {
-  const [volumes, setVolumesState] = useState<VolumePrimitive[]>(initialVolumes);
-  const [selected, setSelected] = useState<number | null>(null);
+  const [chosen, setSelected] = useState<number | null>(null);
   const [mode, setMode] = useState<'translate' | 'scale'>('translate');
   const overlayRef = useRef<GrowthOverlay | null>(null);
-  const regrowRef = useRef(regrow);
+  // The latest state, for the overlay's drag callback and the stable actions.
+  const latest = useRef({ params, volumes, change });
   useEffect(() => {
-    regrowRef.current = regrow;
+    latest.current = { params, volumes, change };
   });
-
-  const setVolumes = useCallback(
-    (next: VolumePrimitive[], request: boolean) => {
-      volumesRef.current = next;
-      setVolumesState(next);
-      if (request) regrowRef.current(next);
-    },
-    [volumesRef],
-  );
+  // An undo may remove the selected primitive.
+  const selected = chosen !== null && chosen < volumes.length ? chosen : null;
 
   useEffect(() => {
     const viewer = viewerRef.current;
     if (!viewer) return;
     const overlay = new GrowthOverlay(viewer.overlayHost(), (index, volume) => {
-      const next = volumesRef.current.slice();
+      const next = latest.current.volumes.slice();
       if (index >= next.length) return;
       next[index] = volume;
-      setVolumes(next, true);
+      latest.current.change({ volumes: next, key: `volume:${index}` });
     });
     overlayRef.current = overlay;
     const uninstall = installDebugHook({
@@ -115,7 +114,7 @@ export function useGrowthEditor(
       overlay.dispose();
       if (overlayRef.current === overlay) overlayRef.current = null;
     };
-  }, [viewerRef, volumesRef, setVolumes]);
+  }, [viewerRef]);
 
   useEffect(() => {
     overlayRef.current?.update({
@@ -135,45 +134,24 @@ export function useGrowthEditor(
     return () => clearTimeout(timer);
   }, [volumes]);
 
-  const add = useCallback(
-    (kind: VolumeKind, group: VolumeGroup) => {
-      const current = volumesRef.current;
-      if (current.length >= MAX_VOLUMES) return;
-      setVolumes([...current, newVolume(kind, group, current.length)], true);
-      setSelected(current.length);
-    },
-    [setVolumes, volumesRef],
-  );
+  const add = useCallback((kind: VolumeKind, group: VolumeGroup) => {
+    const { params: current, volumes: list, change: edit } = latest.current;
+    if (list.length >= MAX_VOLUMES || current === null) return;
+    const next = [...list, newVolume(kind, group, list.length)];
+    edit({ params: paramsForAdded(current, group), volumes: next, key: null });
+    setSelected(list.length);
+  }, []);
 
-  const remove = useCallback(
-    (index: number) => {
-      setVolumes(
-        volumesRef.current.filter((_, i) => i !== index),
-        true,
-      );
-      setSelected(null);
-    },
-    [setVolumes, volumesRef],
-  );
+  const remove = useCallback((index: number) => {
+    const { volumes: list, change: edit } = latest.current;
+    edit({ volumes: list.filter((_, i) => i !== index), key: null });
+    setSelected(null);
+  }, []);
 
-  const setGroup = useCallback(
-    (index: number, group: VolumeGroup) => {
-      setVolumes(
-        volumesRef.current.map((v, i) => (i === index ? { ...v, group } : v)),
-        true,
-      );
-    },
-    [setVolumes, volumesRef],
-  );
+  const setGroup = useCallback((index: number, group: VolumeGroup) => {
+    const { volumes: list, change: edit } = latest.current;
+    edit({ volumes: list.map((v, i) => (i === index ? { ...v, group } : v)), key: null });
+  }, []);
 
-  return {
-    volumes,
-    selected,
-    mode,
-    add,
-    remove,
-    select: setSelected,
-    setMode,
-    setGroup,
-  };
+  return { volumes, selected, mode, add, remove, select: setSelected, setMode, setGroup };
 }

@@ -5,6 +5,7 @@ import { parsePresets, parseRegistry } from '../core/parse';
 import init, { core_version, presets_json, registry_json } from '../wasm/sylva_wasm.js';
 import { DocsPage } from './DocsPage';
 import { buildDocsModel } from './model';
+import '../fonts.css';
 import './docs.css';
 
 const rootElement = document.getElementById('root');

@@ -5,8 +5,7 @@
  * imports the real one (the host then needs CORS, and the page's CSP must allow blob: workers).
  */
 import workerUrl from '../worker/worker.ts?worker&url';
-import type { WorkerResponse } from '../worker/protocol';
-import type { WorkerFactory } from '../worker/scheduler';
+import type { WorkerHandle } from '../worker/client';
 
 /** Absolute URL of the built worker script. */
 export function generatorWorkerUrl(): URL {
@@ -27,7 +26,10 @@ export function startModuleWorker(url: URL, pageOrigin: string): Worker {
 }
 
 /** Worker factory for the scheduler (like `createModuleWorker`, cross-origin capable). */
-export const elementWorkerFactory: WorkerFactory = (onMessage, onError) => {
+export function elementWorkerFactory<Req, Res>(
+  onMessage: (response: Res) => void,
+  onError: (message: string) => void,
+): WorkerHandle<Req> {
   let worker: Worker;
   try {
     worker = startModuleWorker(generatorWorkerUrl(), window.location.origin);
@@ -37,7 +39,7 @@ export const elementWorkerFactory: WorkerFactory = (onMessage, onError) => {
     queueMicrotask(() => onError(`the generator worker could not start (${message})`));
     return { post: () => undefined, terminate: () => undefined };
   }
-  worker.onmessage = (event: MessageEvent<WorkerResponse>) => onMessage(event.data);
+  worker.onmessage = (event: MessageEvent<Res>) => onMessage(event.data);
   worker.onerror = (event: ErrorEvent) => {
     event.preventDefault();
     onError(
@@ -51,4 +53,4 @@ export const elementWorkerFactory: WorkerFactory = (onMessage, onError) => {
     post: (request) => worker.postMessage(request),
     terminate: () => worker.terminate(),
   };
-};
+}

@@ -3,10 +3,11 @@
  * latest-wins generation scheduler over the wasm worker, plus autorotate, a background option
  * and a status line (loading, errors) drawn as text over the view. No React.
  */
-import type { ParamSpec, Params, SylvaError, VolumePrimitive } from '../core/types';
+import { describeError } from '../core/describeError';
+import type { Params, VolumePrimitive } from '../core/types';
 import { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from '../worker/protocol';
-import { GenerationScheduler, type WorkerFactory } from '../worker/scheduler';
+import { GenerationScheduler, type GeneratorFactory } from '../worker/scheduler';
 import type { Background } from './options';
 
 /** What to generate once the registry is known (or why nothing can be generated). */
@@ -27,24 +28,12 @@ export type EmbedState =
 
 /** Settings of a TreeEmbed. */
 export interface TreeEmbedOptions {
-  workerFactory: WorkerFactory;
+  workerFactory: GeneratorFactory;
   background: Background;
   autorotate: boolean;
   /** Wind animation on (default) or off. */
   wind?: boolean;
   onState?(state: EmbedState): void;
-}
-
-/** Text for a generator error (like the app's banner; no React here). */
-export function describeError(error: SylvaError, registry: readonly ParamSpec[]): string {
-  if (error.kind === 'panic') return `The generator crashed: ${error.message}`;
-  if (error.param) {
-    const spec = registry.find((s) => s.id === error.param);
-    const name = spec ? `${spec.label} (${error.param})` : error.param;
-    return `Invalid parameter ${name}: ${error.message}`;
-  }
-  if (error.kind === 'budget') return `Tree too large: ${error.message}`;
-  return error.message;
 }
 
 /** The sky of the app viewer when no background option is given. */

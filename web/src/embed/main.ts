@@ -7,6 +7,7 @@ import { decodeQuery, decodeVolumes, VOLUMES_KEY } from '../url/codec';
 import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
 import { TreeEmbed, type EmbedState } from './TreeEmbed';
 import { cameraOf, lookFrom } from '../viewer/cameraView';
+import '../fonts.css';
 import './status.css';
 import './embed.css';
 

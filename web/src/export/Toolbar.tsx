@@ -6,19 +6,21 @@
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
 import { createModuleWorker } from '../createWorker';
-import { EmbedDialog } from '../embed/EmbedDialog';
 import { useDismiss } from '../ui/useDismiss';
-import { encodeVolumes } from '../url/codec';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import { canvasPng, downloadBlob, readTextFile } from './download';
+import { downloadBlob } from './download';
 import { ExportClient } from './exportClient';
-import type { ExportFormat, LeafExport } from './exportProtocol';
+import type { ExportFormat, ExportResponse, LeafExport } from './exportProtocol';
+import { presetFileName } from './presetFile';
 import {
-  MAX_PRESET_FILE_BYTES,
-  parsePresetFile,
-  presetFileName,
-  presetFileText,
-} from './presetFile';
+  EmbedButton,
+  loadPresetFile,
+  savePresetFile,
+  saveScreenshot,
+  ToolbarStatus,
+  useToolbarStatus,
+  type Status,
+} from './toolbarParts';
 import './toolbar.css';
 
 interface Props {
@@ -32,8 +34,6 @@ interface Props {
   /** Applies params read from a preset file (one undoable step). */
   onLoadParams: (params: Params) => void;
 }
-
-type Status = { kind: 'ok' | 'error' | 'busy'; text: string } | null;
 
 /** A mesh download of the Export menu. */
 interface MeshExport {
@@ -70,6 +70,47 @@ export const MESH_EXPORTS: readonly MeshExport[] = [
   },
 ];
 
+/** Downloads an export's one file: the GLB, or the ZIP of the OBJ, its MTL and its textures. */
+function saveExported(response: ExportResponse, format: ExportFormat, report: (s: Status) => void) {
+  const [file] = response.files;
+  if (!file) throw new Error('the exporter returned no file');
+  const blob = 'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
+  downloadBlob(blob, file.name);
+  const contents = format === 'obj' ? ' (OBJ, MTL and textures)' : '';
+  report({ kind: 'ok', text: `Saved ${file.name}${contents}.` });
+}
+
+/** A mesh download of the menu, disabled (with the reason) while the core lacks its format. */
+function MeshExportButton(props: {
+  item: MeshExport;
+  formats: ExportFormat[] | 'checking' | null;
+  onExport: () => void;
+}) {
+  const { item, formats } = props;
+  const available = Array.isArray(formats) && formats.includes(item.format);
+  return (
+    <button
+      type="button"
+      className="toolbar-item-hinted"
+      data-testid={item.testId}
+      disabled={!available}
+      title={
+        available
+          ? undefined
+          : formats === 'checking'
+            ? 'Checking the core…'
+            : 'This build of the Sylva core has no exporter for this format yet'
+      }
+      onClick={props.onExport}
+    >
+      {item.label}
+      <span className="toolbar-hint" data-testid={`${item.testId}-hint`}>
+        {item.hint}
+      </span>
+    </button>
+  );
+}
+
 /** Toolbar over the viewer (top right). */
 export function Toolbar(props: Props) {
   const { registry, params, presetName, viewerRef, volumesRef, onLoadParams } = props;
@@ -77,17 +118,9 @@ export function Toolbar(props: Props) {
   const fileRef = useRef<HTMLInputElement>(null);
   const clientRef = useRef<ExportClient | null>(null);
   const [formats, setFormats] = useState<ExportFormat[] | 'checking' | null>(null);
-  const [status, setStatus] = useState<Status>(null);
-  // The embed dialog: the volumes and page URL as they were when it was opened.
-  const [embedAt, setEmbedAt] = useState<{ volumes: string; appHref: string } | null>(null);
+  const [status, setStatus] = useToolbarStatus();
 
   useEffect(() => () => clientRef.current?.dispose(), []);
-
-  useEffect(() => {
-    if (status?.kind !== 'ok') return;
-    const timer = setTimeout(() => setStatus(null), 6000);
-    return () => clearTimeout(timer);
-  }, [status]);
 
   const client = useCallback((): ExportClient => {
     clientRef.current ??= new ExportClient(createModuleWorker);
@@ -114,39 +147,12 @@ export function Toolbar(props: Props) {
   const screenshot = () => {
     closeMenu();
     const viewer = viewerRef.current;
-    if (!viewer) return;
-    canvasPng(viewer.overlayHost().domElement, () => viewer.renderNow()).then(
-      (blob) => {
-        downloadBlob(blob, `${baseName}.png`);
-        setStatus({ kind: 'ok', text: `Saved ${baseName}.png.` });
-      },
-      (error: unknown) => setStatus({ kind: 'error', text: String(error) }),
-    );
+    if (viewer) saveScreenshot(viewer, baseName, setStatus);
   };
 
   const savePreset = () => {
     closeMenu();
-    const name = `${baseName}.json`;
-    const text = presetFileText(registry, params);
-    downloadBlob(new Blob([text], { type: 'application/json' }), name);
-    setStatus({ kind: 'ok', text: `Saved ${name}.` });
-  };
-
-  const loadPreset = (file: File) => {
-    readTextFile(file, MAX_PRESET_FILE_BYTES)
-      .then((text) => {
-        const result = parsePresetFile(registry, text);
-        if (!result.ok) {
-          setStatus({ kind: 'error', text: `Could not load "${file.name}": ${result.error}` });
-          return;
-        }
-        onLoadParams(result.params);
-        setStatus({ kind: 'ok', text: [`Loaded ${file.name}.`, ...result.messages].join(' ') });
-      })
-      .catch((error: unknown) => {
-        const message = error instanceof Error ? error.message : String(error);
-        setStatus({ kind: 'error', text: `Could not load "${file.name}": ${message}` });
-      });
+    savePresetFile(registry, params, baseName, setStatus);
   };
 
   const exportMesh = ({ format, leaves, label }: MeshExport) => {
@@ -157,16 +163,7 @@ export function Toolbar(props: Props) {
         name: baseName,
         ...(leaves ? { leaves } : {}),
       })
-      .then((response) => {
-        // One file: the GLB, or the ZIP of the OBJ, its MTL and its textures.
-        const [file] = response.files;
-        if (!file) throw new Error('the exporter returned no file');
-        const blob =
-          'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
-        downloadBlob(blob, file.name);
-        const contents = format === 'obj' ? ' (OBJ, MTL and textures)' : '';
-        setStatus({ kind: 'ok', text: `Saved ${file.name}${contents}.` });
-      })
+      .then((response) => saveExported(response, format, setStatus))
       .catch((error: unknown) => {
         const message = error instanceof Error ? error.message : String(error);
         setStatus({ kind: 'error', text: `Export failed: ${message}` });
@@ -194,31 +191,14 @@ export function Toolbar(props: Props) {
           >
             Load preset JSON…
           </button>
-          {MESH_EXPORTS.map((item) => {
-            const available = Array.isArray(formats) && formats.includes(item.format);
-            return (
-              <button
-                key={item.testId}
-                type="button"
-                className="toolbar-item-hinted"
-                data-testid={item.testId}
-                disabled={!available}
-                title={
-                  available
-                    ? undefined
-                    : formats === 'checking'
-                      ? 'Checking the core…'
-                      : 'This build of the Sylva core has no exporter for this format yet'
-                }
-                onClick={() => exportMesh(item)}
-              >
-                {item.label}
-                <span className="toolbar-hint" data-testid={`${item.testId}-hint`}>
-                  {item.hint}
-                </span>
-              </button>
-            );
-          })}
+          {MESH_EXPORTS.map((item) => (
+            <MeshExportButton
+              key={item.testId}
+              item={item}
+              formats={formats}
+              onExport={() => exportMesh(item)}
+            />
+          ))}
         </div>
       </details>
       <input
@@ -230,21 +210,10 @@ export function Toolbar(props: Props) {
         onChange={(e) => {
           const file = e.currentTarget.files?.[0];
           e.currentTarget.value = '';
-          if (file) loadPreset(file);
+          if (file) loadPresetFile(file, registry, onLoadParams, setStatus);
         }}
       />
-      <button
-        type="button"
-        data-testid="copy-embed"
-        onClick={() =>
-          setEmbedAt({
-            volumes: encodeVolumes(volumesRef.current ?? []),
-            appHref: window.location.href,
-          })
-        }
-      >
-        Copy embed code
-      </button>
+      <EmbedButton registry={registry} params={params} volumesRef={volumesRef} />
       <a
         className="toolbar-link"
         href="docs.html"
@@ -254,23 +223,7 @@ export function Toolbar(props: Props) {
       >
         Docs
       </a>
-      {status ? (
-        <p
-          className={`toolbar-status toolbar-status-${status.kind}`}
-          role={status.kind === 'error' ? 'alert' : 'status'}
-          data-testid="toolbar-status"
-        >
-          {status.text}
-          {status.kind === 'error' ? (
-            <button type="button" aria-label="Dismiss" onClick={() => setStatus(null)}>
-              ×
-            </button>
-          ) : null}
-        </p>
-      ) : null}
-      {embedAt ? (
-        <EmbedDialog input={{ registry, params, ...embedAt }} onClose={() => setEmbedAt(null)} />
-      ) : null}
+      <ToolbarStatus status={status} onDismiss={() => setStatus(null)} />
     </div>
   );
 }

@@ -4,16 +4,17 @@
  * the core supports in its `ready` message.
  */
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
-import type { WorkerFactory, WorkerHandle } from '../worker/scheduler';
-import type { ExportFormat, ExportResponse, LeafExport } from './exportProtocol';
+import { WorkerClient } from '../worker/client';
+import type { GeneratorWorkerFactory, WorkerRequest, WorkerResponse } from '../worker/protocol';
+import type { ExportFormat, ExportRequest, ExportResponse, LeafExport } from './exportProtocol';
 
 /** Longest an export may take (ms). */
 export const EXPORT_TIME_LIMIT_MS = 60_000;
 
 interface Pending {
+  request: ExportRequest;
   resolve(response: ExportResponse): void;
   reject(error: Error): void;
-  timer: ReturnType<typeof setTimeout>;
 }
 
 /** An export failure with the core's error when there is one. */
@@ -27,20 +28,64 @@ export class ExportError extends Error {
   }
 }
 
-/** Owns the export worker. */
+/** Owns the export worker (through [`WorkerClient`]: exports run one after the other). */
 export class ExportClient {
-  private worker: WorkerHandle | null = null;
+  private readonly client: WorkerClient<Pending, WorkerRequest, WorkerResponse>;
   private ready: Promise<ExportFormat[]> | null = null;
-  private readonly pending = new Map<number, Pending>();
+  private settleReady: {
+    resolve(formats: ExportFormat[]): void;
+    reject(error: Error): void;
+  } | null = null;
   private nextId = 1;
-  private failReady: ((error: Error) => void) | null = null;
 
-  constructor(private readonly factory: WorkerFactory) {}
+  constructor(factory: GeneratorWorkerFactory) {
+    this.client = new WorkerClient<Pending, WorkerRequest, WorkerResponse>(
+      factory,
+      {
+        message: (job) => job.request,
+        ends: (response, job) =>
+          (response.type === 'exported' || response.type === 'error') &&
+          response.id === job.request.id,
+        receive: (response, answered) => {
+          if (answered === null) return;
+          if (response.type === 'exported') answered.resolve(response);
+          else if (response.type === 'error') {
+            answered.reject(new ExportError(response.error.message, response.error));
+          }
+        },
+        ready: (response) => {
+          if (response.type === 'ready') this.settleReady?.resolve(response.exportFormats ?? []);
+          this.settleReady = null;
+        },
+        crashed: (message, lost, starting) => {
+          const error = new ExportError(`The exporter crashed: ${message}`);
+          lost?.reject(error);
+          // A worker that never started: the next call starts a fresh one.
+          this.settleReady?.reject(error);
+          this.settleReady = null;
+          if (starting) this.ready = null;
+        },
+        timedOut: (lost) =>
+          lost.reject(
+            new ExportError(`The export took longer than ${EXPORT_TIME_LIMIT_MS / 1000} s.`),
+          ),
+        dropped: (job) => job.reject(new ExportError('The export was cancelled.')),
+      },
+      { eager: false, policy: 'queue', timeLimitMs: EXPORT_TIME_LIMIT_MS },
+    );
+  }
 
   /** The formats the core can export (starts the worker). */
   formats(): Promise<ExportFormat[]> {
-    if (!this.ready) this.start();
-    return this.ready ?? Promise.resolve([]);
+    if (!this.ready) {
+      this.ready = new Promise<ExportFormat[]>((resolve, reject) => {
+        this.settleReady = { resolve, reject };
+      });
+      // A failed start is reported to whoever awaits formats(); never unhandled.
+      this.ready.catch(() => undefined);
+      this.client.ensureStarted();
+    }
+    return this.ready;
   }
 
   /** Regenerates `params` in the export worker and returns the files. */
@@ -54,15 +99,9 @@ export class ExportClient {
     if (!formats.includes(format)) {
       throw new ExportError(`This Sylva core cannot export ${format.toUpperCase()} yet.`);
     }
-    const worker = this.worker;
-    if (!worker) throw new ExportError('The export worker stopped.');
     const id = this.nextId++;
     return new Promise<ExportResponse>((resolve, reject) => {
-      const timer = setTimeout(() => {
-        this.fail(new ExportError(`The export took longer than ${EXPORT_TIME_LIMIT_MS / 1000} s.`));
-      }, EXPORT_TIME_LIMIT_MS);
-      this.pending.set(id, { resolve, reject, timer });
-      worker.post({
+      const request: ExportRequest = {
         type: 'export',
         id,
         params,
@@ -70,52 +109,15 @@ export class ExportClient {
         ...(volumes.length > 0 ? { volumes } : {}),
         ...(options.leaves ? { leaves: options.leaves } : {}),
         ...(options.name ? { name: options.name } : {}),
-      });
+      };
+      this.client.submit({ request, resolve, reject });
     });
   }
 
   /** Stops the worker; pending exports fail. */
   dispose(): void {
-    this.fail(new ExportError('The export was cancelled.'));
-  }
-
-  private start(): void {
-    this.ready = new Promise<ExportFormat[]>((resolve, reject) => {
-      this.failReady = reject;
-      this.worker = this.factory(
-        (response) => {
-          if (response.type === 'ready') {
-            this.failReady = null;
-            resolve(response.exportFormats ?? []);
-          } else if (response.type === 'exported' || response.type === 'error') {
-            const entry = this.pending.get(response.id);
-            if (!entry) return;
-            this.pending.delete(response.id);
-            clearTimeout(entry.timer);
-            if (response.type === 'exported') entry.resolve(response);
-            else entry.reject(new ExportError(response.error.message, response.error));
-          } else if (response.type === 'fatal') {
-            this.fail(new ExportError(`The exporter crashed: ${response.message}`));
-          }
-        },
-        (message) => this.fail(new ExportError(`The export worker failed: ${message}`)),
-      );
-    });
-    // A failed start is reported to whoever awaits formats(); never unhandled.
-    this.ready.catch(() => undefined);
-  }
-
-  /** Fails everything in flight and drops the worker (the next call starts a fresh one). */
-  private fail(error: Error): void {
-    this.worker?.terminate();
-    this.worker = null;
-    this.failReady?.(error);
-    this.failReady = null;
-    this.ready = null;
-    for (const entry of this.pending.values()) {
-      clearTimeout(entry.timer);
-      entry.reject(error);
-    }
-    this.pending.clear();
+    this.settleReady?.reject(new ExportError('The export was cancelled.'));
+    this.settleReady = null;
+    this.client.dispose();
   }
 }

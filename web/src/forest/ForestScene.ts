@@ -7,6 +7,7 @@
  * uploaded and `.count` set, so the number of draw calls is bounded by
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
+import { fitToContainer } from '../viewer/cameraView';
 import type { Sphere, InstancedMesh } from 'three';
 import { impostorLights, SceneLights } from '../viewer/lighting';
 import {
@@ -347,11 +348,7 @@ export class ForestScene {
   }
 
   private resize(): void {
-    const width = Math.max(this.container.clientWidth, 1);
-    const height = Math.max(this.container.clientHeight, 1);
-    this.renderer.setSize(width, height, true);
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
+    fitToContainer(this.renderer, this.camera, this.container);
   }
 
   private loop = (): void => {

@@ -47,6 +47,74 @@ function varietyLimit(): number {
   return Number.isInteger(k) && k > 0 ? k : Infinity;
 }
 
+/**
+ * Generates `all` varieties in turn and adds each to `scene` as it comes; the scene stops
+ * showing its loading state when every one has settled. Returns a function that ignores what
+ * is still to come.
+ */
+function loadVarieties(
+  client: LodClient,
+  all: Params[],
+  scene: ForestScene,
+  on: { loaded: () => void; failed: (message: string) => void },
+): () => void {
+  let cancelled = false;
+  let settled = 0;
+  const settle = () => {
+    settled++;
+    if (settled === all.length) scene.setLoading(false);
+  };
+  for (const params of all) {
+    client.request(params).then(
+      (lods) => {
+        if (cancelled) return;
+        scene.addVariety(lods);
+        on.loaded();
+        settle();
+      },
+      (e: unknown) => {
+        if (cancelled) return;
+        on.failed(e instanceof Error ? e.message : String(e));
+        settle();
+      },
+    );
+  }
+  return () => {
+    cancelled = true;
+  };
+}
+
+/** The forest's part of the debug hook; `setCount` follows a count set through it. */
+function installForestHook(
+  scene: ForestScene,
+  expectedVarieties: number,
+  setCount: (n: number) => void,
+): () => void {
+  return installDebugHook({
+    forest: () => {
+      const s = scene.stats();
+      return {
+        drawCalls: s.drawCalls,
+        bound: s.bound,
+        instances: s.trees,
+        visible: s.visible,
+        perLevel: s.perLevel,
+        frameMs: s.frameMs,
+        cpuMs: s.cpuMs,
+        assignMs: s.assignMs,
+        varieties: s.varieties,
+        expectedVarieties,
+        bakeMs: scene.bakeMs,
+      };
+    },
+    setForestTrees: (n: number) => {
+      setCount(n);
+      scene.setCount(n);
+    },
+    setForestCameraDistance: (d: number) => scene.setCameraDistance(d),
+  });
+}
+
 /** See the module docs. */
 export function ForestView({ info }: { info: ReadyInfo }) {
   const containerRef = useRef<HTMLDivElement>(null);
@@ -67,54 +135,17 @@ export function ForestView({ info }: { info: ReadyInfo }) {
     const client = new LodClient(createModuleWorker, false);
     const all = varietyParams(info).slice(0, varietyLimit());
     setTotal(all.length);
-    let cancelled = false;
-    let settled = 0;
-    const settle = () => {
-      settled++;
-      if (settled === all.length) scene.setLoading(false);
-    };
-    for (const params of all) {
-      client.request(params).then(
-        (lods) => {
-          if (cancelled) return;
-          scene.addVariety(lods);
-          setLoaded(scene.varietyCount);
-          settle();
-        },
-        (e: unknown) => {
-          if (cancelled) return;
-          setError(e instanceof Error ? e.message : String(e));
-          settle();
-        },
-      );
-    }
+    const stop = loadVarieties(client, all, scene, {
+      loaded: () => setLoaded(scene.varietyCount),
+      failed: setError,
+    });
     const timer = window.setInterval(() => setStats(scene.stats()), 500);
-    const uninstall = installDebugHook({
-      forest: () => {
-        const s = scene.stats();
-        return {
-          drawCalls: s.drawCalls,
-          bound: s.bound,
-          instances: s.trees,
-          visible: s.visible,
-          perLevel: s.perLevel,
-          frameMs: s.frameMs,
-          cpuMs: s.cpuMs,
-          assignMs: s.assignMs,
-          varieties: s.varieties,
-          expectedVarieties: all.length,
-          bakeMs: scene.bakeMs,
-        };
-      },
-      setForestTrees: (n: number) => {
-        countRef.current = n;
-        setCount(n);
-        scene.setCount(n);
-      },
-      setForestCameraDistance: (d: number) => scene.setCameraDistance(d),
+    const uninstall = installForestHook(scene, all.length, (n) => {
+      countRef.current = n;
+      setCount(n);
     });
     return () => {
-      cancelled = true;
+      stop();
       uninstall();
       window.clearInterval(timer);
       client.dispose();

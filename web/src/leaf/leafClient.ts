@@ -1,11 +1,17 @@
 /**
  * Latest-request-wins client for the leaf inspector: its own generator worker (so editing a
  * leaf never waits behind a tree), one request in flight, one pending slot that newer requests
- * overwrite; a crashed worker is recreated and the pending request sent to the new one.
+ * overwrite; a crashed worker is recreated and the pending request sent to the new one (all of
+ * it in [`WorkerClient`]).
  */
 import type { LeafInspection, Params, Preset, SylvaError } from '../core/types';
-import type { LeafRequest } from '../worker/protocol';
-import type { WorkerFactory, WorkerHandle } from '../worker/scheduler';
+import { WorkerClient } from '../worker/client';
+import type {
+  GeneratorWorkerFactory,
+  LeafRequest,
+  WorkerRequest,
+  WorkerResponse,
+} from '../worker/protocol';
 
 /** What the inspector asks for. */
 export type LeafQuery = Omit<LeafRequest, 'type' | 'id'>;
@@ -20,82 +26,40 @@ export interface LeafCallbacks {
 
 /** Owns the inspector's worker. */
 export class LeafClient {
-  private worker: WorkerHandle | null = null;
-  private ready = false;
-  private inFlight: number | null = null;
-  private pending: LeafRequest | null = null;
+  private readonly client: WorkerClient<LeafRequest, WorkerRequest, WorkerResponse>;
   private nextId = 1;
-  private disposed = false;
 
-  constructor(
-    private readonly factory: WorkerFactory,
-    private readonly callbacks: LeafCallbacks,
-  ) {
-    this.start();
+  constructor(factory: GeneratorWorkerFactory, callbacks: LeafCallbacks) {
+    this.client = new WorkerClient<LeafRequest, WorkerRequest, WorkerResponse>(factory, {
+      message: (request) => request,
+      ends: (response, request) =>
+        (response.type === 'leaf' || response.type === 'error') && response.id === request.id,
+      receive: (response, answered) => {
+        if (answered === null) return;
+        if (response.type === 'leaf') {
+          const { svg, iterations, nodes, links, segments, auxins, triangles, hash, id } = response;
+          const leaf = { svg, iterations, nodes, links, segments, auxins, triangles, hash };
+          callbacks.onLeaf(leaf, id);
+        } else if (response.type === 'error') {
+          callbacks.onError(response.error);
+        }
+      },
+      ready: (response) => {
+        if (response.type === 'ready') callbacks.onPresets?.(response.leafPresets ?? []);
+      },
+      crashed: (message) => callbacks.onError({ kind: 'panic', message }),
+    });
   }
 
   /** Requests a leaf drawing; supersedes any request not yet sent. Returns its id. */
   request(params: Params, step: number, triangulation: boolean): number {
     const id = this.nextId++;
-    this.pending = { type: 'leaf', id, params, step, triangulation };
-    this.pump();
+    this.client.submit({ type: 'leaf', id, params, step, triangulation });
     return id;
   }
 
   /** Terminates the worker. */
   dispose(): void {
-    this.disposed = true;
-    this.worker?.terminate();
-    this.worker = null;
-  }
-
-  private start(): void {
-    this.ready = false;
-    this.inFlight = null;
-    const worker = this.factory(
-      (response) => {
-        if (worker !== this.worker) return;
-        if (response.type === 'ready') {
-          this.ready = true;
-          this.callbacks.onPresets?.(response.leafPresets ?? []);
-        } else if (response.type === 'leaf') {
-          if (response.id !== this.inFlight) return;
-          this.inFlight = null;
-          const { svg, iterations, nodes, links, segments, auxins, triangles, hash, id } = response;
-          const leaf = { svg, iterations, nodes, links, segments, auxins, triangles, hash };
-          this.callbacks.onLeaf(leaf, id);
-        } else if (response.type === 'error') {
-          if (response.id !== this.inFlight) return;
-          this.inFlight = null;
-          this.callbacks.onError(response.error);
-        } else if (response.type === 'fatal') {
-          this.crash(response.message);
-          return;
-        }
-        this.pump();
-      },
-      (message) => {
-        if (worker === this.worker) this.crash(message);
-      },
-    );
-    this.worker = worker;
-  }
-
-  private crash(message: string): void {
-    this.worker?.terminate();
-    this.worker = null;
-    const wasReady = this.ready;
-    this.callbacks.onError({ kind: 'panic', message });
-    // A worker that crashed while starting would crash again: stop there.
-    if (!this.disposed && wasReady) this.start();
-  }
-
-  private pump(): void {
-    if (this.disposed || !this.worker || !this.ready || this.inFlight !== null) return;
-    const next = this.pending;
-    if (!next) return;
-    this.pending = null;
-    this.inFlight = next.id;
-    this.worker.post(next);
+    this.client.dispose();
   }
 }

@@ -39,6 +39,11 @@ import {
 import { impostorLights, type ImpostorLights } from '../viewer/lighting';
 import { frameDirection, viewBasis } from './hemiOct';
 import { wrapInstances } from '../viewer/instances';
+import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
+import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
+import impostorVertex from './shaders/impostor.vert.glsl?raw';
+import impostorFragment from './shaders/impostor.frag.glsl?raw';
+import impostorVaryings from './shaders/impostorVaryings.glsl?raw';
 
 /** One part of the tree to bake: its geometry (instanced or not), base colour and texture. */
 export interface BakePart {
@@ -93,52 +98,10 @@ export interface ImpostorAtlas {
   dispose(): void;
 }
 
-const BAKE_VERTEX = /* glsl */ `
-varying vec3 vN;
-varying vec2 vUv;
-varying vec3 vTint;
-void main() {
-  mat4 m = modelMatrix;
-#ifdef USE_INSTANCING
-  m = modelMatrix * instanceMatrix;
-#endif
-  vN = normalize(transpose(inverse(mat3(m))) * normal);
-  vUv = uv;
-  vTint = vec3(1.0);
-#ifdef USE_INSTANCING_COLOR
-  vTint = instanceColor;
-#endif
-#ifdef USE_COLOR
-  vTint *= color;
-#endif
-  gl_Position = projectionMatrix * viewMatrix * m * vec4(position, 1.0);
-}`;
-
-const BAKE_FRAGMENT = /* glsl */ `
-layout(location = 0) out highp vec4 outColor;
-layout(location = 1) out highp vec4 outNormal;
-uniform vec3 uColor;
-uniform sampler2D uMap;
-uniform float uUseMap;
-varying vec3 vN;
-varying vec2 vUv;
-varying vec3 vTint;
-void main() {
-  vec4 albedo = vec4(uColor * vTint, 1.0);
-  if (uUseMap > 0.5) {
-    vec4 t = texture2D(uMap, vUv);
-    if (t.a < 0.5) discard;
-    albedo.rgb *= t.rgb;
-  }
-  vec3 n = normalize(vN) * (gl_FrontFacing ? 1.0 : -1.0);
-  outColor = vec4(albedo.rgb, 1.0);
-  outNormal = vec4(n * 0.5 + 0.5, 1.0);
-}`;
-
 function bakeMaterial(part: BakePart): ShaderMaterial {
   return new ShaderMaterial({
-    vertexShader: BAKE_VERTEX,
-    fragmentShader: BAKE_FRAGMENT,
+    vertexShader: bakeVertex,
+    fragmentShader: bakeFragment,
     uniforms: {
       uColor: { value: new Color(part.color) },
       uMap: { value: part.map },
@@ -250,147 +213,6 @@ export function bakeImpostor(
   };
 }
 
-const IMPOSTOR_VERTEX = /* glsl */ `
-uniform vec3 uCentre;
-uniform float uRadius;
-uniform float uFrames;
-varying vec2 vUv0;
-varying vec2 vUv1;
-varying vec2 vUv2;
-varying vec2 vFrame0;
-varying vec2 vFrame1;
-varying vec2 vFrame2;
-varying vec3 vWeights;
-varying vec3 vRotX;
-varying vec3 vRotY;
-varying vec3 vRotZ;
-#include <common>
-#include <fog_pars_vertex>
-
-vec2 hemiOctEncode(vec3 d) {
-  d.y = max(d.y, 0.0);
-  float s = max(abs(d.x) + d.y + abs(d.z), 1e-6);
-  vec2 p = d.xz / s;
-  return vec2(p.x + p.y, p.x - p.y) * 0.5 + 0.5;
-}
-vec3 hemiOctDecode(vec2 uv) {
-  vec2 a = uv * 2.0 - 1.0;
-  vec2 p = vec2(a.x + a.y, a.x - a.y) * 0.5;
-  float y = max(1.0 - abs(p.x) - abs(p.y), 0.0);
-  return normalize(vec3(p.x, y, p.y));
-}
-void viewBasis(vec3 d, out vec3 r, out vec3 u) {
-  vec3 rr = vec3(d.z, 0.0, -d.x);
-  float l = length(rr);
-  r = l < 1e-6 ? vec3(1.0, 0.0, 0.0) : rr / l;
-  u = cross(d, r);
-}
-// Where the eye ray through the quad point p meets frame f's image plane, in frame uv.
-vec2 frameUv(vec2 f, vec3 eye, vec3 p) {
-  vec3 d = hemiOctDecode(f / (uFrames - 1.0));
-  vec3 r; vec3 u;
-  viewBasis(d, r, u);
-  vec3 w = p - eye;
-  float den = dot(w, d);
-  float t = abs(den) > 1e-6 ? -dot(eye, d) / den : 1.0;
-  vec3 hit = eye + w * t;
-  return vec2(dot(hit, r), dot(hit, u)) / (2.0 * uRadius) + 0.5;
-}
-
-void main() {
-  mat4 m = modelMatrix;
-#ifdef USE_INSTANCING
-  m = m * instanceMatrix;
-#endif
-  float scale = length(m[0].xyz);
-  mat3 rot = mat3(m[0].xyz / scale, m[1].xyz / scale, m[2].xyz / scale);
-  vec3 centreW = (m * vec4(uCentre, 1.0)).xyz;
-  vec3 eyeL = transpose(rot) * (cameraPosition - centreW) / scale;
-  vec3 toEye = normalize(eyeL);
-  vec3 view = normalize(vec3(toEye.x, max(toEye.y, 0.0) + 1e-4, toEye.z));
-  vec3 r; vec3 u;
-  viewBasis(view, r, u);
-  // 5 % margin: the sphere's perspective outline is a little larger than its radius.
-  vec3 local = (r * position.x + u * position.y) * 2.1 * uRadius;
-  vec4 mvPosition = viewMatrix * (m * vec4(uCentre + local, 1.0));
-  gl_Position = projectionMatrix * mvPosition;
-
-  vec2 g = hemiOctEncode(view) * (uFrames - 1.0);
-  vec2 c = min(floor(g), vec2(uFrames - 2.0));
-  vec2 f = g - c;
-  if (f.x + f.y <= 1.0) {
-    vFrame0 = c; vFrame1 = c + vec2(1.0, 0.0); vFrame2 = c + vec2(0.0, 1.0);
-    vWeights = vec3(1.0 - f.x - f.y, f.x, f.y);
-  } else {
-    vFrame0 = c + 1.0; vFrame1 = c + vec2(0.0, 1.0); vFrame2 = c + vec2(1.0, 0.0);
-    vWeights = vec3(f.x + f.y - 1.0, 1.0 - f.x, 1.0 - f.y);
-  }
-  vUv0 = frameUv(vFrame0, eyeL, local);
-  vUv1 = frameUv(vFrame1, eyeL, local);
-  vUv2 = frameUv(vFrame2, eyeL, local);
-  vRotX = rot[0]; vRotY = rot[1]; vRotZ = rot[2];
-#include <fog_vertex>
-}`;
-
-const IMPOSTOR_FRAGMENT = /* glsl */ `
-uniform sampler2D uColor;
-uniform sampler2D uNormal;
-uniform float uFrames;
-uniform float uCellPx;
-uniform float uAlphaTest;
-uniform float uCoverage;
-uniform vec3 uSunDir;
-uniform vec3 uSunColor;
-uniform vec3 uSky;
-uniform vec3 uGround;
-varying vec2 vUv0;
-varying vec2 vUv1;
-varying vec2 vUv2;
-varying vec2 vFrame0;
-varying vec2 vFrame1;
-varying vec2 vFrame2;
-varying vec3 vWeights;
-varying vec3 vRotX;
-varying vec3 vRotY;
-varying vec3 vRotZ;
-#include <common>
-#include <fog_pars_fragment>
-
-vec2 atlasUv(vec2 frame, vec2 uv) {
-  float e = 0.5 / uCellPx;
-  return (frame + clamp(uv, e, 1.0 - e)) / uFrames;
-}
-float inside(vec2 uv) {
-  return step(0.0, uv.x) * step(uv.x, 1.0) * step(0.0, uv.y) * step(uv.y, 1.0);
-}
-void main() {
-  vec2 a0 = atlasUv(vFrame0, vUv0);
-  vec2 a1 = atlasUv(vFrame1, vUv1);
-  vec2 a2 = atlasUv(vFrame2, vUv2);
-  // A sample outside its frame's square is empty.
-  vec4 c0 = texture2D(uColor, a0) * inside(vUv0);
-  vec4 c1 = texture2D(uColor, a1) * inside(vUv1);
-  vec4 c2 = texture2D(uColor, a2) * inside(vUv2);
-  // Sharpened blend: one frame dominates away from the frames' borders, so parts far from the
-  // tree's centre (the trunk's foot, the crown's top) show less twice.
-  vec3 w = vWeights * vWeights * vWeights;
-  w /= max(w.x + w.y + w.z, 1e-6);
-  vec4 c = c0 * w.x + c1 * w.y + c2 * w.z;
-  if (c.a < uAlphaTest) discard;
-  vec3 albedo = c.rgb / max(c.a, 1e-3);
-  vec4 n0 = texture2D(uNormal, a0);
-  vec4 n1 = texture2D(uNormal, a1);
-  vec4 n2 = texture2D(uNormal, a2);
-  // Normals are premultiplied by coverage (the colour's alpha) in the multisampled bake.
-  vec3 nl = (n0.xyz * 2.0 - c0.a) * w.x + (n1.xyz * 2.0 - c1.a) * w.y + (n2.xyz * 2.0 - c2.a) * w.z;
-  vec3 n = normalize(mat3(vRotX, vRotY, vRotZ) * nl + vec3(0.0, 1e-4, 0.0));
-  vec3 irradiance = mix(uGround, uSky, n.y * 0.5 + 0.5) + uSunColor * max(dot(n, uSunDir), 0.0);
-  gl_FragColor = vec4(albedo * irradiance * RECIPROCAL_PI, uCoverage > 0.5 ? c.a : 1.0);
-#include <tonemapping_fragment>
-#include <colorspace_fragment>
-#include <fog_fragment>
-}`;
-
 /** The viewer's lights as the impostor's sky + ground + sun model (one definition: lighting.ts). */
 export function viewerLights(): ImpostorLights {
   return impostorLights();
@@ -404,8 +226,8 @@ export function impostorMaterial(
 ): ShaderMaterial {
   const coverage = options.coverage ?? false;
   const material = new ShaderMaterial({
-    vertexShader: IMPOSTOR_VERTEX,
-    fragmentShader: IMPOSTOR_FRAGMENT,
+    vertexShader: impostorVaryings + impostorVertex,
+    fragmentShader: impostorVaryings + impostorFragment,
     uniforms: UniformsUtils.merge([
       UniformsLib.fog,
       {

@@ -133,14 +133,7 @@ export function mergedLeafGeometry(level: LodLevelBuffers): BufferGeometry | nul
     const li = level.leafIndices;
     for (let t = 0; t < li.length; t++) indices[k * li.length + t] = li[t]! + base;
   }
-  const g = new BufferGeometry();
-  g.setAttribute('position', new BufferAttribute(positions, 3));
-  g.setAttribute('normal', new BufferAttribute(normals, 3));
-  g.setAttribute('uv', new BufferAttribute(uvs, 2));
-  g.setAttribute('color', new BufferAttribute(colors, 3));
-  g.setIndex(new BufferAttribute(indices, 1));
-  g.computeBoundingSphere();
-  return g;
+  return coloredGeometry(positions, normals, uvs, colors, indices);
 }
 
 /**
@@ -201,14 +194,7 @@ export function cloudGeometry(level: LodLevelBuffers): BufferGeometry | null {
     const [i0, i1, i2, i3] = [k * 4, k * 4 + 1, k * 4 + 2, k * 4 + 3];
     indices.set([i0, i1, i2, i0, i2, i3, i0, i2, i1, i0, i3, i2], k * 12);
   }
-  const g = new BufferGeometry();
-  g.setAttribute('position', new BufferAttribute(positions, 3));
-  g.setAttribute('normal', new BufferAttribute(normals, 3));
-  g.setAttribute('uv', new BufferAttribute(uvs, 2));
-  g.setAttribute('color', new BufferAttribute(colors, 3));
-  g.setIndex(new BufferAttribute(indices, 1));
-  g.computeBoundingSphere();
-  return g;
+  return coloredGeometry(positions, normals, uvs, colors, indices);
 }
 
 /** How far cloud normals lean away from the crown centre (0 = straight up). */
@@ -242,15 +228,32 @@ export function clumpLeaves(cell: number): number {
   return Math.max(2, Math.round((MAX_CLUMP_LEAVES * Math.log(1 - 0.9 * d)) / Math.log(0.1)));
 }
 
+/** A geometry of positions, normals, uvs and vertex colours, indexed, with its bounds. */
+function coloredGeometry(
+  positions: Float32Array,
+  normals: Float32Array,
+  uvs: Float32Array,
+  colors: Float32Array,
+  indices: Uint32Array,
+): BufferGeometry {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(positions, 3));
+  g.setAttribute('normal', new BufferAttribute(normals, 3));
+  g.setAttribute('uv', new BufferAttribute(uvs, 2));
+  g.setAttribute('color', new BufferAttribute(colors, 3));
+  g.setIndex(new BufferAttribute(indices, 1));
+  g.computeBoundingSphere();
+  return g;
+}
+
 /** The leaf texture as a three.js texture (sRGB, mipmapped). */
 export function leafTexture(buffers: LeafTextureBuffers): DataTexture {
-  const t = new DataTexture(
-    buffers.rgba,
-    buffers.width,
-    buffers.height,
-    RGBAFormat,
-    UnsignedByteType,
-  );
+  return srgbTexture(buffers.rgba, buffers.width, buffers.height);
+}
+
+/** RGBA bytes as an sRGB, mipmapped three.js texture. */
+function srgbTexture(rgba: Uint8Array | Uint8ClampedArray, width: number, height: number) {
+  const t = new DataTexture(rgba, width, height, RGBAFormat, UnsignedByteType);
   t.colorSpace = SRGBColorSpace;
   t.magFilter = LinearFilter;
   t.minFilter = LinearMipmapLinearFilter;
@@ -294,19 +297,7 @@ export function clumpTexture(leaf: LeafTextureBuffers | null, seed = 7, size = 5
     for (let i = 0; i < count; i++) drawLeaf(ctx, sprite, rand, ox, oy, half);
   }
   const image = ctx.getImageData(0, 0, size, size);
-  const texture = new DataTexture(
-    bleedAndFlip(image.data, size, size),
-    size,
-    size,
-    RGBAFormat,
-    UnsignedByteType,
-  );
-  texture.colorSpace = SRGBColorSpace;
-  texture.magFilter = LinearFilter;
-  texture.minFilter = LinearMipmapLinearFilter;
-  texture.generateMipmaps = true;
-  texture.needsUpdate = true;
-  return texture;
+  return srgbTexture(bleedAndFlip(image.data, size, size), size, size);
 }
 
 /**

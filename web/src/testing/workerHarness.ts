@@ -30,7 +30,10 @@ export interface Harness {
  * A handler over `wasm` (the real module by default) that posts hashes synchronously;
  * `options` as for `createHandler` (the default `defer` runs the task at once).
  */
-export function harness(wasm: WasmApi = loadWasm(), options: HandlerOptions = {}): Harness {
+export function harness(
+  wasm: WasmApi = loadWasm(),
+  options: HandlerOptions & { debug?: false } = {},
+): Harness {
   const sent: Sent[] = [];
   const handle = createHandler(wasm, (message, transfer) => sent.push({ message, transfer }), {
     defer: (task) => {

@@ -1,4 +1,5 @@
 /** Error banner: generator errors (naming the parameter) and share-link notices, as plain text. */
+import { describeError } from '../core/describeError';
 import type { ParamSpec, SylvaError } from '../core/types';
 
 interface Props {
@@ -8,19 +9,8 @@ interface Props {
   onDismiss: () => void;
 }
 
-/** Human-readable text for a generator error. */
-export function describeError(error: SylvaError, registry: readonly ParamSpec[]): string {
-  if (error.kind === 'panic') {
-    return `The generator crashed and was restarted (last good tree kept): ${error.message}`;
-  }
-  if (error.param) {
-    const spec = registry.find((s) => s.id === error.param);
-    const name = spec ? `${spec.label} (${error.param})` : error.param;
-    return `Invalid parameter ${name}: ${error.message}`;
-  }
-  if (error.kind === 'budget') return `Tree too large: ${error.message}`;
-  return error.message;
-}
+/** How a panic is introduced: the app restarts the worker and keeps the last tree. */
+const CRASHED = 'The generator crashed and was restarted (last good tree kept)';
 
 /** Renders nothing when there is nothing to say; text is only ever rendered as text. */
 export function ErrorBanner({ error, notices, registry, onDismiss }: Props) {
@@ -30,7 +20,7 @@ export function ErrorBanner({ error, notices, registry, onDismiss }: Props) {
       <div className="error-lines">
         {error ? (
           <p data-testid="error-generator" data-kind={error.kind}>
-            {describeError(error, registry)}
+            {describeError(error, registry, CRASHED)}
           </p>
         ) : null}
         {notices.map((notice, i) => (

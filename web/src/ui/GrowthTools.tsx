@@ -6,15 +6,17 @@ import type { GrowthEditor } from '../app/useGrowthEditor';
 
 const KINDS: VolumeKind[] = ['sphere', 'box', 'cylinder'];
 const GROUPS: VolumeGroup[] = ['crown', 'shadow', 'exclusion'];
+const MODES: ['translate' | 'scale', string][] = [
+  ['translate', 'Move'],
+  ['scale', 'Scale'],
+];
 
 interface Props {
   editor: GrowthEditor;
-  /** Called after a primitive is added (the app switches growth mode and the wireframes on). */
-  onAdded: (group: VolumeGroup) => void;
 }
 
 /** See the module comment. */
-export function GrowthTools({ editor, onAdded }: Props) {
+export function GrowthTools({ editor }: Props) {
   const [group, setGroup] = useState<VolumeGroup>('crown');
   const full = editor.volumes.length >= MAX_VOLUMES;
   return (
@@ -44,10 +46,7 @@ export function GrowthTools({ editor, onAdded }: Props) {
             data-testid={`add-${kind}`}
             disabled={full}
             title={`Add a ${kind} to the ${group} group; drag it with the gizmo`}
-            onClick={() => {
-              editor.add(kind, group);
-              onAdded(group);
-            }}
+            onClick={() => editor.add(kind, group)}
           >
             Add {kind}
           </button>
@@ -56,22 +55,17 @@ export function GrowthTools({ editor, onAdded }: Props) {
       {editor.volumes.length > 0 ? (
         <>
           <div className="param-row" role="group" aria-label="Gizmo mode">
-            <button
-              type="button"
-              data-testid="gizmo-translate"
-              aria-pressed={editor.mode === 'translate'}
-              onClick={() => editor.setMode('translate')}
-            >
-              Move
-            </button>
-            <button
-              type="button"
-              data-testid="gizmo-scale"
-              aria-pressed={editor.mode === 'scale'}
-              onClick={() => editor.setMode('scale')}
-            >
-              Scale
-            </button>
+            {MODES.map(([mode, label]) => (
+              <button
+                key={mode}
+                type="button"
+                data-testid={`gizmo-${mode}`}
+                aria-pressed={editor.mode === mode}
+                onClick={() => editor.setMode(mode)}
+              >
+                {label}
+              </button>
+            ))}
           </div>
           <ul className="volume-list" data-testid="volume-list">
             {editor.volumes.map((v, i) => (

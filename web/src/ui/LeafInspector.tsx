@@ -7,12 +7,13 @@
  * resulting `<svg>` element is adopted into the page (no innerHTML; the SVG has no scripts or
  * style attributes, so the CSP holds).
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
 import { groupParams, normalizeValue } from '../core/params';
 import type { LeafInspection, ParamSpec, Params, Preset, SylvaError } from '../core/types';
 import { createModuleWorker } from '../createWorker';
+import { downloadBlob } from '../export/download';
 import { LeafClient } from '../leaf/leafClient';
-import { ParamControl } from './ParamControl';
+import { ParamGroups, PresetOptions } from './ParamGroups';
 
 /** Registry groups the inspector edits. */
 export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
@@ -35,27 +36,32 @@ function leafParams(registry: readonly ParamSpec[], params: Params): Params {
   return out;
 }
 
-/** Starts a download of `text` as `name` (Blob + object URL). */
-function download(text: string, name: string): void {
-  const url = URL.createObjectURL(new Blob([text], { type: 'image/svg+xml' }));
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
+/** Saves the SVG `text` as `name`. */
+function downloadSvg(text: string, name: string): void {
+  downloadBlob(new Blob([text], { type: 'image/svg+xml' }), name);
 }
 
-/** The inspector panel. */
-export function LeafInspector({ registry, params, onChange, onChangeMany }: Props) {
+/** What the inspector shows: the leaf drawing from its own worker, errors, the leaf presets. */
+interface LeafDrawing {
+  leaf: LeafInspection | null;
+  error: SylvaError | null;
+  presets: Preset[];
+  /** The element the SVG is adopted into. */
+  viewRef: RefObject<HTMLDivElement | null>;
+}
+
+/** Draws the leaf of `params` at growth `step` in the inspector's worker (latest request wins). */
+function useLeafDrawing(
+  registry: readonly ParamSpec[],
+  params: Params,
+  step: number,
+  triangulation: boolean,
+): LeafDrawing {
   const clientRef = useRef<LeafClient | null>(null);
   const viewRef = useRef<HTMLDivElement | null>(null);
   const [leaf, setLeaf] = useState<LeafInspection | null>(null);
   const [error, setError] = useState<SylvaError | null>(null);
   const [presets, setPresets] = useState<Preset[]>([]);
-  const [step, setStep] = useState(-1);
-  const [triangulation, setTriangulation] = useState(false);
   const [ready, setReady] = useState(false);
 
   useEffect(() => {
@@ -96,6 +102,14 @@ export function LeafInspector({ registry, params, onChange, onChangeMany }: Prop
     view.replaceChildren(document.importNode(svg, true));
   }, [leaf]);
 
+  return { leaf, error, presets, viewRef };
+}
+
+/** The inspector panel. */
+export function LeafInspector({ registry, params, onChange, onChangeMany }: Props) {
+  const [step, setStep] = useState(-1);
+  const [triangulation, setTriangulation] = useState(false);
+  const { leaf, error, presets, viewRef } = useLeafDrawing(registry, params, step, triangulation);
   const specs = registry.filter((s) => LEAF_GROUPS.includes(s.group));
   const groups = groupParams(specs);
   const venation = registry.find((s) => s.id === 'leaf_venation');
@@ -141,11 +155,7 @@ export function LeafInspector({ registry, params, onChange, onChangeMany }: Prop
           <option value="" disabled>
             Choose…
           </option>
-          {presets.map((p) => (
-            <option key={p.name} value={p.name} title={p.description}>
-              {p.label}
-            </option>
-          ))}
+          <PresetOptions presets={presets} />
         </select>
       </label>
       <label className="row">
@@ -195,24 +205,17 @@ export function LeafInspector({ registry, params, onChange, onChangeMany }: Prop
           type="button"
           data-testid="leaf-export"
           disabled={!leaf}
-          onClick={() => leaf && download(leaf.svg, `sylva-leaf-${leaf.hash}.svg`)}
+          onClick={() => leaf && downloadSvg(leaf.svg, `sylva-leaf-${leaf.hash}.svg`)}
         >
           Export SVG
         </button>
       </div>
-      {groups.map(([group, list]) => (
-        <details key={group} className="group" open={group === 'Leaf'} data-group={group}>
-          <summary>{group}</summary>
-          {list.map((spec) => (
-            <ParamControl
-              key={spec.id}
-              spec={spec}
-              value={params[spec.id] ?? spec.default}
-              onChange={onChange}
-            />
-          ))}
-        </details>
-      ))}
+      <ParamGroups
+        groups={groups}
+        params={params}
+        onChange={onChange}
+        open={(group) => group === 'Leaf'}
+      />
     </aside>
   );
 }

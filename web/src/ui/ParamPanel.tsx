@@ -3,7 +3,7 @@ import { groupParams } from '../core/params';
 import type { ReactNode } from 'react';
 import type { ParamSpec, Params, Preset } from '../core/types';
 import { NumberField } from './NumberField';
-import { ParamControl } from './ParamControl';
+import { ParamGroups, PresetOptions } from './ParamGroups';
 
 interface Props {
   registry: readonly ParamSpec[];
@@ -22,6 +22,22 @@ interface Props {
   /** Extra controls shown at the top of a group's section (e.g. the growth editor's tools). */
   extras?: Partial<Record<string, ReactNode>>;
 }
+
+/** The Undo and Redo buttons. */
+const HISTORY_BUTTONS = [
+  {
+    id: 'undo',
+    label: 'Undo',
+    title: 'Undo the last parameter change (Ctrl+Z)',
+    keys: 'Control+Z Meta+Z',
+  },
+  {
+    id: 'redo',
+    label: 'Redo',
+    title: 'Redo (Ctrl+Shift+Z or Ctrl+Y)',
+    keys: 'Control+Shift+Z Control+Y Meta+Shift+Z',
+  },
+] as const;
 
 /** The parameter editor; seed gets its own field with a Randomize button. */
 export function ParamPanel(props: Props) {
@@ -54,11 +70,7 @@ export function ParamPanel(props: Props) {
               Custom
             </option>
           ) : null}
-          {presets.map((p) => (
-            <option key={p.name} value={p.name} title={p.description}>
-              {p.label}
-            </option>
-          ))}
+          <PresetOptions presets={presets} />
         </select>
       </div>
 
@@ -83,45 +95,31 @@ export function ParamPanel(props: Props) {
       ) : null}
 
       <div className="panel-block panel-actions">
-        <button
-          type="button"
-          data-testid="undo"
-          title="Undo the last parameter change (Ctrl+Z)"
-          aria-keyshortcuts="Control+Z Meta+Z"
-          disabled={!props.canUndo}
-          onClick={props.onUndo}
-        >
-          Undo
-        </button>
-        <button
-          type="button"
-          data-testid="redo"
-          title="Redo (Ctrl+Shift+Z or Ctrl+Y)"
-          aria-keyshortcuts="Control+Shift+Z Control+Y Meta+Shift+Z"
-          disabled={!props.canRedo}
-          onClick={props.onRedo}
-        >
-          Redo
-        </button>
+        {HISTORY_BUTTONS.map(({ id, label, title, keys }) => (
+          <button
+            key={id}
+            type="button"
+            data-testid={id}
+            title={title}
+            aria-keyshortcuts={keys}
+            disabled={id === 'undo' ? !props.canUndo : !props.canRedo}
+            onClick={id === 'undo' ? props.onUndo : props.onRedo}
+          >
+            {label}
+          </button>
+        ))}
         <button type="button" data-testid="reset" onClick={props.onReset}>
           Reset to defaults
         </button>
       </div>
 
-      {groups.map(([group, specs], index) => (
-        <details key={group} className="group" open={index < 3} data-group={group}>
-          <summary>{group}</summary>
-          {props.extras?.[group] ?? null}
-          {specs.map((spec) => (
-            <ParamControl
-              key={spec.id}
-              spec={spec}
-              value={params[spec.id] ?? spec.default}
-              onChange={onChange}
-            />
-          ))}
-        </details>
-      ))}
+      <ParamGroups
+        groups={groups}
+        params={params}
+        onChange={onChange}
+        open={(_, index) => index < 3}
+        extras={props.extras}
+      />
     </aside>
   );
 }

@@ -1,4 +1,5 @@
 /** The three.js scene: renderer, orbit camera, lights, ground and the tree mesh (render on demand). */
+import { fitToContainer } from './cameraView';
 import {
   Color,
   DoubleSide,
@@ -312,11 +313,7 @@ export class TreeViewer {
   }
 
   private resize(): void {
-    const width = Math.max(this.container.clientWidth, 1);
-    const height = Math.max(this.container.clientHeight, 1);
-    this.renderer.setSize(width, height, true);
-    this.camera.aspect = width / height;
-    this.camera.updateProjectionMatrix();
+    fitToContainer(this.renderer, this.camera, this.container);
     this.requestRender();
   }
 

@@ -1,4 +1,8 @@
-/** Puts a viewer's camera at a point looking at another (the debug hooks' `view`, close-ups). */
+/**
+ * Camera helpers: a viewer's camera put at a point looking at another (the debug hooks' `view`,
+ * close-ups), and a canvas and camera fitted to their container.
+ */
+import type { PerspectiveCamera, WebGLRenderer } from 'three';
 import type { OverlayHost } from './TreeViewer';
 
 /** Camera at `from`, orbiting `to` (metres, Y up); lets the orbit come as close as 5 cm. */
@@ -17,4 +21,17 @@ export function lookFrom(
 /** The camera's position and orbit target (metres). */
 export function cameraOf(host: OverlayHost): { position: number[]; target: number[] } {
   return { position: host.camera.position.toArray(), target: host.orbit.target.toArray() };
+}
+
+/** Sizes the canvas to `container` (at least 1 px) and the camera's aspect to match. */
+export function fitToContainer(
+  renderer: WebGLRenderer,
+  camera: PerspectiveCamera,
+  container: HTMLElement,
+): void {
+  const width = Math.max(container.clientWidth, 1);
+  const height = Math.max(container.clientHeight, 1);
+  renderer.setSize(width, height, true);
+  camera.aspect = width / height;
+  camera.updateProjectionMatrix();
 }

@@ -26,6 +26,11 @@ import {
 } from 'three';
 import type { Bounds } from '../core/types';
 import { BRANCH_SWAY, LEAF_FLUTTER, MAIN_BEND, TWIG_ANGLE, type WindFrame } from './wind.math';
+import commonSrc from './shaders/windCommon.vert.glsl?raw';
+import barkParsSrc from './shaders/windBarkPars.vert.glsl?raw';
+import leafParsSrc from './shaders/windLeafPars.vert.glsl?raw';
+import barkVertexSrc from './shaders/windBark.vert.glsl?raw';
+import leafVertexSrc from './shaders/windLeaf.vert.glsl?raw';
 import {
   DEFAULT_WIND,
   GUST_FREQUENCY,
@@ -71,130 +76,31 @@ export function createWindUniforms(): WindUniforms {
 
 const f = (x: number): string => x.toFixed(6);
 
+/** The shaders' constants, from the TS mirror (`wind.math.ts`); GLSL in `shaders/wind*.glsl`. */
+const WIND_DEFINES = [
+  `#define WIND_MAIN_BEND ${f(MAIN_BEND)}`,
+  `#define WIND_BRANCH_SWAY ${f(BRANCH_SWAY)}`,
+  `#define WIND_TWIG_ANGLE ${f(TWIG_ANGLE)}`,
+  `#define WIND_LEAF_FLUTTER ${f(LEAF_FLUTTER)}`,
+].join('\n');
+
 /** Uniforms and functions shared by every wind shader (mirrors `wind.math.ts`). */
-export const WIND_COMMON_GLSL = /* glsl */ `
-uniform float uWindTime;
-uniform vec2 uWindDirection;
-uniform float uWindStrength;
-uniform vec2 uWindGust;
-uniform float uWindEnabled;
-uniform vec4 uWindTree;
-float windSmoothCurve(float x) { return x * x * (3.0 - 2.0 * x); }
-float windTriangleWave(float x) { return abs(fract(x + 0.5) * 2.0 - 1.0); }
-float windSmoothTriangleWave(float x) { return windSmoothCurve(windTriangleWave(x)); }
-float windWave2(float a, float b) { return windSmoothTriangleWave(a) + windSmoothTriangleWave(b) - 1.0; }
-float windHash(vec3 p3) {
-  p3 = fract(p3 * 0.1031);
-  p3 += dot(p3, p3.zyx + 31.32);
-  return fract((p3.x + p3.y) * p3.z);
-}
-float windGustEnvelope(float t, float freq) {
-  float s = 0.5 + 0.5 * (0.6 * sin(6.2831853 * freq * t) + 0.4 * sin(6.2831853 * freq * 2.31 * t + 1.3));
-  return s * s;
-}
-float windEffectiveStrength() {
-  if (uWindEnabled < 0.5) return 0.0;
-  return uWindStrength * (1.0 + uWindGust.x * windGustEnvelope(uWindTime, uWindGust.y));
-}
-vec3 windMainBend(vec3 p, float s) {
-  float h = max(uWindTree.x, 0.1);
-  float t = uWindTime;
-  float sway = 1.0 + 0.4 * windWave2(t * 0.23, t * 0.137 + 0.3);
-  float amount = s * sway * ${f(MAIN_BEND)} * h;
-  float y = max(p.y, 0.0);
-  float bf = y / h + 1.0;
-  bf = bf * bf - bf;
-  vec3 q = p;
-  q.xz += uWindDirection * amount * bf;
-  float len = length(p);
-  float qLen = length(q);
-  if (len < 1e-6 || qLen < 1e-6) return p;
-  return q * (len / qLen);
-}
-vec3 windBranchSway(vec3 p, float s) {
-  float h = max(uWindTree.x, 0.1);
-  float r = max(uWindTree.y, 0.1);
-  float t = uWindTime;
-  float flex = clamp(length(p.xz) / r, 0.0, 1.0);
-  flex *= flex * clamp(p.y / (0.25 * h), 0.0, 1.0);
-  float phase = -dot(p.xz, uWindDirection) * 0.12 + dot(p, vec3(0.19, 0.07, 0.23));
-  float sway = windWave2(t * 0.375 + phase, t * 0.193 + phase * 1.37);
-  float bob = windWave2(t * 0.61 + phase * 1.7 + 0.25, t * 0.29 + phase * 0.83 + 0.5);
-  float amp = s * flex * ${f(BRANCH_SWAY)} * h;
-  return vec3(uWindDirection.x * sway, 0.5 * bob, uWindDirection.y * sway) * amp;
-}
-`;
+export const WIND_COMMON_GLSL = `${WIND_DEFINES}\n${commonSrc}`;
 
 /** Per-vertex attributes and twig bending of the bark. */
-export const WIND_BARK_PARS_GLSL = /* glsl */ `
-attribute vec4 windPivot;
-attribute vec4 windParams;
-vec3 windTwigBend(vec3 p, vec4 pivot, vec4 params, float s) {
-  float t = uWindTime;
-  vec3 r = p - pivot.xyz;
-  float along = length(r);
-  if (along < 1e-6) return vec3(0.0);
-  float level = clamp(pivot.w / 3.0, 0.0, 1.0);
-  float bend = 1.0 - clamp(params.y, 0.0, 1.0);
-  float gain = bend * bend * bend * bend * level * level;
-  float phase = params.x + windHash(pivot.xyz);
-  float w = windWave2(t * 0.793 + phase, t * 0.375 + phase * 1.3);
-  float angle = s * ${f(TWIG_ANGLE)} * gain * w;
-  vec3 wv = normalize(vec3(uWindDirection.x, 0.35, uWindDirection.y));
-  vec3 rn = r / along;
-  return (wv - rn * dot(rn, wv)) * (angle * along);
-}
-`;
+export const WIND_BARK_PARS_GLSL = barkParsSrc;
 
 /** Leaf flutter (leaf units, along the blade's normal). */
-export const WIND_LEAF_PARS_GLSL = /* glsl */ `
-vec3 windLeafFlutter(vec3 local, vec3 nrm, vec3 anchor, float s) {
-  float t = uWindTime;
-  float ph = windHash(anchor * 7.31);
-  float vtx = local.x * 0.37 + local.y * 0.71;
-  float w = windWave2(t * 1.975 + ph + vtx, t * 0.793 + ph * 1.7 + vtx);
-  float edge = max(local.y, 0.0) + abs(local.x);
-  return nrm * (w * edge * ${f(LEAF_FLUTTER)} * min(s, 1.5));
-}
-`;
+export const WIND_LEAF_PARS_GLSL = leafParsSrc;
 
 /** Bark displacement, after `#include <begin_vertex>` (object space = tree space). */
-export const WIND_BARK_VERTEX_GLSL = /* glsl */ `
-{
-  float windS = windEffectiveStrength();
-  if (windS > 0.0) {
-    vec3 windP = transformed;
-    vec3 windQ = windP + windBranchSway(windP, windS);
-    // Only with the core's data: a mesh drawn with this material but without the attributes
-    // (LOD levels) reads constant defaults, whose distance from the root is 0.
-    if (uWindTree.z > 0.5 && windParams.z > 0.0) {
-      windQ += windTwigBend(windP, windPivot, windParams, windS);
-    }
-    transformed = windMainBend(windQ, windS);
-  }
-}
-`;
+export const WIND_BARK_VERTEX_GLSL = barkVertexSrc;
 
 /**
  * Leaf displacement, after `#include <begin_vertex>`: flutter in leaf space, then the attachment
  * point's branch sway and the main bending in tree space, mapped back to leaf space.
  */
-export const WIND_LEAF_VERTEX_GLSL = /* glsl */ `
-{
-  float windS = windEffectiveStrength();
-  if (windS > 0.0) {
-#ifdef USE_INSTANCING
-    vec3 windAnchor = instanceMatrix[3].xyz;
-    vec3 windLocal = transformed + windLeafFlutter(transformed, normal, windAnchor, windS);
-    vec3 windTree = (instanceMatrix * vec4(windLocal, 1.0)).xyz;
-    vec3 windMoved = windMainBend(windTree + windBranchSway(windAnchor, windS), windS);
-    transformed = windLocal + inverse(mat3(instanceMatrix)) * (windMoved - windTree);
-#else
-    transformed = windMainBend(transformed + windBranchSway(transformed, windS), windS);
-#endif
-  }
-}
-`;
+export const WIND_LEAF_VERTEX_GLSL = leafVertexSrc;
 
 /** Marker of a patched shader (tests and double-patch guard). */
 export const WIND_MARKER = '// sylva-wind';

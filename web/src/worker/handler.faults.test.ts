@@ -2,6 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import type { WasmApi, WasmSession } from '../core/types';
 import { createHandler, isTrap } from './handler';
+import type { DebugRequest, DebugResponse } from './debug';
 import type { WorkerResponse } from './protocol';
 
 const META = JSON.stringify({
@@ -185,10 +186,11 @@ describe('worker handler fault handling', () => {
 
   it('debug-hang busy-waits for the given time on the injected clock, then answers idle', () => {
     const { wasm } = fakeWasm({});
-    const sent: WorkerResponse[] = [];
+    const sent: (WorkerResponse | DebugResponse)[] = [];
     let clock = 0;
     let reads = 0;
     const handle = createHandler(wasm, (message) => sent.push(message), {
+      debug: true,
       now: () => {
         reads++;
         clock += 10;
@@ -201,5 +203,20 @@ describe('worker handler fault handling', () => {
     expect(reads).toBeGreaterThan(90);
     handle({ type: 'generate', id: 1, params: {} });
     expect(sent[1]?.type).toBe('result');
+  });
+
+  it('refuses the debug messages unless the worker was started with the debug flag', () => {
+    const { wasm } = fakeWasm({});
+    let panics = 0;
+    wasm.debug_panic = () => void panics++;
+    const sent: WorkerResponse[] = [];
+    const handle = createHandler(wasm, (message) => sent.push(message));
+    const debugHandle = handle as unknown as (request: DebugRequest) => void;
+    expect(() => debugHandle({ type: 'debug-panic' })).toThrow(/debug flag/);
+    expect(() => debugHandle({ type: 'debug-hang', ms: 5 })).toThrow(/debug flag/);
+    expect(panics).toBe(0);
+    expect(sent).toEqual([]);
+    handle({ type: 'generate', id: 1, params: {} });
+    expect(sent[0]?.type).toBe('result');
   });
 });

@@ -2,9 +2,9 @@
 import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
 import { createHandler } from './handler';
-import type { WorkerResponse } from './protocol';
+import type { WorkerRequest, WorkerResponse } from './protocol';
 
-function run(request: Parameters<ReturnType<typeof createHandler>>[0]) {
+function run(request: WorkerRequest) {
   const sent: WorkerResponse[] = [];
   const now = (task: () => void) => {
     task();

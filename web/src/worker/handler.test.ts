@@ -4,7 +4,9 @@ import { defaultParams } from '../core/params';
 import { buildTreeGeometry } from '../viewer/geometry';
 import { loadWasm, realRegistry } from '../testing/realWasm';
 import { harness } from '../testing/workerHarness';
-import { readyMessage } from './handler';
+import type { DebugResponse } from './debug';
+import { createHandler, readyMessage } from './handler';
+import type { WorkerResponse } from './protocol';
 
 /** One request answered with a result and then its hash; the merged tree. */
 function onlyTree(h: ReturnType<typeof harness>) {
@@ -116,7 +118,8 @@ describe('real wasm through the worker handler', () => {
 
   // Runs last in this file: the wasm instance is unusable after a panic.
   it('debug-panic reports the panic message as fatal, then refuses further work', () => {
-    const { sent, handle } = harness();
+    const sent: { message: WorkerResponse | DebugResponse }[] = [];
+    const handle = createHandler(loadWasm(), (message) => sent.push({ message }), { debug: true });
     handle({ type: 'debug-panic' });
     const fatal = sent[0]?.message;
     expect(fatal?.type).toBe('fatal');

@@ -10,9 +10,16 @@ import {
   type Defer,
   type Post,
 } from './generate';
-import type { LeafRequest, ReadyResponse, WorkerRequest } from './protocol';
+import { busyWait, panicOnPurpose, type DebugRequest, type DebugResponse } from './debug';
+import type { LeafRequest, ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
 
 export type { Post } from './generate';
+
+/** What the handler posts: the production responses, and a debug worker's `idle`. */
+export type HandlerPost = (
+  message: WorkerResponse | DebugResponse,
+  transfer: Transferable[],
+) => void;
 
 /** Builds the `ready` message from the wasm registry, presets and version. */
 export function readyMessage(wasm: WasmApi): ReadyResponse {
@@ -53,14 +60,6 @@ export function isTrap(thrown: unknown): boolean {
   return thrown instanceof RangeError && /call stack/i.test(thrown.message);
 }
 
-/** Blocks the worker thread for `ms` (debug hook: lets tests hit the scheduler's time limit). */
-function busyWait(ms: number, now: () => number): void {
-  const end = now() + ms;
-  while (now() < end) {
-    // spin
-  }
-}
-
 /** Answers a leaf inspector request (throws what the core throws). */
 function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
   if (!wasm.leaf_inspect) throw new Error('this generator has no leaf inspector');
@@ -76,6 +75,8 @@ function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
 export interface HandlerOptions {
   /** Clock of the debug hang (default `performance.now`). */
   now?: () => number;
+  /** Accept the debug messages (a worker started with the debug flag; tests). */
+  debug?: boolean;
   /** How a result's hash is scheduled after it (default: a zero-delay timer). */
   defer?: Defer;
   /** Bark time above which a drag gets a preview (ms; default [`PREVIEW_BUDGET_MS`]). */
@@ -90,14 +91,26 @@ export interface HandlerOptions {
 
 /**
  * Creates the request handler: a typed error answers the request and the worker stays usable;
- * a trap is fatal, and after it every request is answered with `fatal`.
+ * a trap is fatal, and after it every request is answered with `fatal`. The debug messages are
+ * refused (as fatal) unless `options.debug` is set.
  */
 export function createHandler(
   wasm: WasmApi,
   post: Post,
+  options?: HandlerOptions & { debug?: false },
+): (request: WorkerRequest) => void;
+export function createHandler(
+  wasm: WasmApi,
+  post: HandlerPost,
+  options: HandlerOptions,
+): (request: WorkerRequest | DebugRequest) => void;
+export function createHandler(
+  wasm: WasmApi,
+  post: Post | HandlerPost,
   options: HandlerOptions = {},
-): (request: WorkerRequest) => void {
+): (request: WorkerRequest | DebugRequest) => void {
   const now = options.now ?? (() => performance.now());
+  const debug = options.debug === true;
   let deadMessage: string | null = null;
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
@@ -148,19 +161,20 @@ export function createHandler(
         run(request.id, () => post(...lodsResponse(wasm, request)));
         return;
       case 'debug-hang':
+        if (!debug) break;
         busyWait(request.ms, now);
-        post({ type: 'idle' }, []);
+        // A debug handler's `post` takes the debug responses (see the overloads).
+        (post as HandlerPost)({ type: 'idle' }, []);
         return;
       case 'debug-panic':
-        run(null, () => {
-          wasm.debug_panic();
-          throw new Error('debug_panic() returned without panicking');
-        });
+        if (!debug) break;
+        run(null, () => panicOnPurpose(wasm));
         return;
       default: {
         const unknown: never = request;
         throw new Error(`unknown request ${JSON.stringify(unknown)}`);
       }
     }
+    throw new Error(`${request.type} needs a worker started with the debug flag`);
   };
 }

@@ -1,4 +1,7 @@
-/** Typed message protocol between the main thread and the generator worker. */
+/**
+ * Typed message protocol between the main thread and the generator worker (the production
+ * messages; the test hooks' messages are in `debug.ts`, accepted by a debug worker only).
+ */
 import type {
   LeafInspection,
   ParamSpec,
@@ -8,6 +11,7 @@ import type {
   TreeUpdate,
   VolumePrimitive,
 } from '../core/types';
+import type { WorkerFactory } from './client';
 import type { LodsRequest, LodsResponse } from '../lod/types';
 import type { ExportFormat, ExportRequest, ExportResponse } from '../export/exportProtocol';
 
@@ -25,17 +29,6 @@ export interface GenerateRequest {
   preview?: boolean;
 }
 
-/** Ask the worker to panic on purpose (tests of the recovery path). */
-export interface DebugPanicRequest {
-  type: 'debug-panic';
-}
-
-/** Ask the worker to busy-loop for `ms` (tests of the time limit; debug hook only). */
-export interface DebugHangRequest {
-  type: 'debug-hang';
-  ms: number;
-}
-
 /** Ask the worker for the leaf inspector's drawing of the `leaf_*` params after growth `step` (-1: finished). */
 export interface LeafRequest {
   type: 'leaf';
@@ -47,13 +40,7 @@ export interface LeafRequest {
 }
 
 /** Main thread → worker. */
-export type WorkerRequest =
-  | GenerateRequest
-  | DebugPanicRequest
-  | DebugHangRequest
-  | LeafRequest
-  | LodsRequest
-  | ExportRequest;
+export type WorkerRequest = GenerateRequest | LeafRequest | LodsRequest | ExportRequest;
 
 /** Sent once after the wasm is initialised. */
 export interface ReadyResponse {
@@ -106,11 +93,6 @@ export interface FatalResponse {
   message: string;
 }
 
-/** A `debug-hang` request ended (it ran shorter than the time limit). */
-export interface IdleResponse {
-  type: 'idle';
-}
-
 /** Worker → main thread. */
 export type WorkerResponse =
   | ReadyResponse
@@ -118,7 +100,6 @@ export type WorkerResponse =
   | HashResponse
   | ErrorResponse
   | FatalResponse
-  | IdleResponse
   | ProgressResponse
   | LeafResponse
   | LodsResponse
@@ -132,3 +113,6 @@ export interface LeafResponse extends LeafInspection {
 
 /** What `ready` carries, as seen by the app. */
 export type ReadyInfo = Omit<ReadyResponse, 'type'>;
+
+/** Starts a generator worker for a client of the production requests. */
+export type GeneratorWorkerFactory = WorkerFactory<WorkerRequest, WorkerResponse>;

@@ -1,14 +1,16 @@
 /** Test fixtures for the scheduler: a fake worker factory and empty results (no real Worker). */
 import type { TreeMeta } from '../core/types';
-import type { ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
-import type { WorkerFactory } from './scheduler';
+import type { ResultResponse } from './protocol';
+import type { GeneratorFactory, SchedulerRequest, SchedulerResponse } from './scheduler';
 
 /** A fake worker: records posts, lets the test push responses and error events. */
 export class FakeWorker {
-  posted: WorkerRequest[] = [];
+  posted: SchedulerRequest[] = [];
   terminated = false;
+  /** Started with the debug flag. */
+  debug = false;
   constructor(
-    readonly emit: (response: WorkerResponse) => void,
+    readonly emit: (response: SchedulerResponse) => void,
     readonly fail: (message: string) => void,
   ) {}
   ready(): void {
@@ -23,13 +25,14 @@ export class FakeWorker {
 
 /** A factory that makes [`FakeWorker`]s, and the list of those made so far (oldest first). */
 export function fakeWorkers(): {
-  factory: WorkerFactory;
+  factory: GeneratorFactory;
   workers: FakeWorker[];
   current: () => FakeWorker;
 } {
   const workers: FakeWorker[] = [];
-  const factory: WorkerFactory = (onMessage, onError) => {
+  const factory: GeneratorFactory = (onMessage, onError, options) => {
     const w = new FakeWorker(onMessage, onError);
+    w.debug = options?.debug === true;
     workers.push(w);
     return {
       post: (r) => w.posted.push(r),

@@ -1,8 +1,7 @@
 /** The scheduler's drag handling: interactive requests allow a preview, the full tree follows. */
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
 import { fakeWorkers, result } from './scheduler.fixtures';
-import type { WorkerRequest } from './protocol';
-import { GenerationScheduler, SETTLE_MS } from './scheduler';
+import { GenerationScheduler, SETTLE_MS, type SchedulerRequest } from './scheduler';
 
 beforeEach(() => {
   vi.useFakeTimers();
@@ -26,7 +25,7 @@ function setup() {
   return { scheduler, current, log };
 }
 
-const generates = (posted: WorkerRequest[]) =>
+const generates = (posted: SchedulerRequest[]) =>
   posted.flatMap((p) => (p.type === 'generate' ? [p] : []));
 
 describe('GenerationScheduler drags', () => {

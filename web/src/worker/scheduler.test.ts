@@ -145,8 +145,22 @@ describe('GenerationScheduler', () => {
     expect(log.busy[log.busy.length - 1]).toBe(false);
   });
 
+  it('debug hooks need a debug scheduler, whose workers start with the debug flag', () => {
+    const plain = setup();
+    expect(plain.current().debug).toBe(false);
+    expect(() => plain.scheduler.debugPanic()).toThrow(/debug: true/);
+    expect(() => plain.scheduler.debugHang(5)).toThrow(/debug: true/);
+    plain.current().ready();
+    expect(plain.current().posted).toEqual([]);
+    const debug = setup({ debug: true });
+    expect(debug.current().debug).toBe(true);
+    debug.current().emit({ type: 'fatal', message: 'boom' });
+    debug.scheduler.request({ seed: 1 });
+    expect(debug.current().debug).toBe(true);
+  });
+
   it('debugPanic waits for the in-flight request, then the pending one survives the crash', () => {
-    const { scheduler, current, log } = setup();
+    const { scheduler, current, log } = setup({ debug: true });
     current().ready();
     const a = scheduler.request({ seed: 1 });
     scheduler.debugPanic();
@@ -324,7 +338,7 @@ describe('GenerationScheduler time limit', () => {
   });
 
   it('debugHang: a short hang ends with idle, a long one is stopped by the limit', () => {
-    const { scheduler, workers, current, log } = setup();
+    const { scheduler, workers, current, log } = setup({ debug: true });
     current().ready();
     scheduler.debugHang(100);
     expect(current().posted).toEqual([{ type: 'debug-hang', ms: 100 }]);

@@ -8,19 +8,24 @@
  * the same parameters are requested at full quality, so a preview never stays on screen.
  */
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
-import type { ReadyInfo, ResultResponse, WorkerRequest, WorkerResponse } from './protocol';
+import { WorkerClient, type WorkerFactory } from './client';
+import type { DebugRequest, DebugResponse } from './debug';
+import type {
+  GenerateRequest,
+  ReadyInfo,
+  ReadyResponse,
+  ResultResponse,
+  WorkerRequest,
+  WorkerResponse,
+} from './protocol';
 
-/** A started worker as the scheduler sees it. */
-export interface WorkerHandle {
-  post(request: WorkerRequest): void;
-  terminate(): void;
-}
+/** What the scheduler sends: the production requests, and the debug ones of a debug worker. */
+export type SchedulerRequest = WorkerRequest | DebugRequest;
+/** What the scheduler's worker answers. */
+export type SchedulerResponse = WorkerResponse | DebugResponse;
 
-/** Starts a worker wired to the given callbacks (`onError` = the worker's `error` event). */
-export type WorkerFactory = (
-  onMessage: (response: WorkerResponse) => void,
-  onError: (message: string) => void,
-) => WorkerHandle;
+/** Starts a generator worker for the scheduler. */
+export type GeneratorFactory = WorkerFactory<SchedulerRequest, SchedulerResponse>;
 
 /** Notifications from the scheduler to the app. */
 export interface SchedulerCallbacks {
@@ -38,10 +43,8 @@ export interface SchedulerCallbacks {
   onProgress?(fraction: number | null, id: number | null): void;
 }
 
-type Slot =
-  | { type: 'generate'; id: number; params: Params; volumes?: VolumePrimitive[]; preview?: boolean }
-  | { type: 'debug-panic' }
-  | { type: 'debug-hang'; ms: number };
+/** A request of the scheduler: a tree, or a debug hook's message. */
+type Slot = GenerateRequest | DebugRequest;
 
 /** A drag has settled after this long without an interactive request (ms). */
 export const SETTLE_MS = 150;
@@ -59,6 +62,8 @@ export const DEFAULT_TIME_LIMIT_MS = 10_000;
 export interface SchedulerOptions {
   /** Longest a request may run in the worker before it is stopped (ms); default 10 s. */
   timeLimitMs?: number;
+  /** Start a debug worker: [`debugPanic`] and [`debugHang`] work (tests, `?debug=1`). */
+  debug?: boolean;
 }
 
 /**
@@ -82,21 +87,14 @@ function checkLimit(ms: number): number {
   return ms;
 }
 
-/** Owns the worker: one request in flight, one pending slot that newer requests overwrite. */
+/**
+ * Owns the worker (through [`WorkerClient`]): one request in flight, one pending slot that newer
+ * requests overwrite, a debug request sent before it.
+ */
 export class GenerationScheduler {
-  private worker: WorkerHandle | null = null;
-  private ready = false;
-  private inFlight: Slot | null = null;
-  private pending: Slot | null = null;
-  private debugQueued: Slot | null = null;
-  private deadline: ReturnType<typeof setTimeout> | null = null;
-  /** The limit the in-flight request was sent with (the setting may change meanwhile). */
-  private inFlightLimitMs = 0;
-  private limitMs: number;
+  private readonly client: WorkerClient<Slot, SchedulerRequest, SchedulerResponse>;
+  private readonly debug: boolean;
   private nextId = 1;
-  private restarts = 0;
-  private busy = false;
-  private disposed = false;
   /** The last interactive request's input, until the full tree for it is requested. */
   private unsettled: { params: Params; volumes?: VolumePrimitive[] } | null = null;
   private settleTimer: ReturnType<typeof setTimeout> | null = null;
@@ -109,21 +107,53 @@ export class GenerationScheduler {
   private lastResultId = 0;
 
   constructor(
-    private readonly factory: WorkerFactory,
+    factory: GeneratorFactory,
     private readonly callbacks: SchedulerCallbacks,
     options: SchedulerOptions = {},
   ) {
-    this.limitMs = checkLimit(options.timeLimitMs ?? DEFAULT_TIME_LIMIT_MS);
-    this.start();
+    this.debug = options.debug === true;
+    const limit = checkLimit(options.timeLimitMs ?? DEFAULT_TIME_LIMIT_MS);
+    this.client = new WorkerClient<Slot, SchedulerRequest, SchedulerResponse>(
+      factory,
+      {
+        message: (slot) => slot,
+        ends: (response, slot) => endsSlot(response, slot),
+        receive: (response, answered) => this.receive(response, answered),
+        ready: (response, restarts) => {
+          const { registry, presets, version } = response as ReadyResponse;
+          this.callbacks.onReady({ registry, presets, version }, restarts);
+        },
+        crashed: (message, _lost, starting) =>
+          this.callbacks.onError(
+            starting
+              ? { kind: 'internal', message: `The generator could not start: ${message}` }
+              : { kind: 'panic', message },
+            null,
+          ),
+        timedOut: (slot, limitMs) =>
+          this.callbacks.onError(
+            {
+              kind: 'timeout',
+              message: timeoutMessage(limitMs, slot.type === 'generate' ? slot.params : undefined),
+            },
+            slot.type === 'generate' ? slot.id : null,
+          ),
+        finished: (slot) => {
+          if (slot.type === 'generate') this.callbacks.onProgress?.(null, null);
+        },
+        busy: (busy) => this.callbacks.onBusyChange(busy),
+      },
+      { timeLimitMs: limit, ...(this.debug ? { start: { debug: true } } : {}) },
+    );
   }
 
   /** The time limit of one request (ms); a new value applies to the next request sent. */
   get timeLimitMs(): number {
-    return this.limitMs;
+    return this.client.timeLimitMs ?? DEFAULT_TIME_LIMIT_MS;
   }
 
   set timeLimitMs(ms: number) {
-    this.limitMs = checkLimit(ms);
+    this.client.timeLimitMs = checkLimit(ms);
   }
 
   /**
@@ -140,14 +170,13 @@ export class GenerationScheduler {
     } else {
       this.unsettled = null;
     }
-    this.pending = {
+    this.client.submit({
       type: 'generate',
       id,
       params,
       ...(volumes?.length ? { volumes } : {}),
       ...(interactive ? { preview: true } : {}),
-    };
-    this.pump();
+    });
     return id;
   }
 
@@ -158,7 +187,7 @@ export class GenerationScheduler {
   settle(): number | null {
     this.clearSettleTimer();
     const last = this.unsettled;
-    if (last === null || this.disposed) return null;
+    if (last === null || this.client.disposed) return null;
     return this.request(last.params, last.volumes);
   }
 
@@ -173,193 +202,77 @@ export class GenerationScheduler {
    * the last tree stays. Returns whether there was anything to cancel.
    */
   cancel(): boolean {
-    if (this.disposed) return false;
-    const had = this.inFlight?.type === 'generate' || this.pending !== null;
-    if (!had) return false;
-    this.pending = null;
-    if (this.inFlight?.type === 'generate') {
-      this.stopWorker();
-      this.callbacks.onProgress?.(null, null);
-      this.start();
-    }
-    this.updateBusy();
+    if (this.client.disposed) return false;
+    const generating = this.client.inFlight?.type === 'generate';
+    const pending = this.client.hasWaiting;
+    if (!generating && !pending) return false;
+    this.client.dropWaiting('cancelled');
+    if (generating) this.client.stopInFlight();
     return true;
   }
 
-  /** Makes the worker panic on purpose once it is idle (debug hook). */
+  /** Makes the worker panic on purpose once it is idle (debug workers only). */
   debugPanic(): void {
-    this.debugQueued = { type: 'debug-panic' };
-    this.pump();
+    this.client.submitFirst(this.debugSlot({ type: 'debug-panic' }));
   }
 
-  /** Makes the worker busy-loop for `ms` once it is idle (debug hook for the time limit). */
+  /** Makes the worker busy-loop for `ms` once it is idle (debug workers: the time limit). */
   debugHang(ms: number): void {
-    this.debugQueued = { type: 'debug-hang', ms };
-    this.pump();
+    this.client.submitFirst(this.debugSlot({ type: 'debug-hang', ms }));
+  }
+
+  private debugSlot(request: DebugRequest): DebugRequest {
+    if (!this.debug) throw new Error('debug requests need a scheduler made with debug: true');
+    return request;
   }
 
   /** Number of times the worker was recreated after a crash. */
   get restartCount(): number {
-    return this.restarts;
+    return this.client.restarts;
   }
 
   /** Terminates the worker; the scheduler is unusable afterwards. */
   dispose(): void {
-    this.disposed = true;
-    this.clearDeadline();
     this.clearSettleTimer();
     this.unsettled = null;
-    this.worker?.terminate();
-    this.worker = null;
-    this.inFlight = null;
-    this.pending = null;
-    this.debugQueued = null;
-    this.updateBusy();
+    this.client.dispose();
   }
 
-  private start(): void {
-    this.ready = false;
-    const handle: { current: WorkerHandle | null } = { current: null };
-    const isCurrent = (): boolean => handle.current !== null && handle.current === this.worker;
-    handle.current = this.factory(
-      (response) => {
-        if (isCurrent()) this.onMessage(response);
-      },
-      (message) => {
-        if (isCurrent()) this.crash(message || 'the generator worker failed');
-      },
-    );
-    this.worker = handle.current;
-  }
-
-  private onMessage(response: WorkerResponse): void {
+  private receive(response: SchedulerResponse, answered: Slot | null): void {
     switch (response.type) {
-      case 'ready': {
-        this.ready = true;
-        const { registry, presets, version } = response;
-        this.callbacks.onReady({ registry, presets, version }, this.restarts);
-        break;
-      }
       case 'result':
-        if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
-        this.finishInFlight();
+        if (answered === null) return;
         this.lastResultId = response.id;
         this.callbacks.onResult(response);
-        break;
+        return;
       case 'hash':
         if (response.id === this.lastResultId) this.callbacks.onHash?.(response.hash, response.id);
         return;
       case 'error':
-        if (this.inFlight?.type !== 'generate' || this.inFlight.id !== response.id) return;
-        this.finishInFlight();
-        this.callbacks.onError(response.error, response.id);
-        break;
-      case 'progress':
-        if (this.inFlight?.type === 'generate' && this.inFlight.id === response.id) {
+        if (answered !== null) this.callbacks.onError(response.error, response.id);
+        return;
+      case 'progress': {
+        const slot = this.client.inFlight;
+        if (slot?.type === 'generate' && slot.id === response.id) {
           this.callbacks.onProgress?.(response.fraction, response.id);
         }
         return;
-      case 'idle':
-        if (this.inFlight?.type !== 'debug-hang') return;
-        this.finishInFlight();
-        break;
-      case 'fatal':
-        this.crash(response.message);
+      }
+      default:
         return;
     }
-    this.pump();
   }
+}
 
-  private finishInFlight(): void {
-    this.clearDeadline();
-    if (this.inFlight?.type === 'generate') this.callbacks.onProgress?.(null, null);
-    this.inFlight = null;
-  }
-
-  private clearDeadline(): void {
-    if (this.deadline !== null) clearTimeout(this.deadline);
-    this.deadline = null;
-  }
-
-  /** Terminates the worker and drops its in-flight request (never re-sent: no resend loop). */
-  private stopWorker(): void {
-    this.clearDeadline();
-    this.worker?.terminate();
-    this.worker = null;
-    this.ready = false;
-    this.inFlight = null;
-  }
-
-  /** Drops the crashed worker and its in-flight request, reports, and starts a fresh worker. */
-  private crash(message: string): void {
-    const wasReady = this.ready;
-    this.stopWorker();
-    if (!wasReady) {
-      // Crashed while starting: restarting would loop, so stop here.
-      this.pending = null;
-      this.debugQueued = null;
-      this.callbacks.onError(
-        { kind: 'internal', message: `The generator could not start: ${message}` },
-        null,
-      );
-      this.updateBusy();
-      return;
-    }
-    this.callbacks.onError({ kind: 'panic', message }, null);
-    this.restart();
-  }
-
-  /** The in-flight request ran past the time limit: stop the worker, report, start a fresh one. */
-  private timedOut(): void {
-    this.deadline = null;
-    const slot = this.inFlight;
-    if (slot === null || this.disposed) return;
-    this.stopWorker();
-    this.callbacks.onError(
-      {
-        kind: 'timeout',
-        message: timeoutMessage(
-          this.inFlightLimitMs,
-          slot.type === 'generate' ? slot.params : undefined,
-        ),
-      },
-      slot.type === 'generate' ? slot.id : null,
-    );
-    this.restart();
-  }
-
-  private restart(): void {
-    this.restarts++;
-    if (!this.disposed) this.start();
-    this.updateBusy();
-  }
-
-  private pump(): void {
-    if (this.disposed) return;
-    if (this.worker && this.ready && this.inFlight === null) {
-      let next: Slot | null = null;
-      if (this.debugQueued) {
-        next = this.debugQueued;
-        this.debugQueued = null;
-      } else if (this.pending) {
-        next = this.pending;
-        this.pending = null;
-      }
-      if (next) {
-        this.inFlight = next;
-        this.inFlightLimitMs = this.limitMs;
-        this.deadline = setTimeout(() => this.timedOut(), this.limitMs);
-        this.worker.post(next);
-      }
-    }
-    this.updateBusy();
-  }
-
-  private updateBusy(): void {
-    const busy = this.inFlight !== null || this.pending !== null || this.debugQueued !== null;
-    if (busy !== this.busy) {
-      this.busy = busy;
-      this.callbacks.onBusyChange(busy);
-    }
+/** Whether `response` answers `slot`, the request in flight. */
+function endsSlot(response: SchedulerResponse, slot: Slot): boolean {
+  switch (response.type) {
+    case 'result':
+    case 'error':
+      return slot.type === 'generate' && slot.id === response.id;
+    case 'idle':
+      return slot.type === 'debug-hang';
+    default:
+      return false;
   }
 }

@@ -1,23 +1,27 @@
 /** Generator Web Worker: initialises the wasm once and answers requests with transferred buffers. */
 import init, * as wasm from '../wasm/sylva_wasm.js';
-import { createHandler, readyMessage, type Post } from './handler';
+import { DEBUG_WORKER_NAME, type DebugRequest, type DebugResponse } from './debug';
+import { createHandler, readyMessage, type HandlerPost } from './handler';
 import type { WorkerRequest, WorkerResponse } from './protocol';
 
 /** The parts of the dedicated-worker global scope this file uses. */
 interface WorkerScope {
-  postMessage(message: WorkerResponse, transfer: Transferable[]): void;
-  onmessage: ((event: MessageEvent<WorkerRequest>) => void) | null;
+  /** The name the worker was started with: [`DEBUG_WORKER_NAME`] accepts the debug messages. */
+  readonly name: string;
+  postMessage(message: WorkerResponse | DebugResponse, transfer: Transferable[]): void;
+  onmessage: ((event: MessageEvent<WorkerRequest | DebugRequest>) => void) | null;
 }
 
 const scope = self as unknown as WorkerScope;
-const post: Post = (message, transfer) => scope.postMessage(message, transfer);
+const post: HandlerPost = (message, transfer) => scope.postMessage(message, transfer);
+const debug = scope.name === DEBUG_WORKER_NAME;
 
 const handlerPromise = init()
   .then(() => {
     // The default tree is generated before anyone asks (while the page loads three.js and
     // React): the module's code is compiled and warm, and a first request for the default tree
     // (a new visitor's) only copies the arrays out.
-    const handle = createHandler(wasm, post, { prime: {} });
+    const handle = createHandler(wasm, post, { prime: {}, debug });
     post(readyMessage(wasm), []);
     return handle;
   })
