@@ -1,3 +1,5 @@
+//! # Leaf margin
+//!
 //! Stage 2, the margin (Leaf Generation guide §2; ANCHORS §5): teeth as a modulation of the
 //! outline by `1 + depth · A · wave(f)`, radial about the superformula centre or sideways from
 //! the midrib for the spline outline, so the edge stays a simple polygon for every depth. For the

@@ -1,3 +1,5 @@
+//! # Bezier twigs
+//!
 //! Bezier twigs, after the WebGL maple page (reference 003, following Bloomenthal's "Modeling
 //! the Mighty Maple"): the thinnest stems are meshed as Bezier cylinders, the tensor product of a
 //! circle and a quadratic Bezier spline. Three control circles sit on the control polygon: R0 at

@@ -1,14 +1,20 @@
-//! glTF 2.0 binary (GLB) writer, following the Khronos glTF 2.0 specification (§3 concepts,
-//! §4.4 GLB file format) and the `EXT_mesh_gpu_instancing` extension.
+//! # GLB writer
 //!
-//! **File layout**: 12-byte header (`glTF`, version 2, total length), a JSON chunk padded with
+//! glTF 2.0 binary (GLB), following the Khronos glTF 2.0 specification (§3 concepts, §4.4 GLB
+//! file format) and the `EXT_mesh_gpu_instancing` extension.
+//!
+//! ## File layout
+//!
+//! A 12-byte header (`glTF`, version 2, total length), a JSON chunk padded with
 //! spaces to 4 bytes, a BIN chunk padded with zeros to 4 bytes. One buffer (the BIN chunk);
 //! every buffer view starts on a 4-byte boundary and holds one tightly packed array, except the
 //! normal views (`byteStride` 4: three bytes and one of padding, or 8 with the tangent) and the
 //! wind view (below). Vertex views have `target` 34962 (ARRAY_BUFFER), index views 34963
 //! (ELEMENT_ARRAY_BUFFER); image and instancing views have none.
 //!
-//! **Scene**: node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
+//! ## Scene, meshes and materials
+//!
+//! Node 0 `sylva_tree` (identity) with children `bark` and `leaves`.
 //!
 //! * **Bark** mesh: one primitive per material group of [`TreeMesh`], sharing the attributes
 //!   `POSITION` (float, with min/max), `NORMAL`, `TEXCOORD_0` (float: bark UVs run past 1),
@@ -54,11 +60,15 @@
 //!   Images: PNG in buffer views ([`super::png`]); row 0 of a baked texture is `v = 0`, which
 //!   is the top of a glTF image, so UVs are written unchanged.
 //!
+//! ## Determinism
+//!
 //! `asset.generator` is `"Sylva <version>"`; `scene.extras.sylva_hash` is the tree's content
 //! hash. The JSON is built with `serde_json` maps (sorted keys), floats are written from `f64`
 //! so an `f32` min/max reads back exactly: equal trees give equal bytes.
 //!
-//! **Writing**: the JSON is laid out first, then the output is sized at once (a reused buffer
+//! ## Writing
+//!
+//! The JSON is laid out first, then the output is sized at once (a reused buffer
 //! keeps its bytes, a new one comes zeroed from the allocator, no fill) and every byte of it is
 //! written once: the header and JSON, the padding, and each view into its own region. Views of
 //! 256 KiB or more are split into as many parts as there are threads ([`crate::par`], one in
@@ -70,7 +80,9 @@
 //! same way, with plain comparisons; square roots are IEEE ones: no libm calls, which are
 //! function calls in wasm. [`write_into`] reuses the caller's allocation.
 //!
-//! Code: this file lays the file out (`write_into`, `assemble`); `doc.rs` builds the JSON
+//! ## Code
+//!
+//! This file lays the file out (`write_into`, `assemble`); `doc.rs` builds the JSON
 //! (views, accessors, meshes), `data.rs` holds the BIN chunk's arrays and their encoders.
 
 mod baked;

@@ -1,48 +1,33 @@
-//! Smooth Y forks (issue #5, item 3): a split clone that leaves its original at a shallow angle
-//! becomes one branch of a **ramiform**, after the maple page (reference 003): "two twigs are
-//! connected smoothly … four Bezier semi-cylinders: two side patches similar to twigs, two more
-//! patches to make a smooth top part" (a C0 simplification of Bloomenthal's node). Below about
-//! 30° a clone runs inside its original for many radii (at 10° two equal tubes overlap for about
-//! eleven radii), so a footprint on the original's side ([`super::weld`]) cannot be found; the
-//! fork instead splits the original's tube in two.
+//! # Smooth Y forks
 //!
-//! With `S` the original's ring at the split point, `Jo` the original's next ring (where the two
-//! tubes have separated: [`geometry`]) and `Jc` the clone's first ring (its junction ring):
+//! A split clone that leaves its original below about 30° runs inside it for many radii, so it
+//! has no footprint ([`super::weld`]); the original's tube splits in two instead. The shape is the
+//! maple page's **ramiform** (reference 003: two twig-like side patches and a smooth top part), a
+//! C0 simplification of Bloomenthal's node.
 //!
-//! * **Frames.** Both tubes have the same number of sides `n` (even), and the clone's sweep
-//!   starts from `S`'s frame normal, so column `k` of every ring points the same way and the
-//!   clone's `v` continues the original's at `S`: bark UVs run on unbroken into both branches.
-//! * **Halves.** `S` is cut into two halves by the plane through the original's axis across the
-//!   clone's direction: columns `a..a+n/2` face the clone (inner), the rest face away (outer).
-//! * **Side patches** (the ramiform's twig-like patches). Row `S` of the original is claimed
-//!   (not emitted). `S`'s outer half is joined to `Jo`'s outer half, and `S`'s inner half to the
-//!   clone's `Jc` columns `a..a+n/2` (the clone's outer half, facing the same way), each by
-//!   [`super::fork_rows::rows`] rows of quads: per column a cubic Bezier from `S` (leaving along
-//!   the original's axis, so the trunk below flows on without a kink; toward the front and back
-//!   of the clone's patch leaning with the clone) to the ring (arriving along its branch's
-//!   axis), handles 0.4 of the chord, loops at even parameters, normals across the loops.
-//! * **Top patch (the crotch).** `Jo`'s inner half (facing the clone) and `Jc`'s inner half
-//!   (facing the original) both come down to a **crotch seam** from `S`'s front column to its
-//!   back column: where two tubes diverging at ±α meet, their surfaces cross on an ellipse in the
-//!   plane between them, at the split point at the front and back and `R / sin α` up in the
-//!   middle. Seam vertex `k` (θ = π k / (n/2)) sits `cos θ` of `S`'s radius toward the front and
-//!   `sin θ` of the way up to the midpoint of the facing columns `Jo[a + k]`, `Jc[a − k]`
-//!   (times 0.9, or 0.7, 0.97 if a triangle turns the wrong way), with the normal of the two
-//!   columns' normals plus the branches' mean direction, and the original's wind record. The
-//!   seam's vertices are written twice, with the original's `u` and with the clone's, so each
-//!   side's bark stays continuous. One row of quads joins the seam to each ring; the row's end
-//!   quads meet the side patches' end columns and are zipped strips (the steps: [`mod@join`]).
+//! ## Rings and patches
 //!
-//! Triangles that straddle the original's texture seam get copies of their vertices a whole
-//! turn on ([`MeshBuilder::unwrap_u`]).
+//! `S` is the original's ring at the split, `Jo` its next ring (where the tubes have separated:
+//! [`geometry`]), `Jc` the clone's first ring.
 //!
-//! The result is edge-manifold by construction: every edge of row `S`, of `Jo` and of `Jc` is
-//! used once more, the seam's edges by both crotch rows, and the seam's ends are `S`'s own front
-//! and back vertices. Every new triangle must be non-degenerate and wound with its vertex normals
-//! ([`super::weld::well_wound`]; a skewed side-patch quad may take its other diagonal); else
-//! nothing is committed and the clone falls back to a separate tube. The original has no rings
-//! between `S` and `Jo` ([`keep_gaps`]), and no other child's footprint may use those rows (the
-//! fork's footprint spans the whole way round).
+//! * **Frames**: both tubes have the same even number of sides and the clone starts from `S`'s
+//!   frame and `v`, so column `k` points the same way in every ring and the bark runs on unbroken.
+//! * **Halves**: `S` is cut by the plane through the original's axis across the clone's direction
+//!   into an inner half (facing the clone) and an outer half.
+//! * **Side patches**: `S`'s outer half rises to `Jo`, its inner half to the clone's facing
+//!   columns of `Jc`, through [`super::fork_rows::rows`] rows of cubic Bezier columns (leaving
+//!   along the original's axis, arriving along the branch's; handles 0.4 of the chord).
+//! * **Crotch**: the inner halves of `Jo` and `Jc` come down to a seam on the ellipse where the
+//!   two tubes cross (from `S`'s front column to its back, `R / sin α` up in the middle), written
+//!   twice with each side's `u`; the steps are in [`mod@join`].
+//!
+//! ## Safety
+//!
+//! Edge-manifold by construction (every edge of `S`, `Jo` and `Jc` is used once more, the seam's
+//! by both crotch rows). Every new triangle must be non-degenerate and wound with its normals
+//! ([`super::weld::well_wound`]), else the clone falls back to a separate tube. The original
+//! keeps no rings between `S` and `Jo` ([`keep_gaps`]) and no other footprint may use those rows;
+//! triangles across the texture seam get vertex copies a turn on ([`MeshBuilder::unwrap_u`]).
 
 mod join;
 

@@ -1,40 +1,31 @@
-//! Tree holes (the thesis, §4.3–4.4): a post-process on the bark mesh that cuts cavities into
-//! the trunk and into level-1 stems thick enough for them (see [`eligible`]).
+//! # Tree holes
 //!
-//! **Where** — both of the thesis' methods give candidates, each on a stem's own swept block of
-//! vertices:
-//! * *surface* (§4.4.1): every vertex gets its outside edge angle, `180° - 2·mean asin(e·n)` over
-//!   its edges `e` (unit) and its normal `n`: 180° on a flat surface, more on a convex one, less
-//!   in a concave valley (flutes, lobes, buttresses). Vertices more than [`CONCAVE_DEG`] below
-//!   180° are grouped into connected clusters around the lowest one (within two hole radii);
-//!   clusters of fewer than [`MIN_CLUSTER`] vertices are isolated and ignored; each cluster's
-//!   lowest vertex is a candidate.
-//! * *structural* (§4.4.2): below the junction of every big child (level-1 branches on the
-//!   trunk, split forks; children at least half the minimum radius and a fifth of the local
-//!   radius thick), outside the child's footprint, and on the trunk between neighbouring root
-//!   starts (the valleys between buttress roots).
+//! A post-process on the bark mesh that cuts cavities into the trunk and into level-1 stems thick
+//! enough for them ([`eligible`]), after the thesis (§4.3–4.4).
 //!
-//! Candidates whose local stem radius is below `hole_min_radius` are dropped; the rest are taken
-//! in a random order (stream `"holes"`, seeded by `seed` and `hole_seed`) until `hole_count`
-//! holes are cut, skipping those too close to an earlier hole or to a child stem's buried base.
+//! ## Where (§4.4)
 //!
-//! **How** (§4.3, the 3ds Max recipe of chamfer, connect, delete, extrude, subdivide): the faces
-//! around the candidate within the hole's ellipse (half-width `hole_size` × local radius, 1.5 times
-//! taller along the stem) are selected; the selection must be a topological disk (one boundary
-//! loop, Euler characteristic 1), else it shrinks and is tried again. Its faces are removed, the
-//! boundary loop gets a rolled callus lip and a chamfered ring (inset toward the loop's centre and bevelled inward), and
-//! that rim is extruded inward along minus the surface normal into [`CAVITY_RINGS`] rings that
-//! narrow toward a closed bottom `hole_depth` × local radius below the surface; the cavity rings
-//! are then smoothed by a few Laplacian passes (the thesis' final subdivision, which softens the
-//! edges). New vertices reuse the slots of the removed interior vertices, then append.
+//! * *Surface*: vertices more than [`CONCAVE_DEG`] below a flat surface's 180° outside edge angle
+//!   (flutes, lobes, buttress valleys), grouped in clusters of at least [`MIN_CLUSTER`]; each
+//!   cluster's lowest vertex is a candidate.
+//! * *Structural*: below the junction of every big child and between neighbouring root starts.
 //!
-//! The surface stays closed and edge-manifold: only faces whose vertices are all *free* are cut —
-//! inside the stem's block, used by no triangle reaching outside the block (junction bridges),
-//! on no open edge, and sharing their position with no other vertex (UV seam, cap ring, welded
-//! copies). New normals are area-weighted face normals, so they face into the cavity (out of the
-//! wood); `u` follows the rim, `v` continues the bark's at one unit per circumference; wind
-//! entries, when the mesh has them, are copied from the nearest rim vertex. The tube rings
-//! holding a reused or parked slot leave `TreeMesh::rings`.
+//! Candidates on stems thinner than `hole_min_radius` are dropped; the rest are taken in a random
+//! order (stream `"holes"`) until `hole_count` are cut, away from earlier holes and buried bases.
+//!
+//! ## How (§4.3: chamfer, connect, delete, extrude, subdivide)
+//!
+//! The faces inside the hole's ellipse (`hole_size` × local radius, 1.5 times taller along the
+//! stem) must form a topological disk (else it shrinks and retries); they are removed, the rim
+//! gets a rolled callus lip and a chamfer, and is extruded inward into [`CAVITY_RINGS`] rings
+//! narrowing to a closed bottom `hole_depth` × local radius deep, smoothed by Laplacian passes.
+//!
+//! ## Invariants
+//!
+//! Only *free* faces are cut (inside the stem's block, on no junction bridge, open edge or shared
+//! position), so the bark stays closed and edge-manifold. New normals face into the cavity, `v`
+//! continues the bark's, wind entries come from the nearest rim vertex; the rings holding a reused
+//! slot leave `TreeMesh::rings`.
 
 mod candidates;
 mod cavity;

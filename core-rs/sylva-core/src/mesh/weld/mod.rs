@@ -1,71 +1,38 @@
-//! Welded junctions (issue #5, item 3): a child stem's tube is connected into its parent's
-//! surface instead of being buried in it, so trunk + level 1 + level 2 form one closed,
-//! edge-manifold surface.
+//! # Welded junctions
 //!
-//! The idea follows the maple page's twigs and ramiforms (reference 003): a junction is a short
-//! **Bezier cylinder** (a circle swept along a Bezier spline) from a loop on the parent's surface
-//! to the child's first ring. Here it goes in five steps:
+//! A level-1 or level-2 branch is joined into its parent's surface instead of being buried in it,
+//! so trunk + level 1 + level 2 form one closed, edge-manifold surface. The junction is a short
+//! **Bezier cylinder** from a loop on the parent to the branch's first ring, after the maple
+//! page's twigs and ramiforms (reference 003).
 //!
-//! 1. **Plan** ([`plan`], before any vertex exists). From the skeleton alone: the angle θ between
-//!    the child's first direction and the parent's axis, the distance `s_out = (R + r |cos θ|) /
-//!    sin θ` along the child at which its tube (radius `r`) has left the parent's (radius `R`,
-//!    times the lobe/fluting bound on the trunk), and the child's **junction ring** at
-//!    `s_out + collar r / 2`: the child's tube starts there. The **footprint** on the parent is the ellipse of the child's collar (radius
-//!    `r' = r (1 + collar (1 - r / R) / 2)`: no flare on an even fork) around the point where the
-//!    child's axis pierces the parent, `±r' / sin θ` along the parent and `±asin(r' / R)` around
-//!    it, widened to cover the junction ring as seen from the parent (a curved child leans).
-//!    The parent gets no full rings across the footprint: only a ring at a footprint's end where
-//!    its own nearest ring is more than [`REACH`] footprint lengths away, and one between two
-//!    footprints side by side around it that no ring separates (`tube::plan_rings`). Footprints
-//!    that would overlap one already accepted on the same parent, leave the parent's tube (below
-//!    its own junction ring, across the trunk's bottom cap or near the tip), leave at less than
-//!    10° or need a junction ring beyond half the child are not welded. Split clones are planned
-//!    first: a smooth Y matters more than a side twig. A split clone within 30° of its original
-//!    forks it instead ([`super::fork`]: the original's tube splits in two), when the two
-//!    tubes separate within the first half of the clone.
-//! 2. **Footprint loop** ([`join`](fn@join), after the parent's and the child's rings are swept). For every
-//!    column of the child's junction ring, the line along the child's axis through that column,
-//!    widened to the collar's radius `r'`, is followed back to where it leaves the parent's
-//!    faceted surface (a guess from the parent's local cylinder, then the quads around it): that
-//!    point, with the parent's interpolated normal and wind, is the footprint loop's vertex. Seen
-//!    along the child's axis the loop is the widened junction ring itself, a circle.
-//! 3. **Hole.** The parent quads under the footprint loop are *claimed* (not emitted); if another
-//!    junction holds one of them, the unflared footprint (the branch's own radius) is tried
-//!    before giving up. Their boundary is one closed loop of parent vertices, walked
-//!    counter-clockwise seen from outside (bottom ring, right column, top ring, left column); the
-//!    hole grows by a row or column where the loop comes within a fifth of a quad of its edge,
-//!    and by one all round if the first zip fails. The vertices inside the hole stay in the
-//!    buffers, unused by any triangle.
-//! 4. **Collar** (the blend). Each footprint vertex is joined to its ring vertex by a cubic Bezier
-//!    that leaves the parent *tangentially* (first control point along the parent's tangent
-//!    plane) and arrives *along the child's axis* (last control point back along it), both handles
-//!    0.4 of the chord. `collar_loops(quality)` loops of the child's column count sit on these
-//!    curves at even parameters: a collar that flares from the footprint into the branch, C1 with
-//!    both surfaces up to the loop spacing. For a split clone the hole spans the side of the
-//!    original facing it, so the collar becomes the crotch of a Y (the ramiform's top patch).
-//! 5. **Zip**. In the parent's own surface coordinates (around × along, in metres) the hole is a
-//!    rectangle and the footprint loop a closed curve inside it. Both are ordered by angle around
-//!    the footprint's centre, starting from the hole's vertex of smallest angle. The hole (any
-//!    number of vertices) is zipped to the footprint loop: both run counter-clockwise, each step
-//!    advances the loop whose next vertex comes first, unless that triangle would turn the wrong
-//!    way and the other would not; one triangle per step, so every edge of both loops is used
-//!    exactly once (a whole turn of one loop at a single vertex of the other is refused). These
-//!    triangles lie on the parent's facets. Quads join the footprint loop, the collar loops and
-//!    the junction ring. The footprint loop is the crease between the two: its normal blends the
-//!    parent's and the collar's, halfway where that suits every triangle, else leaning to one side.
-//! 6. **Bark coordinates.** The footprint loop is written twice at the same places: with the
-//!    parent's `u`, `v` for the zip (the parent's bark runs on up to the footprint) and with the
-//!    child's for the collar (the child's runs on down to it), so neither texture is squeezed
-//!    across a row; the two copies share normals and sway, so the surface stays closed. Zip
-//!    triangles that straddle the parent's texture seam get copies of their vertices a whole
-//!    turn on ([`MeshBuilder::unwrap_u`](super::MeshBuilder::unwrap_u)).
+//! ## Steps
 //!
-//! Every new triangle is checked before anything is committed: non-degenerate and wound with its
-//! vertex normals. If no footprint point is
-//! found, the loops' angles are not monotone around the axis, a claimed quad is already taken, or
-//! a check fails, the junction's vertices are dropped and the child is
-//! swept again as a separate tube from its parent's axis with a closed base: a **fallback**, counted in [`super::tube::WeldStats`].
-//! Deeper levels (3) are always such closed separate tubes.
+//! 1. **Plan** ([`plan`], from the skeleton alone): the angle θ to the parent's axis, where the
+//!    branch's tube leaves the parent (`s_out = (R + r |cos θ|) / sin θ`), its *junction ring*
+//!    at `s_out + collar r / 2`, and the ellipse-shaped *footprint* (radius
+//!    `r' = r (1 + collar (1 - r / R) / 2)`). Overlapping, too shallow (< 10°) or out-of-tube
+//!    footprints are not welded; split clones are planned first, and one within 30° of its
+//!    original forks it instead ([`super::fork`]).
+//! 2. **Footprint loop** ([`join`](fn@join)): for each column of the junction ring, where the
+//!    line along the branch, widened to `r'`, leaves the parent's faceted surface.
+//! 3. **Hole**: the parent's quads under the loop are claimed (not emitted); their boundary is
+//!    one counter-clockwise loop, grown by a row or column where the footprint comes too close.
+//! 4. **Collar**: footprint and ring vertices are joined by cubic Beziers leaving the parent
+//!    tangentially and arriving along the branch's axis (handles 0.4 of the chord); for a split
+//!    clone the collar becomes the crotch of a Y.
+//! 5. **Zip** ([`zip`]): the hole's rim and the footprint loop, both ordered by angle, are zipped
+//!    one triangle per step on the parent's own facets.
+//! 6. **Bark coordinates**: the footprint loop is written twice (the parent's `u`, `v` for the
+//!    zip, the branch's for the collar; same normals and sway), and triangles across a texture
+//!    seam get vertex copies a turn on ([`MeshBuilder::unwrap_u`](super::MeshBuilder::unwrap_u)).
+//!
+//! ## Safety
+//!
+//! Every new triangle is checked before anything is committed (not degenerate, wound with its
+//! vertex normals). When a footprint point is missing, the loops are not monotone, a quad is
+//! taken or a check fails, the junction's vertices are dropped and the branch is swept as a
+//! separate closed tube: a **fallback**, counted in [`super::tube::WeldStats`]. Level-3 stems are
+//! always separate closed tubes.
 
 mod footprint;
 mod join;

@@ -1,3 +1,5 @@
+//! # Vein growth by space colonization
+//!
 //! Space colonization of the blade (Runions et al. 2005; ANCHORS §4).
 //!
 //! Each iteration: (1) every live auxin source pulls the vein nodes it is associated with;
