@@ -76,7 +76,9 @@ test('(c) opening a share URL in a fresh page gives the same tree hash', async (
   const shareUrl = page.url();
   expect(new URL(shareUrl).searchParams.get(id)).toBe(String(target));
 
-  const context = await browser.newContext();
+  // Closed first, so the fresh page does not share the software GPU with it (slow under load).
+  await page.close();
+  const context = await browser.newContext({ reducedMotion: 'reduce' });
   const fresh = await context.newPage();
   await fresh.goto(shareUrl);
   expect(await waitForTree(fresh)).toBe(hash);
