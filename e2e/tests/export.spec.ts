@@ -16,11 +16,6 @@ import { waitForNewTree, waitForTree, watchErrors } from './helpers';
 const QUERY = 'v=1&seed=5&levels=2';
 
 /** Whether the wasm core in web/src/wasm has the mesh exporters (the `export` branch). */
-function coreHasExporters(): boolean {
-  const dts = fileURLToPath(new URL('../../web/src/wasm/sylva_wasm.d.ts', import.meta.url));
-  return /\bto_glb\(/.test(readFileSync(dts, 'utf8'));
-}
-
 async function bytesOf(download: Download): Promise<Buffer> {
   const path = await download.path();
   return readFileSync(path);
@@ -126,54 +121,46 @@ test('GLB and OBJ export follow the core', async ({ page }) => {
     'GLB for Blender and other editors (leaves merged into one mesh)',
   );
   await expect(page.getByTestId('export-glb-baked-hint')).toContainText('Blender');
-  if (coreHasExporters()) {
-    await expect(glb).toBeEnabled();
-    await expect(baked).toBeEnabled();
-    await page.getByTestId('export-menu').click();
-    // Both GLBs: the same bytes as the native CLI for the same parameters.
-    const file = await bytesOf(await exportItem(page, 'export-glb'));
-    expect(file.subarray(0, 4).toString('latin1')).toBe('glTF');
-    expect(file.readUInt32LE(8)).toBe(file.length);
-    expect(file.equals(cliGlb('instanced'))).toBe(true);
-    const bakedDownload = await exportItem(page, 'export-glb-baked');
-    expect(bakedDownload.suggestedFilename()).toMatch(/\.glb$/);
-    const bakedFile = await bytesOf(bakedDownload);
-    expect(bakedFile.equals(cliGlb('baked'))).toBe(true);
-    const json = JSON.parse(bakedFile.subarray(20, 20 + bakedFile.readUInt32LE(12)).toString()) as {
-      extensionsUsed?: string[];
-      meshes: { name: string; primitives: { attributes: Record<string, number> }[] }[];
-    };
-    expect(json.extensionsUsed ?? []).not.toContain('EXT_mesh_gpu_instancing');
-    const leaves = json.meshes.find((m) => m.name === 'leaves');
-    expect(Object.keys(leaves?.primitives[0]?.attributes ?? {})).toEqual(
-      expect.arrayContaining(['COLOR_0', '_WIND_PIVOT', '_WIND_PARAMS']),
-    );
-    await expect(page.getByTestId('toolbar-status')).toContainText('.glb');
+  await expect(glb).toBeEnabled();
+  await expect(baked).toBeEnabled();
+  await expect(obj).toBeEnabled();
+  await page.getByTestId('export-menu').click();
+  // Both GLBs: the same bytes as the native CLI for the same parameters.
+  const file = await bytesOf(await exportItem(page, 'export-glb'));
+  expect(file.subarray(0, 4).toString('latin1')).toBe('glTF');
+  expect(file.readUInt32LE(8)).toBe(file.length);
+  expect(file.equals(cliGlb('instanced'))).toBe(true);
+  const bakedDownload = await exportItem(page, 'export-glb-baked');
+  expect(bakedDownload.suggestedFilename()).toMatch(/\.glb$/);
+  const bakedFile = await bytesOf(bakedDownload);
+  expect(bakedFile.equals(cliGlb('baked'))).toBe(true);
+  const json = JSON.parse(bakedFile.subarray(20, 20 + bakedFile.readUInt32LE(12)).toString()) as {
+    extensionsUsed?: string[];
+    meshes: { name: string; primitives: { attributes: Record<string, number> }[] }[];
+  };
+  expect(json.extensionsUsed ?? []).not.toContain('EXT_mesh_gpu_instancing');
+  const leaves = json.meshes.find((m) => m.name === 'leaves');
+  expect(Object.keys(leaves?.primitives[0]?.attributes ?? {})).toEqual(
+    expect.arrayContaining(['COLOR_0', '_WIND_PIVOT', '_WIND_PARAMS']),
+  );
+  await expect(page.getByTestId('toolbar-status')).toContainText('.glb');
 
-    const zip = await exportItem(page, 'export-obj');
-    expect(zip.suggestedFilename()).toMatch(/-obj\.zip$/);
-    const archive = unzipSync(new Uint8Array(await bytesOf(zip)));
-    const names = Object.keys(archive);
-    expect(names.some((n) => n.endsWith('.obj'))).toBe(true);
-    const objName = names.find((n) => n.endsWith('.obj')) ?? '';
-    const mtlName = names.find((n) => n.endsWith('.mtl')) ?? '';
-    expect(new TextDecoder().decode(archive[objName])).toMatch(/\nv -?\d/);
-    expect(new TextDecoder().decode(archive[mtlName])).toContain('newmtl');
-    await expect(page.getByTestId('toolbar-status')).toContainText('OBJ, MTL and textures');
-  } else {
-    // This core has no exporters yet: the items are offered but disabled, with the reason.
-    await expect(glb).toBeDisabled();
-    await expect(baked).toBeDisabled();
-    await expect(obj).toBeDisabled();
-    await expect(glb).toHaveAttribute('title', /no exporter/);
-  }
+  const zip = await exportItem(page, 'export-obj');
+  expect(zip.suggestedFilename()).toMatch(/-obj\.zip$/);
+  const archive = unzipSync(new Uint8Array(await bytesOf(zip)));
+  const names = Object.keys(archive);
+  expect(names.some((n) => n.endsWith('.obj'))).toBe(true);
+  const objName = names.find((n) => n.endsWith('.obj')) ?? '';
+  const mtlName = names.find((n) => n.endsWith('.mtl')) ?? '';
+  expect(new TextDecoder().decode(archive[objName])).toMatch(/\nv -?\d/);
+  expect(new TextDecoder().decode(archive[mtlName])).toContain('newmtl');
+  await expect(page.getByTestId('toolbar-status')).toContainText('OBJ, MTL and textures');
   expect(errors).toEqual([]);
 });
 
 test("the baked GLB in three.js: leaves in the crown, tinted, with their twigs' wind", async ({
   page,
 }) => {
-  test.skip(!coreHasExporters(), 'this core has no exporters');
   const glb = cliGlb('baked');
   const three = fileURLToPath(new URL('../../node_modules/three/', import.meta.url));
   // A bare page (no app) that loads the file with three.js's GLTFLoader and draws it.
