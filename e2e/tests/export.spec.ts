@@ -15,9 +15,11 @@ import { waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 const QUERY = 'v=1&seed=5&levels=2';
 
-/** Whether the wasm core in web/src/wasm has the mesh exporters (the `export` branch). */
+/** Whether the wasm core in packages/sylva-trees/src/wasm has the mesh exporters (the `export` branch). */
 function coreHasExporters(): boolean {
-  const dts = fileURLToPath(new URL('../../web/src/wasm/sylva_wasm.d.ts', import.meta.url));
+  const dts = fileURLToPath(
+    new URL('../../packages/sylva-trees/src/wasm/sylva_wasm.d.ts', import.meta.url),
+  );
   return /\bto_glb\(/.test(readFileSync(dts, 'utf8'));
 }
 
