@@ -4,7 +4,7 @@ import js from '@eslint/js';
 import globals from 'globals';
 
 export default [
-  { ignores: ['node_modules', 'target', 'web', 'e2e', 'core-rs'] },
+  { ignores: ['node_modules', 'target', 'web', 'packages', 'e2e', 'core-rs'] },
   js.configs.recommended,
   {
     files: ['scripts/**/*.mjs', 'eslint.config.mjs'],

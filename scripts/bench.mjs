@@ -23,9 +23,13 @@ const median = (xs) => {
 };
 
 const sylva = nativeCli();
-const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
+const wasm = await import(
+  new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url)
+);
 wasm.initSync({
-  module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+  module: readFileSync(
+    new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
+  ),
 });
 
 // Every preset, plus the named cases the issues set targets for.
@@ -220,9 +224,13 @@ if (typeof wasm.GeneratedTree?.prototype?.to_glb === 'function') {
       encoding: 'utf8',
     }),
   ).glb;
-  const fresh = await import(new URL('../web/src/wasm/sylva_wasm.js?glb-bench', import.meta.url));
+  const fresh = await import(
+    new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js?glb-bench', import.meta.url)
+  );
   fresh.initSync({
-    module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+    module: readFileSync(
+      new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
+    ),
   });
   const tree = fresh.generate(JSON.stringify(preset.values));
   const timed = (f) => {

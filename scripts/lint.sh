@@ -8,5 +8,6 @@ cargo clippy -p sylva-wasm --target wasm32-unknown-unknown --quiet -- -D warning
 RUSTDOCFLAGS='-D warnings' cargo doc --quiet --no-deps --workspace
 npm run lint -w web
 npx tsc --noEmit -p e2e
+npm run lint -w packages/sylva-trees
 npx eslint scripts eslint.config.mjs
 npx prettier --check scripts e2e eslint.config.mjs

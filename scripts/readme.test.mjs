@@ -1,5 +1,5 @@
 // The house's front door stays short and true (rule 7): README.md under 250 lines with exactly the
-// two commands, a code map naming every folder of core-rs/ and web/src/, and no dead link in
+// two commands, a code map naming every folder of core-rs/, web/src/ and the package's src/, and no dead link in
 // README.md or docs/*.md (files, and #anchors into Markdown headings).
 import assert from 'node:assert/strict';
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
@@ -23,7 +23,7 @@ test('README.md is at most 250 lines and shows exactly the two commands', () => 
   assert.deepEqual(commands, ['npm start', 'npm test']);
 });
 
-test('the code map names every folder of core-rs/ and web/src/', () => {
+test('the code map names every folder of core-rs/, web/src/ and packages/sylva-trees/src/', () => {
   const map = sectionCode(readme, 'Code map');
   const wanted = [];
   for (const crate of dirs('core-rs')) {
@@ -35,8 +35,10 @@ test('the code map names every folder of core-rs/ and web/src/', () => {
   // A folder of a crate's tests is named by its crate's tests/ line.
   const named = (entry) => map.includes(entry) || map.includes(entry.replace(/^[^/]+\//, ''));
   const missing = wanted.filter((entry) => !named(entry));
-  for (const dir of dirs('web/src'))
-    if (!map.includes(` ${dir}/ `)) missing.push(`web/src/${dir}/`);
+  for (const src of ['web/src', 'packages/sylva-trees/src']) {
+    if (!map.includes(`${src}/ `)) missing.push(`${src}/`);
+    for (const dir of dirs(src)) if (!map.includes(` ${dir}/ `)) missing.push(`${src}/${dir}/`);
+  }
   assert.deepEqual(missing, []);
 });
 

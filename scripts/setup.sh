@@ -44,11 +44,11 @@ if [ "$(wasm-bindgen --version 2>/dev/null | cut -d' ' -f2)" != "$WASM_BINDGEN_V
   cargo install wasm-bindgen-cli --version "$WASM_BINDGEN_VERSION"
 fi
 
-# 4. The release wasm build and its JS glue in web/src/wasm (cargo itself is a no-op when nothing changed).
+# 4. The release wasm build and its JS glue in packages/sylva-trees/src/wasm (cargo itself is a no-op when nothing changed).
 step "cargo build sylva-wasm (release, wasm32)"
 cargo build --quiet --release --target wasm32-unknown-unknown -p sylva-wasm
 WASM=${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/release/sylva_wasm.wasm
-OUT=web/src/wasm
+OUT=packages/sylva-trees/src/wasm
 if [ ! -f "$OUT/sylva_wasm_bg.wasm" ] || [ "$WASM" -nt "$OUT/sylva_wasm_bg.wasm" ]; then
   step "wasm-bindgen -> $OUT"
   wasm-bindgen --target web --out-dir "$OUT" "$WASM"

@@ -16,7 +16,9 @@ step "wasm vs native: same content hashes"
 node scripts/wasm-parity.mjs
 step "Vitest"
 npm run test -w web
-step "build the web app"
+npm run test -w packages/sylva-trees
+step "build the web app, and the sylva-trees package (tarball for its e2e test)"
 npm run build -w web
+bash scripts/package.sh
 step "Playwright (Chromium)"
 npm run test -w e2e

@@ -7,7 +7,7 @@
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
 //
-// Then, when the wasm build exists (web/src/wasm), checks that the wasm exporters (`to_glb`,
+// Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
 // `to_glb_file`) write the same bytes as the native one (default tree, both leaf modes).
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
@@ -59,11 +59,13 @@ for (const name of presets) {
 if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 
 // Native and wasm exporters write identical bytes (standing rule: same output on every target).
-const glue = new URL('../web/src/wasm/sylva_wasm.js', import.meta.url);
+const glue = new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url);
 if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
   const wasm = await import(glue);
   wasm.initSync({
-    module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+    module: readFileSync(
+      new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
+    ),
   });
   const tree = wasm.generate('{}');
   if (typeof tree.to_glb !== 'function') {

@@ -4,9 +4,13 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { nativeCli } from './native-cli.mjs';
 
-const wasm = await import(new URL('../web/src/wasm/sylva_wasm.js', import.meta.url));
+const wasm = await import(
+  new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url)
+);
 wasm.initSync({
-  module: readFileSync(new URL('../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
+  module: readFileSync(
+    new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
+  ),
 });
 
 const sylva = nativeCli();

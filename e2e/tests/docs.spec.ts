@@ -2,7 +2,7 @@
 import { expect, test } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { initSync, registry_json } from '../../web/src/wasm/sylva_wasm.js';
+import { initSync, registry_json } from '../../packages/sylva-trees/src/wasm/sylva_wasm.js';
 import { watchErrors } from './helpers';
 
 interface Spec {
@@ -27,7 +27,9 @@ function cliReference(): {
 
 /** The registry straight from the wasm core, independent of the page. */
 function registry(): Spec[] {
-  const wasm = fileURLToPath(new URL('../../web/src/wasm/sylva_wasm_bg.wasm', import.meta.url));
+  const wasm = fileURLToPath(
+    new URL('../../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
+  );
   initSync({ module: readFileSync(wasm) });
   return JSON.parse(registry_json()) as Spec[];
 }

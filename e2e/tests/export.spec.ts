@@ -1,6 +1,6 @@
 /**
  * The app toolbar: PNG screenshot, preset JSON save → load, the GLB for engines, the GLB for
- * editors and the zipped OBJ (when the core has the exporters; both GLBs the same bytes as the
+ * editors and the zipped OBJ (both GLBs the same bytes as the
  * native CLI's, the baked one drawn by three.js), "Copy embed code" and the docs link.
  */
 import { expect, test, type Download, type Page } from '@playwright/test';
@@ -15,7 +15,6 @@ import { waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 const QUERY = 'v=1&seed=5&levels=2';
 
-/** Whether the wasm core in web/src/wasm has the mesh exporters (the `export` branch). */
 async function bytesOf(download: Download): Promise<Buffer> {
   const path = await download.path();
   return readFileSync(path);

@@ -4,67 +4,39 @@
  * that the worker and its wasm download and compile while the page parses three.js and React.
  * A debug worker (tests, `?debug=1`) is started under [`DEBUG_WORKER_NAME`].
  */
-import type { WorkerHandle, WorkerStartOptions } from './worker/client';
-import { DEBUG_WORKER_NAME } from './worker/debug';
+import type {
+  WorkerHandle,
+  WorkerStartOptions,
+} from '../../packages/sylva-trees/src/worker/client';
+import { DEBUG_WORKER_NAME } from '../../packages/sylva-trees/src/worker/debug';
+import { startGeneratorWorker } from '../../packages/sylva-trees/src/runtime/startWorker';
+import {
+  adaptWorker,
+  type EarlyMessages,
+} from '../../packages/sylva-trees/src/runtime/workerHandle';
 
 function newWorker(debug: boolean): Worker {
-  // Vite reads `type` statically: the name (empty for a production worker) comes after it.
-  return new Worker(new URL('./worker/worker.ts', import.meta.url), {
-    type: 'module',
-    name: debug ? DEBUG_WORKER_NAME : '',
-  });
+  return startGeneratorWorker(debug ? DEBUG_WORKER_NAME : '');
 }
 
-/** What a worker said before anyone listened. */
-interface Early<Res> {
-  messages: Res[];
-  error: string | null;
-}
-
-/** Adapts `worker` to a client's handle, delivering `pending` (messages so far) first. */
-function adapt<Req, Res>(
-  worker: Worker,
-  onMessage: (response: Res) => void,
-  onError: (message: string) => void,
-  pending: Early<Res> = { messages: [], error: null },
-): WorkerHandle<Req> {
-  worker.onmessage = (event: MessageEvent<Res>) => onMessage(event.data);
-  worker.onerror = (event: ErrorEvent) => {
-    event.preventDefault();
-    onError(event.message || 'the generator worker failed to load');
-  };
-  worker.onmessageerror = () => onError('the generator worker sent an unreadable message');
-  // Replayed after the caller has its handle (the client stores it before any message).
-  if (pending.messages.length > 0 || pending.error !== null) {
-    queueMicrotask(() => {
-      for (const message of pending.messages) onMessage(message);
-      if (pending.error !== null) onError(pending.error);
-    });
-  }
-  return {
-    post: (request) => worker.postMessage(request),
-    terminate: () => worker.terminate(),
-  };
-}
-
-/** Starts `worker/worker.ts` as an ES module worker and adapts it to a client's handle. */
+/** Starts the package's generator worker as an ES module worker and adapts it to a client's handle. */
 export function createModuleWorker<Req, Res>(
   onMessage: (response: Res) => void,
   onError: (message: string) => void,
   options: WorkerStartOptions = {},
 ): WorkerHandle<Req> {
-  return adapt(newWorker(options.debug === true), onMessage, onError);
+  return adaptWorker(newWorker(options.debug === true), onMessage, onError);
 }
 
 /** A generator worker started early, and what it said before anyone listened. */
-let early: { worker: Worker; debug: boolean; pending: Early<unknown> } | null = null;
+let early: { worker: Worker; debug: boolean; pending: EarlyMessages<unknown> } | null = null;
 
 /** Starts the app's generator worker now; [`createGeneratorWorker`] takes it over later. */
 export function prestartGenerator(options: WorkerStartOptions = {}): void {
   if (early !== null) return;
   const debug = options.debug === true;
   const worker = newWorker(debug);
-  const pending: Early<unknown> = { messages: [], error: null };
+  const pending: EarlyMessages<unknown> = { messages: [], error: null };
   worker.onmessage = (event: MessageEvent<unknown>) => pending.messages.push(event.data);
   worker.onerror = (event: ErrorEvent) => {
     event.preventDefault();
@@ -86,7 +58,7 @@ export function createGeneratorWorker<Req, Res>(
   const claimed = early;
   early = null;
   if (claimed && claimed.debug === (options.debug === true)) {
-    return adapt(claimed.worker, onMessage, onError, claimed.pending as Early<Res>);
+    return adaptWorker(claimed.worker, onMessage, onError, claimed.pending as EarlyMessages<Res>);
   }
   claimed?.worker.terminate();
   return createModuleWorker(onMessage, onError, options);

@@ -3,8 +3,12 @@
  * the growth tools, or the leaf inspector). Every edit goes to the editor's reducer.
  */
 import { useCallback, useState } from 'react';
-import { applyPreset, defaultParams, randomSeed } from '../core/params';
-import type { ParamSpec, Params, Preset } from '../core/types';
+import {
+  applyPreset,
+  defaultParams,
+  randomSeed,
+} from '../../../packages/sylva-trees/src/core/params';
+import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
 import { GrowthTools } from '../ui/GrowthTools';
 import { LeafInspector } from '../ui/LeafInspector';
 import { ParamPanel } from '../ui/ParamPanel';

@@ -1,7 +1,7 @@
 /** The `window.__sylva` debug hook (dev mode or `?debug=1` only). */
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
-import type { WindSettings } from '../viewer/windSettings';
+import type { WindSettings } from '../../../packages/sylva-trees/src/viewer/windSettings';
 
 /** A tree the viewer applied (the debug hook's log; benchmarks time answers with it). */
 export interface TreeApplied {

@@ -1,6 +1,11 @@
 /** Share-URL and localStorage persistence of the current params (load on start, debounced save). */
-import type { ParamSpec, Params } from '../core/types';
-import { buildSearch, decodeQuery, encodeParams, type DecodeResult } from '../url/codec';
+import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
+import {
+  buildSearch,
+  decodeQuery,
+  encodeParams,
+  type DecodeResult,
+} from '../../../packages/sylva-trees/src/url/codec';
 
 /** localStorage key holding the last params as a share query string. */
 export const STORAGE_KEY = 'sylva.params.v1';

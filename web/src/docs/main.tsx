@@ -1,8 +1,12 @@
 /** The docs page: loads the wasm core on the main thread for its registry, then renders. */
 import { StrictMode } from 'react';
 import { createRoot } from 'react-dom/client';
-import { parsePresets, parseRegistry } from '../core/parse';
-import init, { core_version, presets_json, registry_json } from '../wasm/sylva_wasm.js';
+import { parsePresets, parseRegistry } from '../../../packages/sylva-trees/src/core/parse';
+import init, {
+  core_version,
+  presets_json,
+  registry_json,
+} from '../../../packages/sylva-trees/src/wasm/sylva_wasm.js';
 import { DocsPage } from './DocsPage';
 import { buildDocsModel } from './model';
 import '../fonts.css';

@@ -3,9 +3,9 @@
  * the panel): groups in panel order, and per parameter its label, id, kind, unit, description,
  * default and range as display text.
  */
-import { displayValue, groupParams } from '../core/params';
-import type { ParamSpec, Preset } from '../core/types';
-import { formatNumber } from '../url/codec';
+import { displayValue, groupParams } from '../../../packages/sylva-trees/src/core/params';
+import type { ParamSpec, Preset } from '../../../packages/sylva-trees/src/core/types';
+import { formatNumber } from '../../../packages/sylva-trees/src/url/codec';
 
 /** One parameter row of the reference. */
 export interface DocsParam {

@@ -2,8 +2,13 @@
  * `<sylva-tree>` attributes → generator params (pure): the `preset` (or the defaults), then the
  * `params` query (`id=value&...`, validated exactly like a share link), then `seed`.
  */
-import { applyPreset, defaultParams } from '../core/params';
-import type { ParamSpec, Params, Preset, VolumePrimitive } from '../core/types';
+import { applyPreset, defaultParams } from '../../../packages/sylva-trees/src/core/params';
+import type {
+  ParamSpec,
+  Params,
+  Preset,
+  VolumePrimitive,
+} from '../../../packages/sylva-trees/src/core/types';
 import {
   decodeVolumes,
   FORMAT_VERSION,
@@ -11,7 +16,7 @@ import {
   parseValue,
   shown,
   VOLUMES_KEY,
-} from '../url/codec';
+} from '../../../packages/sylva-trees/src/url/codec';
 
 /** The attributes that choose the tree. */
 export interface TreeAttributes {

@@ -4,8 +4,9 @@
  * A worker must be same-origin: from another origin a tiny module worker made from a blob: URL
  * imports the real one (the host then needs CORS, and the page's CSP must allow blob: workers).
  */
-import workerUrl from '../worker/worker.ts?worker&url';
-import type { WorkerHandle } from '../worker/client';
+import workerUrl from '../../../packages/sylva-trees/src/worker/worker.ts?worker&url';
+import type { WorkerHandle } from '../../../packages/sylva-trees/src/worker/client';
+import { adaptWorker } from '../../../packages/sylva-trees/src/runtime/workerHandle';
 
 /** Absolute URL of the built worker script. */
 export function generatorWorkerUrl(): URL {
@@ -39,18 +40,12 @@ export function elementWorkerFactory<Req, Res>(
     queueMicrotask(() => onError(`the generator worker could not start (${message})`));
     return { post: () => undefined, terminate: () => undefined };
   }
-  worker.onmessage = (event: MessageEvent<Res>) => onMessage(event.data);
-  worker.onerror = (event: ErrorEvent) => {
-    event.preventDefault();
-    onError(
-      event.message ||
-        'the generator worker failed to load (cross-origin use needs CORS on the Sylva host ' +
-          'and worker-src blob: in the page CSP)',
-    );
-  };
-  worker.onmessageerror = () => onError('the generator worker sent an unreadable message');
-  return {
-    post: (request) => worker.postMessage(request),
-    terminate: () => worker.terminate(),
-  };
+  return adaptWorker(
+    worker,
+    onMessage,
+    onError,
+    undefined,
+    'the generator worker failed to load (cross-origin use needs CORS on the Sylva host ' +
+      'and worker-src blob: in the page CSP)',
+  );
 }

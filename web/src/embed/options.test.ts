@@ -1,8 +1,8 @@
 /** Embed options, the "Open in Sylva" query and the embed snippets. */
 import { describe, expect, it } from 'vitest';
-import { defaultParams } from '../core/params';
-import { realRegistry } from '../testing/realWasm';
-import { decodeQuery } from '../url/codec';
+import { defaultParams } from '../../../packages/sylva-trees/src/core/params';
+import { realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
+import { decodeQuery } from '../../../packages/sylva-trees/src/url/codec';
 import {
   appQuery,
   elementSnippet,

@@ -3,8 +3,14 @@
  * "Open in Sylva" link carries, and the iframe / `<sylva-tree>` snippets of "Copy embed code".
  */
 import { Color } from 'three';
-import { encodeParams, FORMAT_VERSION, MAX_QUERY_LENGTH, shown, VOLUMES_KEY } from '../url/codec';
-import type { ParamSpec, Params } from '../core/types';
+import {
+  encodeParams,
+  FORMAT_VERSION,
+  MAX_QUERY_LENGTH,
+  shown,
+  VOLUMES_KEY,
+} from '../../../packages/sylva-trees/src/url/codec';
+import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
 
 /** How the viewer background is drawn. */
 export type Background =

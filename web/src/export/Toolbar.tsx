@@ -4,13 +4,21 @@
  * to choose it), "Copy embed code" and a link to the docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
+import type {
+  ParamSpec,
+  Params,
+  VolumePrimitive,
+} from '../../../packages/sylva-trees/src/core/types';
 import { createModuleWorker } from '../createWorker';
 import { useDismiss } from '../ui/useDismiss';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { downloadBlob } from './download';
-import { ExportClient } from './exportClient';
-import type { ExportFormat, ExportResponse, LeafExport } from './exportProtocol';
+import { ExportClient } from '../../../packages/sylva-trees/src/export/exportClient';
+import type {
+  ExportFormat,
+  ExportResponse,
+  LeafExport,
+} from '../../../packages/sylva-trees/src/export/exportProtocol';
 import { presetFileName } from './presetFile';
 import {
   EmbedButton,

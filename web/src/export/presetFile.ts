@@ -3,9 +3,9 @@
  * each value with the share-link validation (`parseValue`), so a file can hold nothing a link
  * could not; any bad value rejects the whole file (the current tree stays).
  */
-import { defaultParams, normalizeValue } from '../core/params';
-import type { ParamSpec, Params } from '../core/types';
-import { formatNumber, parseValue, shown } from '../url/codec';
+import { defaultParams, normalizeValue } from '../../../packages/sylva-trees/src/core/params';
+import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
+import { formatNumber, parseValue, shown } from '../../../packages/sylva-trees/src/url/codec';
 
 /** Format version written as `"sylva"`. */
 export const PRESET_FILE_VERSION = 1;

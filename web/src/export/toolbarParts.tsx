@@ -3,9 +3,13 @@
  * and the file actions (PNG screenshot, preset JSON save and load).
  */
 import { useEffect, useState, type RefObject } from 'react';
-import type { ParamSpec, Params, VolumePrimitive } from '../core/types';
+import type {
+  ParamSpec,
+  Params,
+  VolumePrimitive,
+} from '../../../packages/sylva-trees/src/core/types';
 import { EmbedDialog } from '../embed/EmbedDialog';
-import { encodeVolumes } from '../url/codec';
+import { encodeVolumes } from '../../../packages/sylva-trees/src/url/codec';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { canvasPng, downloadBlob, readTextFile } from './download';
 import { MAX_PRESET_FILE_BYTES, parsePresetFile, presetFileText } from './presetFile';

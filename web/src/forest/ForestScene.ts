@@ -9,7 +9,7 @@
  */
 import { fitToContainer } from '../viewer/cameraView';
 import type { Sphere, InstancedMesh } from 'three';
-import { impostorLights, SceneLights } from '../viewer/lighting';
+import { impostorLights, SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import {
   Color,
   DoubleSide,
@@ -46,7 +46,7 @@ import {
   treeSphere,
 } from '../lod/lodObjects';
 import { switchDistances } from '../lod/selection';
-import type { LodBuffers } from '../lod/types';
+import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
 import {
   assignLods,
   createBuckets,
@@ -55,7 +55,7 @@ import {
   type ForestLayout,
   type LodBuckets,
 } from './layout';
-import { wrapInstances } from '../viewer/instances';
+import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 
 /** Meshes (so draw calls) per variety: 3 levels × 2 materials + the impostor. */
 export const MESHES_PER_VARIETY = 7;

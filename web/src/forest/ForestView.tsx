@@ -5,12 +5,12 @@
  * in a worker of their own, one request per variety.
  */
 import { useEffect, useRef, useState } from 'react';
-import { applyPreset } from '../core/params';
-import type { Params } from '../core/types';
+import { applyPreset } from '../../../packages/sylva-trees/src/core/params';
+import type { Params } from '../../../packages/sylva-trees/src/core/types';
 import { createModuleWorker } from '../createWorker';
 import { installDebugHook } from '../app/debugHook';
 import { LodClient } from '../lod/lodClient';
-import type { ReadyInfo } from '../worker/protocol';
+import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
 import { ForestScene, type ForestStats } from './ForestScene';
 
 /** Presets the forest mixes (those present are used, in this order). */

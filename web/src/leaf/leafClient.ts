@@ -4,14 +4,19 @@
  * overwrite; a crashed worker is recreated and the pending request sent to the new one (all of
  * it in [`WorkerClient`]).
  */
-import type { LeafInspection, Params, Preset, SylvaError } from '../core/types';
-import { WorkerClient } from '../worker/client';
+import type {
+  LeafInspection,
+  Params,
+  Preset,
+  SylvaError,
+} from '../../../packages/sylva-trees/src/core/types';
+import { WorkerClient } from '../../../packages/sylva-trees/src/worker/client';
 import type {
   GeneratorWorkerFactory,
   LeafRequest,
   WorkerRequest,
   WorkerResponse,
-} from '../worker/protocol';
+} from '../../../packages/sylva-trees/src/worker/protocol';
 
 /** What the inspector asks for. */
 export type LeafQuery = Omit<LeafRequest, 'type' | 'id'>;

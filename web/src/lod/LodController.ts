@@ -21,7 +21,11 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import type { Params, TreeBuffers, VolumePrimitive } from '../core/types';
+import type {
+  Params,
+  TreeBuffers,
+  VolumePrimitive,
+} from '../../../packages/sylva-trees/src/core/types';
 import type { OverlayHost } from '../viewer/TreeViewer';
 import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
 import type { ImpostorAtlas } from './impostor';
@@ -39,7 +43,7 @@ import {
   treeSphere,
 } from './lodObjects';
 import { IMPOSTOR_LEVEL, screenFraction, selectLod } from './selection';
-import type { LodBuffers } from './types';
+import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
 
 /** Auto (by screen size), a forced level 0..3, or (tests) nothing drawn. */
 export type LodMode = 'auto' | 0 | 1 | 2 | 3 | 'hidden';

@@ -36,9 +36,12 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { impostorLights, type ImpostorLights } from '../viewer/lighting';
+import {
+  impostorLights,
+  type ImpostorLights,
+} from '../../../packages/sylva-trees/src/viewer/lighting';
 import { frameDirection, viewBasis } from './hemiOct';
-import { wrapInstances } from '../viewer/instances';
+import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
 import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
 import impostorVertex from './shaders/impostor.vert.glsl?raw';

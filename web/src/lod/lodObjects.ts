@@ -25,12 +25,16 @@ import {
   type Material,
   type Texture,
 } from 'three';
-import type { LeafTextureBuffers } from '../core/types';
-import { attachBarkAttributes } from '../viewer/barkLook';
+import type { LeafTextureBuffers } from '../../../packages/sylva-trees/src/core/types';
+import { attachBarkAttributes } from '../../../packages/sylva-trees/src/viewer/barkLook';
 import { mulberry32 } from '../forest/layout';
-import { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from './types';
-import { wrapInstances } from '../viewer/instances';
-import { LEAF_TRANSLUCENCY } from '../viewer/Foliage';
+import {
+  QUAD_FLOATS,
+  type LodBuffers,
+  type LodLevelBuffers,
+} from '../../../packages/sylva-trees/src/lod/types';
+import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
+import { LEAF_TRANSLUCENCY } from '../../../packages/sylva-trees/src/viewer/Foliage';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';

@@ -95,11 +95,14 @@ describe('no HTML or code from strings anywhere in the app', () => {
     ['createContextual', 'Fragment'],
   ].map((parts) => parts.join(''));
   const sources = [
-    ...files(join(webRoot, 'src')).filter((f) => /\.(ts|tsx|js|html)$/.test(f)),
+    // The app's own code and the shared runtime of the `sylva-trees` package (and its wasm glue).
+    ...[join(webRoot, 'src'), join(webRoot, '..', 'packages', 'sylva-trees', 'src')]
+      .flatMap((dir) => files(dir))
+      .filter((f) => /\.(ts|tsx|js|html)$/.test(f)),
     join(webRoot, 'index.html'),
   ].filter((f) => f !== fileURLToPath(import.meta.url));
 
-  it('scans the app sources, the wasm glue and index.html', () => {
+  it('scans the app sources, the package runtime, the wasm glue and index.html', () => {
     expect(sources.length).toBeGreaterThan(20);
     expect(sources.some((f) => f.endsWith('sylva_wasm.js'))).toBe(true);
   });

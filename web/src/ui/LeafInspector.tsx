@@ -8,8 +8,14 @@
  * style attributes, so the CSP holds).
  */
 import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import { groupParams, normalizeValue } from '../core/params';
-import type { LeafInspection, ParamSpec, Params, Preset, SylvaError } from '../core/types';
+import { groupParams, normalizeValue } from '../../../packages/sylva-trees/src/core/params';
+import type {
+  LeafInspection,
+  ParamSpec,
+  Params,
+  Preset,
+  SylvaError,
+} from '../../../packages/sylva-trees/src/core/types';
 import { createModuleWorker } from '../createWorker';
 import { downloadBlob } from '../export/download';
 import { LeafClient } from '../leaf/leafClient';

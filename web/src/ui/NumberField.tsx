@@ -1,7 +1,7 @@
 /** Numeric input bound to a param: keeps the typed text while editing, commits valid values. */
 import { useState } from 'react';
-import { displayValue, snapToStep } from '../core/params';
-import type { ParamSpec } from '../core/types';
+import { displayValue, snapToStep } from '../../../packages/sylva-trees/src/core/params';
+import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
 
 interface Props {
   spec: ParamSpec;

@@ -1,7 +1,7 @@
 /** One registry-generated control: slider + number (float/int), checkbox (bool) or select (enum). */
 import { memo } from 'react';
-import { snapToStep } from '../core/params';
-import type { ParamSpec } from '../core/types';
+import { snapToStep } from '../../../packages/sylva-trees/src/core/params';
+import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
 import { NumberField } from './NumberField';
 
 interface Props {

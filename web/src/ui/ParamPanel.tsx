@@ -1,7 +1,7 @@
 /** Side panel generated from the registry: presets, seed, Reset, and one section per group. */
-import { groupParams } from '../core/params';
+import { groupParams } from '../../../packages/sylva-trees/src/core/params';
 import type { ReactNode } from 'react';
-import type { ParamSpec, Params, Preset } from '../core/types';
+import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
 import { NumberField } from './NumberField';
 import { ParamGroups, PresetOptions } from './ParamGroups';
 

@@ -14,7 +14,7 @@ import {
   saveWind,
   WIND_LIMITS,
   type WindSettings,
-} from '../viewer/windSettings';
+} from '../../../packages/sylva-trees/src/viewer/windSettings';
 import './WindControls.css';
 
 type NumericKey = 'strength' | 'direction' | 'gust';

@@ -19,8 +19,14 @@ import {
   type Object3D,
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
-import type { Params, TreeBuffers, VolumeGroup, VolumeKind, VolumePrimitive } from '../core/types';
-import { normalizeVolume } from '../core/volumes';
+import type {
+  Params,
+  TreeBuffers,
+  VolumeGroup,
+  VolumeKind,
+  VolumePrimitive,
+} from '../../../packages/sylva-trees/src/core/types';
+import { normalizeVolume } from '../../../packages/sylva-trees/src/core/volumes';
 import type { OverlayHost } from './TreeViewer';
 
 /** Wireframe colour per group (crown green, shadow grey, exclusion red); the params' crown blue. */

@@ -2,13 +2,11 @@
 import { fitToContainer } from './cameraView';
 import {
   Color,
-  DoubleSide,
   Fog,
   LineBasicMaterial,
   LineSegments,
   Mesh,
   MeshLambertMaterial,
-  MeshStandardMaterial,
   CircleGeometry,
   PCFShadowMap,
   PerspectiveCamera,
@@ -16,28 +14,17 @@ import {
   Sphere,
   Vector3,
   WebGLRenderer,
-  type BufferGeometry,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
-import { BarkTextures } from './barkMaterial';
-import { applyBarkLook, createBarkLookUniforms } from './barkLook';
-import { SceneLights, applyLeafTranslucency } from './lighting';
-import { Foliage } from './Foliage';
-import { WindController } from './wind';
+import type { TreeBuffers, TreeUpdate } from '../../../packages/sylva-trees/src/core/types';
+import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
+import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
+import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
 import { hashPixels } from './windDebug';
-import {
-  buildEnvelopeGeometry,
-  buildTreeGeometry,
-  updateShade,
-  updateTreeGeometry,
-} from './geometry';
-import { mergeUpdate, updateOf } from './treeState';
+import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';
-const BARK_COLOR = '#5b3d26';
-const LEAF_COLOR = '#4c8a34';
 const GROUND_COLOR = '#b9b3a5';
 const VIEW_DIRECTION = new Vector3(0.75, 0.32, 1).normalize();
 
@@ -60,25 +47,17 @@ export class TreeViewer {
   private readonly camera = new PerspectiveCamera(40, 1, 0.05, 1000);
   private readonly controls: OrbitControls;
   private readonly lights: SceneLights;
-  private readonly barkLook = createBarkLookUniforms();
   private readonly ground: Mesh<CircleGeometry, MeshLambertMaterial>;
-  private readonly bark = new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 });
-  private readonly leaves = new MeshStandardMaterial({
-    color: LEAF_COLOR,
-    roughness: 0.75,
-    side: DoubleSide,
-  });
   private readonly fog = new Fog(BACKGROUND_COLOR, 10, 40);
-  private tree: Mesh<BufferGeometry, MeshStandardMaterial[]> | null = null;
+  /** The tree's meshes, materials and wind (shared with the `sylva-trees` package). */
+  private readonly tree = new TreeObject(() => this.requestRender());
   private readonly envelope = new LineSegments(
     undefined,
     new LineBasicMaterial({ color: '#2f6fb0', transparent: true, opacity: 0.45 }),
   );
   private readonly resizeObserver: ResizeObserver;
-  private readonly foliage = new Foliage(this.scene);
   /** Wind animation: shared uniforms, clock and settings (see wind.ts). */
-  readonly wind = new WindController(() => this.requestRender());
-  private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
+  readonly wind: WindController = this.tree.wind;
   private frameRequested = false;
   /**
    * Benchmarks only: no frame is drawn while false (trees still arrive and are set up), so a
@@ -88,8 +67,6 @@ export class TreeViewer {
   /** Called with every new tree (the growth overlay reads its markers). */
   private readonly treeListeners = new Set<(buffers: TreeBuffers) => void>();
   private readonly hashListeners = new Set<(hash: string) => void>();
-  /** The whole current tree (session updates are merged into it). */
-  private current: TreeBuffers | null = null;
   private frameId = 0;
   private disposed = false;
 
@@ -131,12 +108,7 @@ export class TreeViewer {
     this.controls.addEventListener('change', () => this.requestRender());
     this.frameBounds(new Sphere(new Vector3(0, 4, 0), 5));
 
-    this.wind.apply(this.bark, 'bark');
-    this.wind.apply(this.leaves, 'bark');
-    this.wind.apply(this.foliage.material, 'leaves');
-    applyBarkLook(this.bark, this.barkLook);
-    applyLeafTranslucency(this.foliage.material);
-    this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
+    this.scene.add(this.tree.group);
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
@@ -145,8 +117,8 @@ export class TreeViewer {
 
   /** Shows a whole new tree (every array given); optionally re-frames the camera. */
   setTree(buffers: TreeBuffers, frame: boolean): void {
-    this.current = null;
-    this.apply(updateOf(buffers), frame);
+    this.tree.setTree(buffers);
+    this.afterTree(buffers, true, frame);
   }
 
   /**
@@ -155,45 +127,27 @@ export class TreeViewer {
    * disposed. Optionally re-frames the camera. Returns the whole current tree.
    */
   apply(update: TreeUpdate, frame: boolean): TreeBuffers {
-    const buffers = mergeUpdate(this.current, update);
-    this.current = buffers;
-    if (update.bark) this.setBark(update.bark, buffers);
-    if (update.shade && this.tree) updateShade(this.tree.geometry, update.shade);
-    if (update.envelope) {
+    const buffers = this.tree.apply(update);
+    this.afterTree(buffers, update.envelope !== undefined, frame);
+    return buffers;
+  }
+
+  private afterTree(buffers: TreeBuffers, newEnvelope: boolean, frame: boolean): void {
+    if (newEnvelope) {
       this.envelope.geometry.dispose();
-      this.envelope.geometry = buildEnvelopeGeometry(update.envelope);
+      this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
     }
-    this.foliage.update(update);
-    const geometry = this.tree?.geometry;
-    this.wind.setTree(buffers.meta.bounds, geometry?.hasAttribute('windPivot') ?? false);
-    if (update.barkTextures) this.barkTextures.set(update.barkTextures);
     for (const listener of this.treeListeners) listener(buffers);
-    const sphere = geometry?.boundingSphere ?? new Sphere(new Vector3(), 1);
+    const sphere = this.tree.boundingSphere;
     this.fitStage(sphere);
     if (frame) this.frameBounds(sphere);
     this.requestRender();
-    return buffers;
   }
 
   /** The content hash of the current tree arrived (it follows the buffers). */
   setHash(hash: string): void {
-    if (this.current) this.current.meta = { ...this.current.meta, hash };
+    this.tree.setHash(hash);
     for (const listener of this.hashListeners) listener(hash);
-  }
-
-  private setBark(bark: BarkBuffers, buffers: TreeBuffers): void {
-    if (this.tree && updateTreeGeometry(this.tree.geometry, bark, buffers.meta)) return;
-    const geometry = buildTreeGeometry(buffers);
-    if (this.tree) {
-      this.tree.geometry.dispose();
-      this.tree.geometry = geometry;
-    } else {
-      this.tree = new Mesh(geometry, [this.bark, this.leaves]);
-      this.tree.castShadow = true;
-      this.tree.receiveShadow = true;
-      this.tree.customDepthMaterial = this.wind.depthMaterial('bark');
-      this.scene.add(this.tree);
-    }
   }
 
   /**
@@ -246,7 +200,7 @@ export class TreeViewer {
 
   /** Number of leaves drawn (for tests). */
   get leafCount(): number {
-    return this.foliage.count;
+    return this.tree.leafCount;
   }
 
   /** Geometries alive on the GPU (`renderer.info.memory.geometries`; debug hook, leak tests). */
@@ -261,8 +215,7 @@ export class TreeViewer {
 
   /** Points the camera at the current tree's bounds. */
   frame(): void {
-    const sphere = this.tree?.geometry.boundingSphere;
-    if (sphere) this.frameBounds(sphere);
+    if (this.tree.barkMesh) this.frameBounds(this.tree.boundingSphere);
   }
 
   /** Releases every GPU resource and removes the canvas. */
@@ -270,15 +223,10 @@ export class TreeViewer {
     this.disposed = true;
     this.resizeObserver.disconnect();
     this.controls.dispose();
-    this.tree?.geometry.dispose();
-    this.foliage.dispose();
+    this.tree.dispose();
     this.envelope.geometry.dispose();
     this.envelope.material.dispose();
-    this.wind.dispose();
-    this.barkTextures.dispose();
     this.lights.dispose();
-    this.bark.dispose();
-    this.leaves.dispose();
     this.ground.geometry.dispose();
     this.ground.material.dispose();
     this.renderer.dispose();
@@ -336,7 +284,7 @@ export class TreeViewer {
 
   /** Size of the bark colour map, null before the worker sent it (debug hook). */
   get barkTexture(): { width: number; height: number } | null {
-    return this.barkTextures.size;
+    return this.tree.barkTexture;
   }
 
   private requestRender(): void {

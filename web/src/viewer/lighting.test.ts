@@ -9,7 +9,7 @@ import {
   applyLeafTranslucency,
   impostorLights,
   skyMaterial,
-} from './lighting';
+} from '../../../packages/sylva-trees/src/viewer/lighting';
 
 describe('lighting', () => {
   it('is one definition: the impostor lights with the viewer sun', () => {

@@ -2,8 +2,12 @@
 import { describe, expect, it } from 'vitest';
 import { LeafClient } from '../leaf/leafClient';
 import { LodClient, SUPERSEDED } from '../lod/lodClient';
-import type { LodBuffers } from '../lod/types';
-import type { GeneratorWorkerFactory, WorkerRequest, WorkerResponse } from './protocol';
+import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
+import type {
+  GeneratorWorkerFactory,
+  WorkerRequest,
+  WorkerResponse,
+} from '../../../packages/sylva-trees/src/worker/protocol';
 
 function fakes() {
   const workers: { posted: WorkerRequest[]; emit: (r: WorkerResponse) => void }[] = [];

@@ -3,6 +3,7 @@ import init, * as wasm from '../wasm/sylva_wasm.js';
 import { DEBUG_WORKER_NAME, type DebugRequest, type DebugResponse } from './debug';
 import { createHandler, readyMessage, type HandlerPost } from './handler';
 import type { WorkerRequest, WorkerResponse } from './protocol';
+import { wasmUrl } from '../runtime/urls';
 
 /** The parts of the dedicated-worker global scope this file uses. */
 interface WorkerScope {
@@ -16,7 +17,7 @@ const scope = self as unknown as WorkerScope;
 const post: HandlerPost = (message, transfer) => scope.postMessage(message, transfer);
 const debug = scope.name === DEBUG_WORKER_NAME;
 
-const handlerPromise = init()
+const handlerPromise = init({ module_or_path: wasmUrl() })
   .then(() => {
     // The default tree is generated before anyone asks (while the page loads three.js and
     // React): the module's code is compiled and warm, and a first request for the default tree
