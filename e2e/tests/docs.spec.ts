@@ -1,4 +1,7 @@
-/** The docs page: every registry parameter with its default and range, embedding and the CLI. */
+/**
+ * The docs page: every registry parameter with its default and range, embedding, the npm package
+ * and the CLI.
+ */
 import { expect, test } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -80,7 +83,9 @@ test('every parameter appears with label, description, default and range', async
   expect(errors).toEqual([]);
 });
 
-test('embedding and command-line sections, reachable from the contents', async ({ page }) => {
+test('embedding, package and command-line sections, reachable from the contents', async ({
+  page,
+}) => {
   await page.goto('/docs.html#embedding');
   const embedding = page.getByTestId('docs-embedding');
   await expect(embedding).toBeInViewport();
@@ -97,6 +102,14 @@ test('embedding and command-line sections, reachable from the contents', async (
   const options = page.getByTestId('docs-embed-options');
   await expect(options).toContainText('autorotate');
   await expect(options).toContainText('transparent');
+
+  // The npm package, for a tree in the reader's own three.js scene.
+  await page.getByRole('link', { name: 'In your own three.js scene' }).click();
+  const library = page.getByTestId('docs-library');
+  await expect(library).toBeInViewport();
+  await expect(library).toContainText('npm install sylva-trees three');
+  await expect(library).toContainText("await SylvaTree.create({ preset: 'quaking_aspen'");
+  await expect(page.getByTestId('docs-library-api').locator('tr')).toHaveCount(10);
 
   // The CLI section comes from the generated reference (`sylva cli-reference --json`, checked
   // against the binary by a Rust test): every command, synopsis, option and example is shown.

@@ -1,12 +1,13 @@
 /**
  * The docs page: the parameter reference (from the registry, like the panel), presets, share
- * links, embedding, export and the command line (from the CLI's generated reference). All text
+ * links, embedding, the npm package, export and the command line (from the CLI's generated reference). All text
  * is rendered as text.
  */
 import { useEffect } from 'react';
 import { CliSection } from './CliSection';
 import { Contents, ParameterSection, PresetSection, Section } from './DocsParts';
 import { EmbeddingSection } from './EmbeddingSection';
+import { LibrarySection } from './LibrarySection';
 import type { DocsModel } from './model';
 
 interface Props {
@@ -50,6 +51,7 @@ export function DocsPage({ model, version, pageHref }: Props) {
         </Section>
 
         <EmbeddingSection pageHref={pageHref} />
+        <LibrarySection />
 
         <Section id="export" title="Export">
           <p>
@@ -66,11 +68,19 @@ export function DocsPage({ model, version, pageHref }: Props) {
               message and the current tree stays.
             </li>
             <li>
-              <strong>GLB</strong> (glTF 2.0 binary: bark and instanced leaves, PBR materials,
-              embedded textures, wind attributes) and <strong>OBJ + MTL + textures</strong> (one
-              zip; leaves baked into the mesh): written by the core&apos;s exporters, the same as{' '}
-              <code>sylva generate --out</code>, from the current parameters in a separate worker
-              (the view stays responsive). They are offered when the loaded core has the exporters.
+              <strong>GLB for engines</strong> (glTF 2.0 binary: bark and instanced leaves, PBR
+              materials, embedded textures, wind attributes): for three.js, Unity, Unreal and Godot.
+            </li>
+            <li>
+              <strong>GLB for Blender and other editors</strong>: the same, with the leaves merged
+              into one mesh (their tint and wind kept as vertex attributes), so an editor imports
+              one object instead of one per leaf.
+            </li>
+            <li>
+              <strong>OBJ + MTL + textures</strong> (one compressed zip; leaves baked into the
+              mesh). All three are written by the core&apos;s exporters in a separate worker (the
+              view stays responsive), the same bytes as <code>sylva generate --out</code> (
+              <code>--leaves baked</code> for the editors&apos; GLB).
             </li>
           </ul>
         </Section>

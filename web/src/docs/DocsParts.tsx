@@ -73,6 +73,9 @@ export function Contents({ model }: { model: DocsModel }) {
           <a href="#embedding">Embedding</a>
         </li>
         <li>
+          <a href="#library">In your own three.js scene</a>
+        </li>
+        <li>
           <a href="#export">Export</a>
         </li>
         <li>
