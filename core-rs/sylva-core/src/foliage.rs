@@ -241,6 +241,16 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
 /// [`place`], also returning the leaves' light field ([`crate::crown_shade`], `None` for a bare
 /// tree), which has darkened their tints and shades the bark ([`crate::mesh::shade`]).
 pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
+    place_lit_by(skeleton, p, None)
+}
+
+/// [`place_lit`], darkening the tints by `field` (a field of other leaves, for a preview while
+/// dragging) instead of one built from these leaves when it is given; returns the field used.
+pub fn place_lit_by(
+    skeleton: &Skeleton,
+    p: &TreeParams,
+    field: Option<&CrownLight>,
+) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
     let spans = spans(skeleton, p);
     let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
     let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
@@ -304,7 +314,7 @@ pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option
         }
     }
     // Inner leaves see less sky: the crown-depth term multiplies into the tints.
-    let light = CrownLight::from_leaves(&matrices);
+    let light = field.cloned().or_else(|| CrownLight::from_leaves(&matrices));
     crate::crown_shade::darken_with(light.as_ref(), &matrices, &mut colors);
     Ok((Foliage { matrices, colors, ..bare }, light))
 }

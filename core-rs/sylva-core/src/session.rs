@@ -17,9 +17,11 @@
 //!
 //! **Preview.** While a slider is dragged the caller may allow a [`Quality::Preview`]: when the
 //! bark would take longer than the budget (judged by the last full run), the bark is swept at a
-//! lower Mesh Quality without welds or holes and marked as a preview; the skeleton, placements
-//! and leaf are always full and cached. The next [`Quality::Full`] update with the same
-//! parameters sweeps the full bark and nothing else.
+//! lower Mesh Quality without welds or holes and marked as a preview; when placing the leaves
+//! would take over half the budget, the new leaves are darkened by the previous leaves' light
+//! field ([`crate::crown_shade`]) instead of their own. The skeleton and the leaf are always full
+//! and cached. The next [`Quality::Full`] update with the same parameters redoes only what was
+//! previewed (the bark, the leaf tints and the bark's occlusion).
 //!
 //! **Hash.** The content hash ([`Session::hash`]) is computed on demand, after the buffers went
 //! out, and only describes a full result.
@@ -129,6 +131,8 @@ pub struct Current {
     pub foliage: Foliage,
     /// The leaves' light field (it darkened their tints and shades the bark); `None` when bare.
     pub light: Option<CrownLight>,
+    /// The leaf tints are darkened by the previous leaves' light field (a drag), not their own.
+    pub lit_by_previous: bool,
     /// What the last update changed.
     pub changes: Changes,
     /// Stage times of the last update.
@@ -140,7 +144,7 @@ pub struct Current {
 impl Current {
     /// Whether this is a preview: a preview bark, or a bark shaded for the previous leaves.
     pub fn is_preview(&self) -> bool {
-        self.bark.preview || self.bark.shade_stale
+        self.bark.preview || self.bark.shade_stale || self.lit_by_previous
     }
 
     /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
@@ -173,6 +177,8 @@ struct Fresh {
     skeleton: Option<SkeletonOut>,
     bark: Option<Bark>,
     placements: Option<(Foliage, Option<CrownLight>)>,
+    /// [`Current::lit_by_previous`] of the result.
+    lit_by_previous: bool,
     leaf: Option<LeafMesh>,
     /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
     shade: Option<Vec<u8>>,
@@ -214,6 +220,7 @@ impl Fresh {
             bark,
             foliage,
             light,
+            lit_by_previous: self.lit_by_previous,
             changes: self.changes,
             times: self.times,
             from: self.from,
@@ -229,6 +236,9 @@ pub struct Session {
     last_full_mesh_ms: Option<f64>,
     /// Time of the last bark occlusion (ms): a drag defers it when it is over half its budget.
     last_shade_ms: Option<f64>,
+    /// Time of the last leaf placement with its own light field (ms): a drag lights the new
+    /// leaves by the previous field when it is over half the budget.
+    last_place_ms: Option<f64>,
 }
 
 /// The first stage whose parameters differ between `a` and `b` (`Viewer` when only viewer
@@ -265,6 +275,7 @@ impl Session {
         self.current = None;
         self.last_full_mesh_ms = None;
         self.last_shade_ms = None;
+        self.last_place_ms = None;
     }
 
     /// Brings the tree to `params`, rerunning from the first stage that changed. On an error
@@ -324,22 +335,42 @@ impl Session {
             self.last_full_mesh_ms = Some(times.mesh);
         }
 
-        let placements = (from <= Stage::Foliage).then(|| foliage::place_lit(&skel.skeleton, p)).transpose()?;
+        // Placed again when their inputs changed, or when their tints were lit by the previous
+        // leaves (a drag) and a full answer is wanted.
+        let over = |last: Option<f64>| match quality {
+            Quality::Preview { budget_ms } => last.is_some_and(|ms| ms > budget_ms / 2.0),
+            Quality::Full => false,
+        };
+        let by_previous = over(self.last_place_ms).then(|| prev.and_then(|c| c.light.as_ref())).flatten();
+        let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.lit_by_previous && by_previous.is_none());
+        let placements = if place_stale {
+            let t = clock.now_ms();
+            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous)?;
+            if by_previous.is_none() {
+                self.last_place_ms = Some(clock.now_ms() - t);
+            }
+            Some(placed)
+        } else {
+            None
+        };
+        let lit_by_previous = match placements {
+            Some(_) => by_previous.is_some(),
+            None => prev.is_some_and(|c| c.lit_by_previous),
+        };
         let (placed, light) = match (&placements, prev) {
             (Some((f, l)), _) => (f, l.as_ref()),
             (None, Some(c)) => (&c.foliage, c.light.as_ref()),
             (None, None) => unreachable!("a first update places the leaves"),
         };
-        let leaf = (from <= Stage::Leaf).then(|| foliage::leaf_mesh(placed.count(), p)).transpose()?;
+        // New placements come without the leaf mesh: it is dressed again (the leaf is cached).
+        let leaf =
+            (from <= Stage::Leaf || placements.is_some()).then(|| foliage::leaf_mesh(placed.count(), p)).transpose()?;
         // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
         // A preview bark goes without it; a drag of the leaves keeps the old one meanwhile
         // (a preview) when computing it would take over half the budget.
         let b = bark.as_ref().or(prev.map(|c| &c.bark)).expect("a first update sweeps the bark");
         let stale = bark.is_none() && prev.is_some_and(|c| c.bark.shade_stale);
-        let defer = match quality {
-            Quality::Preview { budget_ms } => self.last_shade_ms.is_some_and(|ms| ms > budget_ms / 2.0),
-            Quality::Full => false,
-        };
+        let defer = over(self.last_shade_ms) || lit_by_previous;
         let shade = if b.preview {
             bark.is_some().then(Vec::new)
         } else if bark.is_none() && ((placements.is_none() && !stale) || defer) {
@@ -367,7 +398,19 @@ impl Session {
                 shade: shade.as_ref().is_some_and(|s| *s != c.bark.mesh.shade),
             },
         };
-        Ok(Fresh { params: p.clone(), skeleton, bark, placements, leaf, shade, shade_stale, changes, times, from })
+        Ok(Fresh {
+            params: p.clone(),
+            skeleton,
+            bark,
+            placements,
+            lit_by_previous,
+            leaf,
+            shade,
+            shade_stale,
+            changes,
+            times,
+            from,
+        })
     }
 
     /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),

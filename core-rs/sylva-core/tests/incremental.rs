@@ -153,9 +153,10 @@ fn a_preview_is_never_the_full_tree_and_the_full_one_follows() {
     p.set("foliage_angle", 50.0).unwrap();
     let cur = session.update(&p, drag, &NoClock, None).unwrap();
     assert!(cur.is_preview() && !cur.changes.bark);
-    // The drag ends: the same parameters at full quality sweep the full bark, nothing else.
+    // The drag ends: the same parameters at full quality sweep the full bark and light the
+    // leaves by their own field (the preview lit them by the previous leaves'), nothing else.
     let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
-    assert!(!cur.is_preview() && cur.changes.bark && !cur.changes.skeleton && !cur.changes.placements);
+    assert!(!cur.is_preview() && cur.changes.bark && !cur.changes.skeleton && !cur.lit_by_previous);
     assert!(cur.bark.mesh.vertex_count() > preview_vertices, "the preview is coarser");
     assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
     // With a generous budget the answer is full even when a preview is allowed.
@@ -201,8 +202,35 @@ fn a_leaf_drag_defers_the_bark_shade_and_the_full_tree_catches_up() {
     // Another step of the drag: still deferred.
     p.set("foliage_angle", 31.0).unwrap();
     assert!(session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap().is_preview());
-    // Released: the same parameters at full quality shade the bark for the new leaves, nothing else.
+    // Released: the same parameters at full quality light the leaves by their own field and
+    // shade the bark for them; the bark is not swept again.
     let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
-    assert!(!cur.is_preview() && cur.changes.shade && !cur.changes.placements && !cur.changes.bark);
+    assert!(!cur.is_preview() && cur.changes.shade && !cur.changes.bark && !cur.lit_by_previous);
     assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
+}
+
+#[test]
+fn a_drag_lights_the_new_leaves_by_the_previous_field_and_the_release_relights_them() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    // Over the budget (-1 ms): the leaves move, their tints come from the old crown's field.
+    p.set("l1_length", 0.36).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
+    assert!(cur.is_preview() && cur.lit_by_previous && cur.changes.placements);
+    let preview = cur.foliage.clone();
+    assert_eq!(session.hash(), None, "a preview has no content hash");
+    // A leaf-shape step of the same drag keeps the previewed placements.
+    p.set("leaf_teeth", 9.0).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
+    assert!(cur.lit_by_previous && !cur.changes.placements);
+    // Within the budget the same parameters are placed and lit in full, the cold tree's bytes.
+    let cur = session.update(&p, Quality::Preview { budget_ms: 1e9 }, &NoClock, None).unwrap();
+    assert!(!cur.is_preview() && cur.changes.placements && !cur.changes.skeleton);
+    let cold = generate(&p).unwrap();
+    assert_eq!(cur.foliage.matrices, preview.matrices, "a preview places the leaves where they belong");
+    assert_eq!(cur.foliage.matrices, cold.foliage.matrices);
+    assert_eq!(cur.foliage.colors, cold.foliage.colors);
+    assert_ne!(preview.colors, cold.foliage.colors, "the preview's tints came from the old crown");
+    assert_eq!(session.hash(), Some(cold.hash));
 }

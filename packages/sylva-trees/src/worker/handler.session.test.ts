@@ -102,9 +102,13 @@ describe('session generation in the worker', () => {
     const full = sent.at(-2);
     if (full?.type !== 'result') throw new Error(JSON.stringify(full));
     expect(full.meta.preview).toBe(false);
-    // Only the bark is swept again (with its occlusion, which a preview goes without): the
-    // skeleton and the leaves of the preview were full.
-    expect(parts(full)).toEqual(['bark', 'shade']);
+    // The bark is swept again (with its occlusion, which a preview goes without) and the
+    // leaves' tints are lit by their own crown (the preview's came from the previous one): the
+    // skeleton and the leaf were full, and the leaves keep their places.
+    expect(parts(full)).toEqual(['bark', 'instances', 'shade']);
+    if (!preview.instances || !full.instances) throw new Error('no leaves sent');
+    expect(full.instances.matrices).toEqual(preview.instances.matrices);
+    expect(full.instances.colors).not.toEqual(preview.instances.colors);
     expect(preview.shade).toHaveLength(0);
     expect(full.meta.vertices).toBeGreaterThan(preview.meta.vertices);
     const hashes = sent.filter((m) => m.type === 'hash');
