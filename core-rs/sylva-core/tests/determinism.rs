@@ -10,17 +10,17 @@ const GOLDEN: &[(&str, &str)] = &[
     ("quaking_aspen", "14b7394c730bf1b2"),
     ("black_tupelo", "f152a72d17b516b1"),
     ("weeping_willow", "f8611f674b7856e0"),
-    ("ca_black_oak", "d202f9e41dc65371"),
+    ("ca_black_oak", "631ed84ddec0452c"),
     ("fir", "414fc8ea0ccfea14"),
-    ("oak", "5cadaab2158209f5"),
+    ("oak", "fcd3e9de7bf604c1"),
     ("cypress", "8908eb916eb1c43a"),
     ("umbrella", "b490dcf7ac471bdc"),
-    ("weeping", "9891ddcdce600f43"),
+    ("weeping", "c1b57b19897e03be"),
     ("grown_broadleaf", "654350748d87a769"),
-    ("grown_shrub", "20a9699eda785e36"),
-    ("grown_hedgerow", "123af699956d67df"),
+    ("grown_shrub", "6bfc872f9c669d7b"),
+    ("grown_hedgerow", "f283bda79442a16c"),
     ("grown_beside_wall", "4c09e556bb781e66"),
-    ("grown_bushy", "d5d09bc05200261e"),
+    ("grown_bushy", "922629c143026432"),
 ];
 
 #[test]

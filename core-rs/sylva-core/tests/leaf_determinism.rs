@@ -6,10 +6,10 @@ use sylva_core::leaf::generate;
 use sylva_core::leaf::presets::LEAF_PRESETS;
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("oak", "975def23eb9c5ad5"),
-    ("black_oak", "3f6e25f71e26adac"),
+    ("oak", "289d10c7621bb789"),
+    ("black_oak", "a28dee747ce76287"),
     ("maple", "48d465c12d38349c"),
-    ("birch", "70735c61a9716353"),
+    ("birch", "359f6e9ab4b3df70"),
     ("aspen", "22dee3b7e892a6c3"),
     ("willow", "8250f969fa2c24dd"),
     ("tupelo", "d4024b2675e0d87b"),

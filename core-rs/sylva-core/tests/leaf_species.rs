@@ -73,11 +73,11 @@ fn oak_lobes_sit_along_the_midrib_with_sinuses_halfway_in() {
     // Obovate: the widest lobe is in the upper half.
     let widest = lobes.iter().max_by(|a, b| a.1.total_cmp(&b.1)).unwrap();
     assert!(widest.0 > 0.5, "obovate: widest at y = {}", widest.0);
-    // A new lobe count places that many lobes.
+    // A new lobe count places that many lobes (the lowest, by the narrow base, are small).
     for n in [3, 7, 9] {
         let mut q = p.clone();
         q.leaf_lobes = n;
-        assert_eq!(lobes_along_the_midrib(&outline_of(&q), 0.012).len(), n as usize + 1, "{n} lobes");
+        assert_eq!(lobes_along_the_midrib(&outline_of(&q), 0.008).len(), n as usize + 1, "{n} lobes");
     }
 }
 

@@ -13,9 +13,10 @@
 //!     1 makes it wedge-shaped, above 1 draws it out); `W` = Aspect Ratio / 2;
 //!   * lobes: `φ = (y − y₀) / (1 − y₀) · (n + ½)` counts `n` lobes per side from `y₀` (near the
 //!     petiole) up to a terminal half-lobe at the tip; `u = frac(φ)`, skewed so the apex sits
-//!     at `u_p = ½ + 0.2 · point` (pointed lobes lean toward the tip);
-//!     `g(u) = (1 − point) · sin(πu)^½ + point · tri(u)^1.5` is 1 at a lobe's apex and 0 in a
-//!     sinus; `d` (Sinus Depth) is how far the sinus cuts toward the midrib (0.5 = halfway).
+//!     at `u_p = 0.62 + 0.2 · point` (lobes lean toward the tip, pointed ones more);
+//!     `g(s) = (1 − point) · (1 − cos⁴(πs)) + point · tri(s)^1.5` (`s` the skewed `u`) is 1 at a
+//!     lobe's apex and 0 in a sinus, a rounded lobe over a rounded U sinus; `d` (Sinus Depth)
+//!     is how far the sinus cuts toward the midrib (0.5 = halfway).
 //! * [`Palmate`]: lobes **radiating from the petiole junction** (maple; ginkgo's notched fan
 //!   as two broad lobes), a polar radius `r(θ)` about the junction, `θ = π t` from the tip:
 //!   lobe `k` at angle `α_k` (spread evenly up to ±Lobe Spread; an odd count puts one at the
@@ -36,6 +37,8 @@ use crate::params::TreeParams;
 const PI: f64 = std::f64::consts::PI;
 /// Where the lowest pinnate lobe starts along the midrib.
 const PINNATE_Y0: f64 = 0.04;
+/// A rounded pinnate lobe's apex within its period (½ = upright; above, leaning to the tip).
+const PINNATE_LEAN: f64 = 0.62;
 /// Smooth-maximum exponent joining palmate lobes.
 const SMOOTH_MAX: f64 = 8.0;
 /// The palmate radius never falls below this (the base sinus around the petiole).
@@ -88,9 +91,10 @@ impl Pinnate {
         self.half_width * pw(y, self.p) * pw(1.0 - y, self.q) / self.norm
     }
 
-    /// Apex of a lobe within its period.
+    /// Apex of a lobe within its period: past the middle, so lobes lean toward the tip, and
+    /// more so when pointed.
     fn apex(&self) -> f64 {
-        0.5 + 0.2 * self.point
+        PINNATE_LEAN + 0.2 * self.point
     }
 
     /// Lobe phase at `y`: `None` below the first lobe or without lobes.
@@ -110,7 +114,10 @@ impl Pinnate {
         let up = self.apex();
         // Skew: the apex at `up` maps to the middle of the profile.
         let s = if u < up { 0.5 * u / up } else { 0.5 + 0.5 * (u - up) / (1.0 - up) };
-        let round = libm::sqrt(libm::sin(PI * s).max(0.0));
+        // A rounded lobe over a rounded U sinus: `1 − cos⁴(π s)` is round at the apex and curves
+        // through the sinus's bottom (no slit where two lobes meet).
+        let c2 = libm::cos(PI * s) * libm::cos(PI * s);
+        let round = 1.0 - c2 * c2;
         let tri = pw(1.0 - (2.0 * s - 1.0).abs(), 1.5);
         let g = (1.0 - self.point) * round + self.point * tri;
         1.0 - self.depth * (1.0 - g)

@@ -112,8 +112,14 @@ fn pinnate(p: &TreeParams, o: &Outline, mask: &Mask, step: f32, g: &mut VeinGrap
         for &t in &ts {
             let Some(end) = apex_near(o, side, t, window, |q| q.x.abs()) else { continue };
             let end = end - Vec2::new(sign * 0.012, 0.0);
-            // Into a lobe: reach the lobe's axis inside the sinuses first, then run out along it.
-            let bend = if lobed { Vec2::new(end.x * 0.55 * (1.0 - p.leaf_lobe_depth), end.y - 0.02) } else { end };
+            // Into a lobe: reach the lobe's axis inside the sinuses first, then run out along it,
+            // rising toward the tip as the lobe leans.
+            let bend = if lobed {
+                let x = end.x * 0.55 * (1.0 - p.leaf_lobe_depth);
+                Vec2::new(x, end.y - 0.02 - 0.25 * (end.x - x).abs())
+            } else {
+                end
+            };
             let y0 = (bend.y - bend.x.abs() * cot).clamp(0.02, (0.95 * bend.y).max(0.02));
             let attach = midrib.iter().copied().min_by(|&a, &b| {
                 let d = |i: u32| (g.nodes[i as usize].pos.y - y0).abs();
