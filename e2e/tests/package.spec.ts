@@ -2,7 +2,8 @@
 // or here when missing) installed with three and Vite into a fresh folder outside the repository,
 // the example app (e2e/package-example, the README's API) built with Vite and served, and two
 // trees checked in Chromium: both drawn in one scene, set() changes the hash, dispose() leaves no
-// geometry or texture on the GPU. Prints the tarball size and the time to the first tree.
+// geometry or texture on the GPU. Prints the tarball size and the time to the first tree. Then the
+// same tarball without a bundler: its dist/ and three in a plain page with an import map.
 import { expect, test } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import {
@@ -139,6 +140,61 @@ test('the packed package works in a fresh three.js + Vite app', async ({ page })
     expect(memory.textures).toBeLessThanOrEqual(1);
     // The lights stay; the trees left the scene.
     expect(memory.children).toBe(2);
+    expect(errors).toEqual([]);
+  } finally {
+    await server?.stop();
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('the packed package works without a bundler, through an import map', async ({ page }) => {
+  test.setTimeout(120_000);
+  // As the package README says: the tarball's dist/ copied to the site, three from its build,
+  // both found by an import map in a plain page (e2e/package-importmap); no npm, no Vite.
+  const dir = mkdtempSync(join(tmpdir(), 'sylva-trees-importmap-'));
+  let server: { url: string; stop(): Promise<void> } | null = null;
+  try {
+    cpSync(fileURLToPath(new URL('../package-importmap', import.meta.url)), dir, {
+      recursive: true,
+    });
+    execFileSync('tar', ['xzf', tarball(), '-C', dir]);
+    cpSync(join(dir, 'package', 'dist'), join(dir, 'vendor', 'sylva-trees'), { recursive: true });
+    cpSync(join(root, 'node_modules', 'three', 'build'), join(dir, 'vendor', 'three'), {
+      recursive: true,
+    });
+    server = await serve(await freePort(), { outDir: dir });
+    const errors: string[] = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    await page.goto(server.url);
+    await expect(page.locator('body[data-ready="1"]')).toBeAttached({ timeout: 90_000 });
+    const result = await page.evaluate(
+      () =>
+        (
+          window as unknown as {
+            __importMap: {
+              stats?: { hash: string; leaves: number };
+              presets?: number;
+              error?: string;
+            };
+          }
+        ).__importMap,
+    );
+    expect(result.error).toBeUndefined();
+    expect(result.stats?.hash).toMatch(/^[0-9a-f]{16}$/);
+    expect(result.stats?.leaves).toBeGreaterThan(100);
+    expect(result.presets).toBeGreaterThan(10);
+    // The tree is drawn: many pixels of the white page are not white.
+    const drawn = await page.evaluate(() => {
+      const canvas = document.querySelector('canvas');
+      const gl = canvas?.getContext('webgl2');
+      if (!canvas || !gl) return 0;
+      const px = new Uint8Array(canvas.width * canvas.height * 4);
+      gl.readPixels(0, 0, canvas.width, canvas.height, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      let n = 0;
+      for (let i = 0; i < px.length; i += 4) if (px[i]! + px[i + 1]! + px[i + 2]! < 600) n++;
+      return n;
+    });
+    expect(drawn).toBeGreaterThan(2000);
     expect(errors).toEqual([]);
   } finally {
     await server?.stop();
