@@ -9,6 +9,7 @@
  */
 import { fitToContainer } from '../viewer/cameraView';
 import type { Sphere, InstancedMesh } from 'three';
+import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
 import { impostorLights, SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import {
   Color,
@@ -196,6 +197,7 @@ export class ForestScene {
         roughness: 0.7,
       }),
     );
+    applyLeafCoverage(leaves);
     const parts: Variety['parts'] = [];
     for (let l = 0; l < 3; l++) {
       const level = lods.levels[l]!;

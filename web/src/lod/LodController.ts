@@ -5,6 +5,7 @@
  * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
  * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
  */
+import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
 import {
   BufferAttribute,
   BufferGeometry,
@@ -297,13 +298,15 @@ export class LodController {
   }
 
   private fallbackLeafMaterial(): MeshStandardMaterial {
-    return new MeshStandardMaterial({
+    const material = new MeshStandardMaterial({
       color: '#ffffff',
       map: this.leafMap,
       alphaTest: 0.5,
       side: DoubleSide,
       roughness: 0.7,
     });
+    applyLeafCoverage(material);
+    return material;
   }
 
   /** The viewer's own bark or leaf material, so the levels look like LOD0 (and follow it). */

@@ -20,6 +20,7 @@ import { BarkTextures, createBarkMaterial } from './barkMaterial';
 import { applyBarkLook, createBarkLookUniforms } from './barkLook';
 import { Foliage } from './Foliage';
 import { buildTreeGeometry, updateShade, updateTreeGeometry } from './geometry';
+import { applyLeafCoverage } from './leafCoverage';
 import { applyLeafTranslucency } from './lighting';
 import { mergeUpdate, updateOf } from './treeState';
 import { WindController } from './wind';
@@ -55,6 +56,7 @@ export class TreeObject {
     this.wind.apply(this.foliage.material, 'leaves');
     applyBarkLook(this.bark, this.barkLook);
     applyLeafTranslucency(this.foliage.material);
+    applyLeafCoverage(this.foliage.material);
     this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
   }
 
