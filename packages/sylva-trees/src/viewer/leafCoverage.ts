@@ -9,30 +9,22 @@
  * changes.
  */
 import type { Material } from 'three';
+import { chainFragmentPatch } from './fragmentPatch';
 import leafCoverage from './shaders/leafCoverage.frag.glsl?raw';
 
 /** Alpha gain per mip level (`s` above). */
 export const LEAF_MIP_ALPHA_SCALE = 0.25;
-
-const MARKER = '// sylva-leaf-coverage';
 
 /**
  * Adds the mip-scaled alpha to an alpha-tested, texture-mapped material (after any earlier
  * patch: wind, translucency). Materials without a map are unchanged.
  */
 export function applyLeafCoverage(material: Material): void {
-  const previous = material.onBeforeCompile.bind(material);
-  const previousKey = material.customProgramCacheKey.bind(material);
-  material.onBeforeCompile = (shader, renderer) => {
-    previous(shader, renderer);
-    if (shader.fragmentShader.includes(MARKER)) return;
-    const at = '#include <map_fragment>';
-    if (!shader.fragmentShader.includes(at)) throw new Error('leaf coverage: no <map_fragment>');
-    shader.fragmentShader = shader.fragmentShader
-      .replace('#include <common>', `#include <common>\n${MARKER}\nuniform float uLeafMipAlphaScale;`)
-      .replace(at, `${at}\n${leafCoverage}`);
-    shader.uniforms.uLeafMipAlphaScale = { value: LEAF_MIP_ALPHA_SCALE };
-  };
-  material.customProgramCacheKey = () => `${previousKey()}-sylva-leaf-coverage`;
-  material.needsUpdate = true;
+  chainFragmentPatch(material, {
+    key: 'sylva-leaf-coverage',
+    at: '#include <map_fragment>',
+    where: 'after',
+    code: leafCoverage,
+    uniforms: { uLeafMipAlphaScale: LEAF_MIP_ALPHA_SCALE },
+  });
 }

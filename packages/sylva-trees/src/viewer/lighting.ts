@@ -22,6 +22,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
+import { chainFragmentPatch } from './fragmentPatch';
 import leafTranslucency from './shaders/leafTranslucency.frag.glsl?raw';
 import skyFrag from './shaders/sky.frag.glsl?raw';
 import skyVert from './shaders/sky.vert.glsl?raw';
@@ -142,26 +143,13 @@ export function impostorLights(): ImpostorLights {
   };
 }
 
-const TRANSLUCENCY_MARKER = '// sylva-leaf-translucency';
-
 /** Adds leaf translucency to a (double-sided) MeshStandardMaterial, after any earlier patch. */
 export function applyLeafTranslucency(material: Material): void {
-  const previous = material.onBeforeCompile.bind(material);
-  const previousKey = material.customProgramCacheKey.bind(material);
-  material.onBeforeCompile = (shader, renderer) => {
-    previous(shader, renderer);
-    if (shader.fragmentShader.includes(TRANSLUCENCY_MARKER)) return;
-    const at = '#include <aomap_fragment>';
-    if (!shader.fragmentShader.includes(at))
-      throw new Error('leaf translucency: no <aomap_fragment>');
-    shader.fragmentShader = shader.fragmentShader
-      .replace(
-        '#include <common>',
-        `#include <common>\n${TRANSLUCENCY_MARKER}\nuniform float uLeafTranslucency;`,
-      )
-      .replace(at, `${leafTranslucency}\n${at}`);
-    shader.uniforms.uLeafTranslucency = { value: LEAF_TRANSLUCENCY };
-  };
-  material.customProgramCacheKey = () => `${previousKey()}-sylva-leaf-light`;
-  material.needsUpdate = true;
+  chainFragmentPatch(material, {
+    key: 'sylva-leaf-light',
+    at: '#include <aomap_fragment>',
+    where: 'before',
+    code: leafTranslucency,
+    uniforms: { uLeafTranslucency: LEAF_TRANSLUCENCY },
+  });
 }
