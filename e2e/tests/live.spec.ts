@@ -106,20 +106,20 @@ test('leaf edits update the leaves in place; viewer-only edits regenerate nothin
     const setValue = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value')?.set;
     if (!input || !setValue) throw new Error('no slider');
     const before = drawnGeometries();
-    // Every answer from here on: a drag's preview is followed by the full tree once the input
-    // rests, which the tree count below must not mistake for the viewer-only edit's doing.
-    const previews: boolean[] = [];
-    addEventListener('sylva:applied', (e) => {
-      previews.push((e as CustomEvent<{ preview?: boolean }>).detail.preview === true);
-    });
+    // Answers since the last input: its own, then the full tree the scheduler asks for once the
+    // input rests (the settle, 150 ms later), which the tree count below must not mistake for
+    // the viewer-only edit's doing.
+    let answers = 0;
+    addEventListener('sylva:applied', () => answers++);
     for (let i = 1; i <= 5; i++) {
       const answered = new Promise((r) => addEventListener('sylva:applied', r, { once: true }));
+      answers = 0;
       setValue.call(input, String(40 + i));
       input.dispatchEvent(new Event('input', { bubbles: true }));
       await answered;
       await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
     }
-    while (previews.at(-1) !== false) await new Promise((r) => setTimeout(r, 50));
+    while (answers < 2) await new Promise((r) => setTimeout(r, 50));
     const after = drawnGeometries();
     const trees = hook.trees().length;
     const check = document.querySelector<HTMLInputElement>(
