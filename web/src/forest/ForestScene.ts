@@ -7,6 +7,7 @@
  * uploaded and `.count` set, so the number of draw calls is bounded by
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
+import { leafTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
 import { fitToContainer } from '../viewer/cameraView';
 import type { Sphere, InstancedMesh } from 'three';
 import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
@@ -42,7 +43,6 @@ import {
   cloudGeometry,
   cloudMaterial,
   clumpTexture,
-  leafTexture,
   mergedLeafGeometry,
   treeSphere,
 } from '../lod/lodObjects';

@@ -5,6 +5,7 @@
  * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
  * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
  */
+import { leafTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
 import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
 import {
   BufferAttribute,
@@ -40,7 +41,6 @@ import {
   clumpTexture,
   leafGeometry,
   leafMesh,
-  leafTexture,
   treeSphere,
 } from './lodObjects';
 import { IMPOSTOR_LEVEL, screenFraction, selectLod } from './selection';

@@ -11,16 +11,10 @@ import {
   BufferAttribute,
   BufferGeometry,
   Color,
-  DataTexture,
   FrontSide,
-  LinearFilter,
-  LinearMipmapLinearFilter,
   Mesh,
   MeshStandardMaterial,
-  RGBAFormat,
-  SRGBColorSpace,
   Sphere,
-  UnsignedByteType,
   Vector3,
   type Material,
   type Texture,
@@ -35,6 +29,7 @@ import {
 } from '../../../packages/sylva-trees/src/lod/types';
 import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 import { LEAF_TRANSLUCENCY } from '../../../packages/sylva-trees/src/viewer/Foliage';
+import { srgbTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';
@@ -248,22 +243,6 @@ function coloredGeometry(
   g.setIndex(new BufferAttribute(indices, 1));
   g.computeBoundingSphere();
   return g;
-}
-
-/** The leaf texture as a three.js texture (sRGB, mipmapped). */
-export function leafTexture(buffers: LeafTextureBuffers): DataTexture {
-  return srgbTexture(buffers.rgba, buffers.width, buffers.height);
-}
-
-/** RGBA bytes as an sRGB, mipmapped three.js texture. */
-function srgbTexture(rgba: Uint8Array | Uint8ClampedArray, width: number, height: number) {
-  const t = new DataTexture(rgba, width, height, RGBAFormat, UnsignedByteType);
-  t.colorSpace = SRGBColorSpace;
-  t.magFilter = LinearFilter;
-  t.minFilter = LinearMipmapLinearFilter;
-  t.generateMipmaps = true;
-  t.needsUpdate = true;
-  return t;
 }
 
 /**

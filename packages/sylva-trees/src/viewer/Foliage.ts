@@ -5,18 +5,12 @@
  * texture with an alpha test, plus a dim emissive copy of it standing in for light shining
  * through the blade from behind.
  */
-import type { InstancedMesh } from 'three';
+import type { DataTexture, InstancedMesh } from 'three';
 import {
   BufferAttribute,
   BufferGeometry,
-  DataTexture,
   DoubleSide,
-  LinearFilter,
-  LinearMipmapLinearFilter,
   MeshStandardMaterial,
-  RGBAFormat,
-  SRGBColorSpace,
-  UnsignedByteType,
   type Material,
   type Object3D,
 } from 'three';
@@ -27,6 +21,7 @@ import type {
   TreeUpdate,
 } from '../core/types';
 import { wrapInstances } from './instances';
+import { leafTexture as makeLeafTexture } from './leafTexture';
 
 type Instances = NonNullable<TreeUpdate['instances']>;
 
@@ -133,14 +128,7 @@ export class Foliage {
 
   private setTexture(leafTexture: LeafTextureBuffers): void {
     this.texture?.dispose();
-    const { width, height, rgba } = leafTexture;
-    const texture = new DataTexture(rgba, width, height, RGBAFormat, UnsignedByteType);
-    texture.colorSpace = SRGBColorSpace;
-    texture.magFilter = LinearFilter;
-    texture.minFilter = LinearMipmapLinearFilter;
-    texture.generateMipmaps = true;
-    texture.flipY = false;
-    texture.needsUpdate = true;
+    const texture = makeLeafTexture(leafTexture);
     this.texture = texture;
     this.material.map = texture;
     this.material.emissiveMap = texture;
