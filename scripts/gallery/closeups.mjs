@@ -82,6 +82,12 @@ export const closeupsSection = {
       add(add(t, add(p, t, -1), 0.3), [0, 1, 0], 0.1 * t[1]),
     );
     await shot('leaves.png', 'A leaf cluster on the Oak: crown-depth shading, translucency');
+    // Conifer shoots on the fir's lower crown, from just outside it: needles in two flat ranks.
+    const firCam = await ctx.open(preset('fir'));
+    const [fp, ft] = [firCam.position, firCam.target];
+    const low = [ft[0], 0.55 * ft[1], ft[2]];
+    await ctx.view(add(low, add(fp, ft, -1), 0.16), add(low, add(fp, ft, -1), 0.06));
+    await shot('needles.png', 'Fir shoots from just outside the crown: needles in two flat ranks');
     return shots;
   },
 };

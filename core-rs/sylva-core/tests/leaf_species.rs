@@ -231,6 +231,7 @@ fn pine_needles_come_in_fascicles_of_round_needles() {
     for n in 2..=5u32 {
         let mut p = preset("pine");
         p.leaf_fascicle = n;
+        p.leaf_shoot = 0; // one fascicle (the shoot of them is tested below)
         let l = generate(&p).unwrap();
         check_mesh("pine", &l);
         let pos: Vec<glam::Vec3> =
@@ -320,7 +321,7 @@ fn tree_presets_wear_their_own_leaves() {
     for (name, leaf) in [
         ("quaking_aspen", "aspen"),
         ("fir", "fir"),
-        ("cypress", "fir"),
+        ("cypress", "cypress"),
         ("oak", "oak"),
         ("ca_black_oak", "black_oak"),
         ("weeping_willow", "willow"),
@@ -360,4 +361,83 @@ fn regression_every_leaf_parameter_at_its_bounds_on_every_species() {
             }
         }
     }
+}
+
+fn positions(l: &Leaf) -> Vec<glam::Vec3> {
+    l.mesh.positions.chunks_exact(3).map(|c| glam::Vec3::new(c[0], c[1], c[2])).collect()
+}
+
+fn centroid(poly: &[Vec2]) -> Vec2 {
+    poly.iter().copied().sum::<Vec2>() / poly.len() as f32
+}
+
+#[test]
+fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
+    // Fir: 40 single flat needles in two ranks, alternately left and right of the twig, in a
+    // shallow V (close to the leaf plane).
+    let p = preset("fir");
+    let fir = generate(&p).unwrap();
+    check_mesh("fir shoot", &fir);
+    assert_eq!(fir.shoot.len(), 40);
+    let mut single = p.clone();
+    single.leaf_shoot = 0;
+    single.leaf_petiole = 0.0;
+    let needle = generate(&single).unwrap();
+    // Every needle is the single needle's blade, plus the twig's and the stalk's quads.
+    assert_eq!(fir.mesh.triangle_count(), 40 * needle.mesh.triangle_count() + 2 + 2);
+    for (i, n) in fir.shoot.iter().enumerate() {
+        let side = centroid(n).x;
+        assert!(if i % 2 == 0 { side > 0.02 } else { side < -0.02 }, "needle {i} on its rank: {side}");
+    }
+    let fir_pos = positions(&fir);
+    let depth = |pos: &[glam::Vec3]| pos.iter().map(|q| q.z.abs()).fold(0.0f32, f32::max);
+    assert!(depth(&fir_pos) < 0.5 * p.leaf_shoot_needle, "flat: {}", depth(&fir_pos));
+    // Needles reach from the base to past the tip, along the whole twig.
+    let ys: Vec<f32> = fir.shoot.iter().map(|n| centroid(n).y).collect();
+    assert!(ys.iter().copied().fold(f32::MAX, f32::min) < 0.15 && ys.iter().copied().fold(0.0, f32::max) > 0.9);
+
+    // Pine: 30 fascicles of two round needles all around the twig: the needles stand out in
+    // front of and behind the leaf plane as far as to its sides.
+    let p = preset("pine");
+    let pine = generate(&p).unwrap();
+    check_mesh("pine shoot", &pine);
+    assert_eq!(pine.shoot.len(), 30 * 2, "two outlines per fascicle");
+    let pos = positions(&pine);
+    let reach = p.leaf_shoot_needle * p.leaf_shoot_angle.to_radians().sin();
+    let front = pos.iter().map(|q| q.z).fold(f32::MIN, f32::max);
+    let back = pos.iter().map(|q| q.z).fold(f32::MAX, f32::min);
+    assert!(front > 0.6 * reach && back < -0.6 * reach, "all around: z {back}..{front}, reach {reach}");
+
+    // The baked texture: a brown twig along the middle, green needles either side, and the
+    // needles cover a good share of the box (the mass a far conifer needs).
+    for (name, l) in [("fir", &fir), ("pine", &pine)] {
+        let t = &l.texture;
+        let texel = |x: f32, y: f32| {
+            let uv = l.uv_frame.uv(Vec2::new(x, y));
+            let (i, j) = ((uv.x * t.width as f32) as usize, (uv.y * t.height as f32) as usize);
+            let k = 4 * (j.min(t.height as usize - 1) * t.width as usize + i.min(t.width as usize - 1));
+            [t.color[k], t.color[k + 1], t.color[k + 2], t.color[k + 3]]
+        };
+        let twig = texel(0.0, -0.5 * p.leaf_petiole.max(0.02));
+        assert!(twig[3] == 255 && twig[0] > twig[1], "{name}: brown twig {twig:?}");
+        let inside = t.color.chunks_exact(4).filter(|c| c[3] == 255).collect::<Vec<_>>();
+        let green = inside.iter().filter(|c| c[1] > c[0] && c[1] > c[2]).count();
+        assert!(green > inside.len() / 2, "{name}: green needles");
+        let share = inside.len() as f64 / f64::from(t.width * t.height);
+        assert!(share > 0.2, "{name}: needles cover {share} of the box");
+    }
+}
+
+#[test]
+fn a_fir_carries_the_needles_of_a_real_conifer() {
+    // With one needle per leaf the fir had 131,600 needles (17 m² of needle area) and looked bare
+    // from a distance; as shoots its 16,450 leaves carry 658,000 needles.
+    let p = sylva_core::presets::find("fir").unwrap().params().unwrap();
+    let skeleton = sylva_core::skeleton::build(&p).unwrap();
+    let foliage = sylva_core::foliage::build(&skeleton, &p).unwrap();
+    let per_shoot = foliage.leaf.as_ref().unwrap().shoot.len();
+    assert_eq!(per_shoot, 40);
+    let needles = foliage.count() * per_shoot;
+    assert!(needles > 500_000, "{needles} needles");
+    assert!(foliage.count() < 30_000, "{} shoots stay cheap to draw", foliage.count());
 }

@@ -12,6 +12,7 @@
 //! | margin | [`margin`] | `r (1 + depth · wave(f))` (ANCHORS §5) |
 //! | lobed outlines | [`lobes`] | pinnate lobes along the midrib, palmate lobes (ANCHORS §9) |
 //! | needles, petiole | [`needles`] | pine fascicles, the leaf stalk (ANCHORS §9) |
+//! | conifer shoots | [`shoot`] | many needles on a twig, baked into one texture (ANCHORS §9) |
 //! | triangulation | [`triangulate`] | concentric rings + fan; ear clipping + constrained Delaunay fallback |
 //! | UVs | [`uv`] | planar over the blade's box |
 //! | veins | [`veins`] | primary veins (pinnate, palmate, dichotomous), then space colonization (Runions 2005), open / closed; spline veins |
@@ -42,6 +43,7 @@ pub mod needles;
 pub mod outline;
 pub mod presets;
 pub mod raster;
+pub mod shoot;
 pub mod svg;
 pub mod texture;
 pub mod triangulate;
@@ -88,6 +90,9 @@ pub struct Leaf {
     pub lod: lod::LeafLod,
     /// Petiole length below the blade's base (leaf units; 0 = none), drawn in the mesh.
     pub petiole: f32,
+    /// A conifer shoot's needle outlines projected onto the leaf plane (empty for one blade;
+    /// see [`shoot`]): then `mesh`, `texture` and `uv_frame` are the shoot's.
+    pub shoot: Vec<Vec<glam::Vec2>>,
     /// Timings.
     pub stats: LeafStats,
     /// Content hash of everything above but the timings.
@@ -155,6 +160,17 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
         let normals = deform::normals(&positions, &triangulation.triangles);
         needles::Surface { positions, normals, uvs, triangles: triangulation.triangles.clone() }
     };
+    // A conifer shoot: the needle above, many times along a twig, in the shoot's own box.
+    let shoot = (p.leaf_shoot > 0).then(|| {
+        let placed = shoot::placements(p);
+        let outlines = shoot::projected(&placed, &outline.points, p.leaf_fascicle);
+        let frame = shoot::frame(&outlines, p.leaf_petiole);
+        (placed, outlines, frame)
+    });
+    let (surface, uv_frame) = match &shoot {
+        Some((placed, _, frame)) => (shoot::surface(placed, &surface, frame), *frame),
+        None => (surface, uv_frame),
+    };
     let mut b = MeshBuilder::with_capacity(surface.positions.len() + 4, surface.triangles.len() * 3 + 6);
     b.begin_group(Material::Leaves);
     for ((q, n), uv) in surface.positions.iter().zip(&surface.normals).zip(&surface.uvs) {
@@ -167,7 +183,12 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
     let mesh = b.finish();
     let positions = surface.positions;
     lap("deformation", &mut stage_ms);
-    let texture = texture::bake(&field, &outline.points, p.leaf_vein_displacement);
+    let texture = match &shoot {
+        Some((placed, outlines, frame)) => {
+            shoot::bake(placed, outlines, p.leaf_fascicle, p.leaf_petiole, frame, p.leaf_texture_level)
+        }
+        None => texture::bake(&field, &outline.points, p.leaf_vein_displacement),
+    };
     lap("texture", &mut stage_ms);
     let lod = lod::build(&uv_frame, &positions, p.leaf_impostor_grid);
     lap("lod", &mut stage_ms);
@@ -180,6 +201,7 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
         texture,
         lod,
         petiole: p.leaf_petiole,
+        shoot: shoot.map(|(_, outlines, _)| outlines).unwrap_or_default(),
         stats: LeafStats::default(),
         hash: 0,
     };

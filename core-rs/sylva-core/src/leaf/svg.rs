@@ -1,4 +1,5 @@
-//! The leaf as an SVG drawing for the 2D inspector and the CLI: base outline (dashed), petiole,
+//! The leaf as an SVG drawing for the 2D inspector and the CLI (a conifer shoot: its twig and
+//! needles): base outline (dashed), petiole,
 //! blade with its margin, the triangulation (optional), auxin sources (orange while alive, grey once
 //! reached) and the vein graph with pipe-model stroke widths (loop links in blue), all as they
 //! were after a given growth step.
@@ -71,6 +72,10 @@ pub fn render(leaf: &Leaf, opts: &SvgOptions) -> String {
         r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0}" height="{h:.0}" viewBox="0 0 {w:.2} {h:.2}">"#
     );
     let _ = writeln!(s, r##"<rect x="0" y="0" width="{w:.2}" height="{h:.2}" fill="#ffffff"/>"##);
+    if !leaf.shoot.is_empty() {
+        shoot(&mut s, &view, leaf, h - 6.0);
+        return s;
+    }
     if leaf.outline.base_outline != leaf.outline.points {
         let _ = writeln!(
             s,
@@ -150,6 +155,25 @@ pub fn render(leaf: &Leaf, opts: &SvgOptions) -> String {
     );
     s.push_str("</svg>\n");
     s
+}
+
+/// A conifer shoot: the twig, then every needle outline in drawing order, and a caption.
+fn shoot(s: &mut String, view: &View, leaf: &Leaf, caption_y: f32) {
+    let twig = crate::leaf::shoot::twig(leaf.petiole);
+    let _ = writeln!(s, r##"<path d="{}" fill="#8a7350" stroke="#5c4a30" stroke-width="0.6"/>"##, path(view, &twig));
+    let _ = writeln!(s, r##"<g fill="#bcd9a4" stroke="#2f5a22" stroke-width="0.7" stroke-linejoin="round">"##);
+    for needle in &leaf.shoot {
+        let _ = writeln!(s, r#"<path d="{}"/>"#, path(view, needle));
+    }
+    let _ = writeln!(s, "</g>");
+    let _ = writeln!(
+        s,
+        r##"<text x="{:.2}" y="{caption_y:.2}" font-family="sans-serif" font-size="12" fill="#333333">shoot: {} needles, {} triangles</text>"##,
+        view.pad,
+        leaf.shoot.len(),
+        leaf.mesh.triangle_count()
+    );
+    s.push_str("</svg>\n");
 }
 
 /// Vein segments drawn at `step` (`None`: all): tree edges plus loop links born by then.

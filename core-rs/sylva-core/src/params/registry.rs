@@ -208,6 +208,14 @@ define_params! {
             "The petiole is flattened sideways, across the blade's plane, so the leaf flutters in the lightest wind (aspens, poplars).";
         leaf_fascicle: u32 = 1; [1, 5, 1] "", "Leaf", "Needles per Fascicle", Leaf,
             "1 = one leaf; 2 to 5 = a pine fascicle: that many round needles (the outline's length and width) from one sheath.";
+        leaf_shoot: u32 = 0; [0, 120, 1] "", "Leaf", "Needles per Shoot", Leaf,
+            "0 = the leaf is one blade (or one fascicle). 1 to 120: the leaf is a conifer shoot, a twig one leaf long carrying that many needles (or fascicles), drawn as geometry and baked into one texture, so a crown of shoots has a real conifer's needle mass.";
+        leaf_shoot_flat: bool = false; [0, 1, 1] "", "Leaf", "Flat Shoot", Leaf,
+            "Shoots: the needles twist into two flat ranks, left and right of the twig (firs, yews); off, they stand all around it (spruces, pines, cypresses).";
+        leaf_shoot_angle: f32 = 55.0; [5.0, 90.0, 1.0] "°", "Leaf", "Needle Angle", Leaf,
+            "Shoots: angle between a needle and its twig (the youngest, at the tip, point further forward).";
+        leaf_shoot_needle: f32 = 0.3; [0.05, 1.0, 0.01] "", "Leaf", "Needle Length", Leaf,
+            "Shoots: a needle's length as a fraction of the shoot's; its width is the outline's Aspect Ratio of that.";
         leaf_m: f32 = 2.0; [0.0, 20.0, 0.5] "", "Leaf", "Symmetry (m)", Leaf,
             "Superformula m: number of symmetry axes; odd values put a lobe at the tip and a sinus at the base.";
         leaf_a: f32 = 1.0; [0.05, 4.0, 0.01] "", "Leaf", "Superformula a", Leaf,
