@@ -1,7 +1,7 @@
 /** Issue 4 end to end: the leaf inspector (presets, growth replay, export) and leaves on the tree. */
 import { expect, test, type Page } from '@playwright/test';
 import { readFileSync } from 'node:fs';
-import { waitForTree, watchErrors } from './helpers';
+import { waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 /** Opens the app with the leaf inspector showing a drawn leaf. */
 async function openInspector(page: Page): Promise<void> {
@@ -63,10 +63,14 @@ test('Export SVG downloads the drawing', async ({ page }) => {
   expect(text).toContain('</svg>');
 });
 
-test('leaves render on the tree (green pixels on the canvas)', async ({ page }) => {
-  const greenShare = async (): Promise<number> => {
-    const png = await page.getByTestId('viewer-canvas').screenshot();
-    return page.evaluate(async (base64) => {
+/**
+ * Share of the viewer canvas's pixels that are leaf green (green above red and blue), or with
+ * `dark`, darker than the sky and the ground could be (foliage in shade, needles, bark).
+ */
+async function greenShare(page: Page, dark = false): Promise<number> {
+  const png = await page.getByTestId('viewer-canvas').screenshot();
+  return page.evaluate(
+    async ([base64, dark]) => {
       const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
       const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
       const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
@@ -79,15 +83,19 @@ test('leaves render on the tree (green pixels on the canvas)', async ({ page }) 
         const r = data[i] ?? 0;
         const g = data[i + 1] ?? 0;
         const b = data[i + 2] ?? 0;
-        if (g > r + 12 && g > b + 12) green++;
+        if (dark ? 0.2126 * r + 0.7152 * g + 0.0722 * b < 100 : g > r + 12 && g > b + 12) green++;
       }
       return green / (bitmap.width * bitmap.height);
-    }, png.toString('base64'));
-  };
+    },
+    [png.toString('base64'), dark] as const,
+  );
+}
+
+test('leaves render on the tree (green pixels on the canvas)', async ({ page }) => {
   await page.goto('/');
   await waitForTree(page);
   await page.waitForTimeout(300);
-  const leafy = await greenShare();
+  const leafy = await greenShare(page);
   expect(leafy, 'share of green (leaf) pixels').toBeGreaterThan(0.01);
   // Deeply lobed oak leaves, a few pixels each from here, keep their coverage: the smaller mip
   // levels of their texture average blade and background under the alpha cutoff, which thinned
@@ -98,12 +106,42 @@ test('leaves render on the tree (green pixels on the canvas)', async ({ page }) 
   );
   await waitForTree(page);
   await page.waitForTimeout(300);
-  const lobed = await greenShare();
+  const lobed = await greenShare(page);
   console.log(`green share: default leaves ${leafy.toFixed(3)}, oak leaves ${lobed.toFixed(3)}`);
   expect(lobed, 'share of green pixels with lobed leaves').toBeGreaterThan(leafy * 0.78);
   // The same tree without leaves has (almost) no green.
   await page.goto('/?v=1&leaves=0');
   await waitForTree(page);
   await page.waitForTimeout(300);
-  expect(await greenShare()).toBeLessThan(leafy / 4);
+  expect(await greenShare(page)).toBeLessThan(leafy / 4);
+});
+
+test('a fir wears shoots of needles and reads as a dark mass from where the viewer frames it', async ({
+  page,
+}) => {
+  await page.goto('/');
+  const first = await waitForTree(page);
+  await page.getByTestId('preset-picker').selectOption('fir');
+  await waitForNewTree(page, first);
+  await expect(page).toHaveURL(/leaf_shoot=40/);
+  await page.waitForTimeout(300);
+  const shoots = await greenShare(page, true);
+  // The same fir with one needle per leaf (as before shoots: 80 needles of 4.5 cm per twig)
+  // looked bare from here: 131,600 needles are 17 m² of needle area.
+  const url = page
+    .url()
+    .replace(/leaf_shoot=40/, 'leaf_shoot=0')
+    .replace(/leaves=10\b/, 'leaves=80')
+    .replace(/foliage_scale=0\.22\b/, 'foliage_scale=0.045');
+  expect(url).toContain('leaves=80');
+  await page.goto(url);
+  await waitForTree(page);
+  await page.waitForTimeout(300);
+  const needles = await greenShare(page, true);
+  // Measured: 0.095 of the canvas with shoots, 0.010 with single needles.
+  console.log(
+    `fir crown (dark pixels): shoots ${shoots.toFixed(3)}, single needles ${needles.toFixed(3)}`,
+  );
+  expect(shoots, 'the crown is a mass of needles').toBeGreaterThan(0.05);
+  expect(shoots).toBeGreaterThan(4 * needles);
 });

@@ -5,7 +5,7 @@
 //! dark mass because of that area; with one needle per leaf it looked bare.
 //!
 //! * **Twig**: the shoot's axis, leaf `+y` from 0 to 1 (the shoot is one leaf length long), a
-//!   strip [`TWIG_WIDTH`] wide in the leaf plane.
+//!   strip [`TWIG_WIDTH`] wide, [`TWIG_LIFT`] in front of the leaf plane.
 //! * **Needles** (Needles per Shoot `N`): needle `i` leaves the twig at
 //!   `y_i = 0.04 + 0.92 (i + ½ ± ⅓) / N`, `Needle Length` times the shoot long (shorter toward
 //!   both ends, `0.8 + 0.2 sin(π y_i)`, ±8 %), at `Needle Angle` to the twig (closing to 65 % of it
@@ -15,11 +15,11 @@
 //!     right in the leaf plane, raised [`RANK_LIFT`] toward the front so the spray is a shallow V.
 //!   * off (spruces, pines, cypresses): all around the twig, each [`GOLDEN`] further about it.
 //! * **Texture**: the same needles projected onto the leaf plane and baked into the colour and
-//!   normal textures over the shoot's box (the layout of [`super::texture`]): the twig brown,
-//!   each needle green with a rounded cross-section (lighter and raised along its middle, its
-//!   normal tilting across it) and a slightly different shade from its neighbours, so
-//!   overlapping needles stay apart. The card and billboard levels show this texture, so a
-//!   far shoot has the silhouette of its needles.
+//!   normal textures over the shoot's box (the layout of [`super::texture`]): each needle green
+//!   with a rounded cross-section (lighter and raised along its middle, its normal tilting
+//!   across it) and a slightly different shade from its neighbours, so overlapping needles stay
+//!   apart; then the twig, brown over their bases. The card and billboard levels show this
+//!   texture, so a far shoot has the silhouette of its needles.
 //!
 //! Randomness: the fixed stream `"shoot"` (the leaf is a function of the Leaf parameters only).
 
@@ -34,6 +34,8 @@ use glam::{Vec2, Vec3};
 
 /// Width of the twig strip, in shoot lengths.
 pub const TWIG_WIDTH: f32 = 0.018;
+/// How far the twig strip sits in front of the leaf plane (shoot lengths).
+pub const TWIG_LIFT: f32 = 0.008;
 /// How far a flat shoot's needles rise toward the front (radians, about 16°).
 pub const RANK_LIFT: f32 = 0.28;
 /// Turn about the twig from one needle to the next when they are all around it (radians).
@@ -134,7 +136,8 @@ pub fn surface(placements: &[Placement], needle: &Surface, frame: &UvFrame) -> S
         s.triangles.extend(needle.triangles.iter().map(|t| t.map(|v| v + first)));
     }
     let first = s.positions.len() as u32;
-    s.positions.extend(twig(0.0).map(|c| c.extend(0.0)));
+    // A hair in front of the needles' bases, which leave it at its sides.
+    s.positions.extend(twig(0.0).map(|c| c.extend(TWIG_LIFT)));
     s.normals.extend([Vec3::Z; 4]);
     s.triangles.extend([[first, first + 1, first + 2], [first, first + 2, first + 3]]);
     s.uvs = s.positions.iter().map(|q| frame.uv(q.truncate())).collect();
@@ -190,7 +193,6 @@ pub fn bake(
             ]);
         }
     };
-    fill(&twig(petiole), &|_| (TWIG, Vec3::Z, 0.5));
     let k = fascicle.max(1) as usize;
     for (o, poly) in outlines.iter().enumerate() {
         let pl = placements[o / k];
@@ -210,5 +212,7 @@ pub fn bake(
             (rgb, n, crown)
         });
     }
+    // The twig last: the needles leave it at its sides, so from the front it shows between them.
+    fill(&twig(petiole), &|_| (TWIG, Vec3::Z, 0.5));
     LeafTexture { width: w as u32, height: h as u32, color, normal }
 }
