@@ -123,22 +123,22 @@ test('a fir wears shoots of needles and reads as a dark mass from where the view
   const first = await waitForTree(page);
   await page.getByTestId('preset-picker').selectOption('fir');
   await waitForNewTree(page, first);
-  await expect(page).toHaveURL(/leaf_shoot=40/);
+  await expect(page).toHaveURL(/leaf_shoot=56/);
   await page.waitForTimeout(300);
   const shoots = await greenShare(page, true);
   // The same fir with one needle per leaf (as before shoots: 80 needles of 4.5 cm per twig)
   // looked bare from here: 131,600 needles are 17 m² of needle area.
   const url = page
     .url()
-    .replace(/leaf_shoot=40/, 'leaf_shoot=0')
-    .replace(/leaves=10\b/, 'leaves=80')
-    .replace(/foliage_scale=0\.22\b/, 'foliage_scale=0.045');
+    .replace(/leaf_shoot=56/, 'leaf_shoot=0')
+    .replace(/leaves=16\b/, 'leaves=80')
+    .replace(/foliage_scale=0\.2\b/, 'foliage_scale=0.045');
   expect(url).toContain('leaves=80');
   await page.goto(url);
   await waitForTree(page);
   await page.waitForTimeout(300);
   const needles = await greenShare(page, true);
-  // Measured: 0.095 of the canvas with shoots, 0.010 with single needles.
+  // Measured: 0.084 of the canvas with shoots, 0.010 with single needles.
   console.log(
     `fir crown (dark pixels): shoots ${shoots.toFixed(3)}, single needles ${needles.toFixed(3)}`,
   );

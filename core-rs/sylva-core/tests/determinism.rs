@@ -11,7 +11,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("black_tupelo", "f152a72d17b516b1"),
     ("weeping_willow", "f8611f674b7856e0"),
     ("ca_black_oak", "631ed84ddec0452c"),
-    ("fir", "3ad58ab9484f7737"),
+    ("fir", "c67f2b6ff88933b7"),
     ("oak", "fcd3e9de7bf604c1"),
     ("cypress", "fe0bfcfb389de051"),
     ("umbrella", "b490dcf7ac471bdc"),

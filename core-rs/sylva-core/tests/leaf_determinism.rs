@@ -15,7 +15,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("tupelo", "d4024b2675e0d87b"),
     ("ginkgo", "3642f9b3070fc2df"),
     ("pine", "0427650aa9388f85"),
-    ("fir", "5c172c40cbf4274e"),
+    ("fir", "810cb18ec87fd389"),
     ("cypress", "c1ef326598edb2d3"),
     ("superformula_oak", "70e4db4fbbcfab01"),
     ("superformula_maple", "9aa9b8ea0ac66148"),

@@ -373,18 +373,18 @@ fn centroid(poly: &[Vec2]) -> Vec2 {
 
 #[test]
 fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
-    // Fir: 40 single flat needles in two ranks, alternately left and right of the twig, in a
+    // Fir: 56 single flat needles in two ranks, alternately left and right of the twig, in a
     // shallow V (close to the leaf plane).
     let p = preset("fir");
     let fir = generate(&p).unwrap();
     check_mesh("fir shoot", &fir);
-    assert_eq!(fir.shoot.len(), 40);
+    assert_eq!(fir.shoot.len(), 56);
     let mut single = p.clone();
     single.leaf_shoot = 0;
     single.leaf_petiole = 0.0;
     let needle = generate(&single).unwrap();
     // Every needle is the single needle's blade, plus the twig's and the stalk's quads.
-    assert_eq!(fir.mesh.triangle_count(), 40 * needle.mesh.triangle_count() + 2 + 2);
+    assert_eq!(fir.mesh.triangle_count(), 56 * needle.mesh.triangle_count() + 2 + 2);
     for (i, n) in fir.shoot.iter().enumerate() {
         let side = centroid(n).x;
         assert!(if i % 2 == 0 { side > 0.02 } else { side < -0.02 }, "needle {i} on its rank: {side}");
@@ -431,13 +431,13 @@ fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
 #[test]
 fn a_fir_carries_the_needles_of_a_real_conifer() {
     // With one needle per leaf the fir had 131,600 needles (17 m² of needle area) and looked bare
-    // from a distance; as shoots its 16,450 leaves carry 658,000 needles.
+    // from a distance; as shoots its 26,320 leaves carry 1,473,920 needles.
     let p = sylva_core::presets::find("fir").unwrap().params().unwrap();
     let skeleton = sylva_core::skeleton::build(&p).unwrap();
     let foliage = sylva_core::foliage::build(&skeleton, &p).unwrap();
     let per_shoot = foliage.leaf.as_ref().unwrap().shoot.len();
-    assert_eq!(per_shoot, 40);
+    assert_eq!(per_shoot, 56);
     let needles = foliage.count() * per_shoot;
-    assert!(needles > 500_000, "{needles} needles");
+    assert!(needles > 1_000_000, "{needles} needles");
     assert!(foliage.count() < 30_000, "{} shoots stay cheap to draw", foliage.count());
 }

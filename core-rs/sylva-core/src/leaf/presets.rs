@@ -273,12 +273,12 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
     LeafPreset {
         name: "fir",
         label: "Silver fir (Abies alba)",
-        description: "Single flat needles with rounded tips, set one by one along the twig and twisted into two flat ranks, 40 to a shoot.",
+        description: "Single flat needles with rounded tips, set one by one along the twig and twisted into two flat ranks, 56 to a shoot.",
         values: &[
-            ("leaf_shoot", 40.0),
+            ("leaf_shoot", 56.0),
             ("leaf_shoot_flat", 1.0),
-            ("leaf_shoot_angle", 62.0),
-            ("leaf_shoot_needle", 0.3),
+            ("leaf_shoot_angle", 66.0),
+            ("leaf_shoot_needle", 0.21),
             ("leaf_outline", 2.0),
             ("leaf_aspect", 0.09),
             ("leaf_base_shape", 0.2),
