@@ -40,6 +40,12 @@ export const closeupsSection = {
     await ctx.open(fork);
     await ctx.view([1.6, h + 0.6, 1.9], [0, h + 0.3, 0]);
     await shot('fork.png', 'Fork: CA Black Oak trunk splitting (levels=1, leaves off)');
+    // From the other side: the second clone of the three-way base split (issue #17's knee).
+    await ctx.view([-2.6, h + 1.4, 3.2], [0, h + 1.0, 0]);
+    await shot(
+      'fork-side.png',
+      'The same three-way split from the other side: the second clone leaves without a knee',
+    );
     // A branch collar on the default tree's straight trunk, at its lowest level-1 branch.
     const collar = { l0_curve_v: 0, leaves: 0 };
     const stems = ctx.report('skeleton', collar).skeleton;

@@ -10,9 +10,9 @@ const GOLDEN: &[(&str, &str)] = &[
     ("quaking_aspen", "14b7394c730bf1b2"),
     ("black_tupelo", "f152a72d17b516b1"),
     ("weeping_willow", "f8611f674b7856e0"),
-    ("ca_black_oak", "631ed84ddec0452c"),
+    ("ca_black_oak", "b97da7fc498e6272"),
     ("fir", "c67f2b6ff88933b7"),
-    ("oak", "fcd3e9de7bf604c1"),
+    ("oak", "2910d4991c4ee911"),
     ("cypress", "fe0bfcfb389de051"),
     ("umbrella", "b490dcf7ac471bdc"),
     ("weeping", "c1b57b19897e03be"),
@@ -20,7 +20,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("grown_shrub", "6bfc872f9c669d7b"),
     ("grown_hedgerow", "f283bda79442a16c"),
     ("grown_beside_wall", "4c09e556bb781e66"),
-    ("grown_bushy", "922629c143026432"),
+    ("grown_bushy", "b8f71550f1e696f6"),
 ];
 
 #[test]

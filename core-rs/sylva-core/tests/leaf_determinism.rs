@@ -6,7 +6,7 @@ use sylva_core::leaf::generate;
 use sylva_core::leaf::presets::LEAF_PRESETS;
 
 const GOLDEN: &[(&str, &str)] = &[
-    ("oak", "289d10c7621bb789"),
+    ("oak", "92fba69a8a7575d9"),
     ("black_oak", "a28dee747ce76287"),
     ("maple", "48d465c12d38349c"),
     ("birch", "359f6e9ab4b3df70"),

@@ -119,9 +119,12 @@ fn assert_mirrored(o: &Outline, what: &str) {
 
 #[test]
 fn asymmetry_seed_zero_is_exactly_mirror_symmetric() {
+    // Every preset without an Asymmetry Seed (the oak has one: irregular lobes, halves apart).
     for preset in LEAF_PRESETS {
         let p = preset.params().unwrap();
-        assert_mirrored(&outline_of(&p), preset.name);
+        if p.leaf_asymmetry_seed == 0 {
+            assert_mirrored(&outline_of(&p), preset.name);
+        }
     }
     let mut rng = Rng::new(5, "leaf-symmetry");
     let mut asymmetric = 0;

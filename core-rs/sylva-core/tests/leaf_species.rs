@@ -441,3 +441,27 @@ fn a_fir_carries_the_needles_of_a_real_conifer() {
     assert!(needles > 1_000_000, "{needles} needles");
     assert!(foliage.count() < 30_000, "{} shoots stay cheap to draw", foliage.count());
 }
+
+#[test]
+fn oak_lobes_are_irregular_like_a_real_leaf() {
+    // No two lobes of a real oak leaf match: with its Asymmetry Seed the lobes move along the
+    // midrib, reach out more or less and their sinuses cut to different depths; seed 0 draws
+    // the regular layout. The outline stays continuous (no jump at a period's end).
+    let lobes = |seed: u32| {
+        let mut p = preset("oak");
+        p.leaf_asymmetry_seed = seed;
+        let shape = sylva_core::leaf::lobes::Pinnate::from_params(&p);
+        let step = (0..=20_000).map(|i| shape.lobe(f64::from(i) / 20_000.0));
+        let jump = step.clone().zip(step.skip(1)).map(|(a, b)| (b - a).abs()).fold(0.0, f64::max);
+        assert!(jump < 0.01, "seed {seed}: the lobe profile jumps by {jump}");
+        lobes_along_the_midrib(&outline_of(&p), 0.01)
+    };
+    let oak = preset("oak").leaf_asymmetry_seed;
+    assert!(oak != 0);
+    let (regular, irregular) = (lobes(0), lobes(oak));
+    assert_eq!(regular.len(), irregular.len(), "the same lobes, drawn differently");
+    let moved = regular.iter().zip(&irregular).map(|(a, b)| (a.0 - b.0).abs()).fold(0.0f32, f32::max);
+    let reach = regular.iter().zip(&irregular).map(|(a, b)| (b.1 / a.1 - 1.0).abs()).fold(0.0f32, f32::max);
+    assert!(moved > 0.015, "a lobe moves along the midrib: {moved}");
+    assert!(reach > 0.08, "a lobe reaches further or less far: {reach}");
+}

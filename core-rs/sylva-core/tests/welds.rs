@@ -269,8 +269,10 @@ fn shallow_splits_fork_into_a_smooth_y() {
     assert_eq!(w.forks, w.split_welds, "{w:?}: every trunk split is shallow");
     // A fork is one surface with its original.
     assert_eq!(count_components(&g), stems.len() - w.welds, "{w:?}");
-    // The base split is three-way (two clones leave the trunk at one point): the second clone
-    // forks one step up, at the first fork's upper ring, so all three are one piece.
+    // The base split is three-way (two clones leave the trunk at one point). The first forks
+    // the trunk; the second would fork one step up, at the first fork's upper ring, where it has
+    // drawn so far away that its side patch leaned 34° past it before turning up along it
+    // (issue #17's knee), so it stays a separate closed tube.
     let twins: Vec<usize> =
         (1..stems.len()).filter(|&i| stems[i].parent == Some(0) && stems[i].offset == stems[1].offset).collect();
     assert_eq!(twins.len(), 2, "CA Black Oak's trunk splits in three at its base");
@@ -289,7 +291,7 @@ fn shallow_splits_fork_into_a_smooth_y() {
     assert_eq!(trunk.len(), 1, "the trunk is one piece");
     let split_y = stems[twins[0]].base().y.to_bits();
     let clones = pieces_where(&|k| k.0 == split_y && k != trunk_key);
-    assert_eq!(clones, trunk, "both clones at the base split are in the trunk's piece");
+    assert!(clones.is_superset(&trunk) && clones.len() == 2, "one clone welded into the trunk, one apart: {clones:?}");
     // Off: the clones sit in their originals as separate closed tubes.
     p.weld = false;
     let g = generate(&p).unwrap();
@@ -299,7 +301,8 @@ fn shallow_splits_fork_into_a_smooth_y() {
 
 /// Issue #17: CA Black Oak's trunk splits in three at its base, the second clone forking one
 /// step up, where its branch has already drawn away; its side patches bent in two or three
-/// rows of quads (a knee). With more rows the forks stay forks, closed and edge-manifold.
+/// rows of quads (a knee). With more rows the forks stay forks, closed and edge-manifold (and
+/// one that would lean far past its clone stays a separate tube, `mesh::fork`'s unit test).
 #[test]
 fn shifted_forks_stay_forks_and_manifold() {
     let mut p = sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap();

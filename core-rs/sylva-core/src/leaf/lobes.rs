@@ -12,7 +12,9 @@
 //!     `y* = p / (p + q)` (`p` Base Shape, `q` Tip Shape: exponents below 1 round the end,
 //!     1 makes it wedge-shaped, above 1 draws it out); `W` = Aspect Ratio / 2;
 //!   * lobes: `φ = (y − y₀) / (1 − y₀) · (n + ½)` counts `n` lobes per side from `y₀` (near the
-//!     petiole) up to a terminal half-lobe at the tip; `u = frac(φ)`, skewed so the apex sits
+//!     petiole) up to a terminal half-lobe at the tip; `u = frac(φ)` (with an Asymmetry Seed:
+//!     the fraction of a period of irregular width, ±30 %, each sinus ±30 % deeper and each
+//!     lobe reaching ±12 % further, as no two lobes of a real oak leaf match), skewed so the apex sits
 //!     at `u_p = 0.62 + 0.2 · point` (lobes lean toward the tip, pointed ones more);
 //!     `g(s) = (1 − point) · (1 − cos⁴(πs)) + point · tri(s)^1.5` (`s` the skewed `u`) is 1 at a
 //!     lobe's apex and 0 in a sinus, a rounded lobe over a rounded U sinus; `d` (Sinus Depth)
@@ -58,7 +60,22 @@ pub struct Pinnate {
     lobes: u32,
     depth: f64,
     point: f64,
+    /// Where each lobe period starts along the phase (`k` for regular lobes), `lobes + 2`
+    /// entries: periods of irregular widths (Asymmetry Seed), the terminal half-lobe last.
+    starts: Vec<f64>,
+    /// Per sinus (`lobes + 2`): how much deeper or shallower than Sinus Depth it cuts.
+    sinus: Vec<f64>,
+    /// Per lobe (`lobes + 1`): how much further out or less far its apex reaches.
+    reach: Vec<f64>,
 }
+
+/// Irregular pinnate lobes (Asymmetry Seed ≠ 0): a lobe period's width varies by up to this
+/// fraction, a sinus's depth by [`SINUS_JITTER`], a lobe's reach by [`REACH_JITTER`].
+const PERIOD_JITTER: f64 = 0.3;
+/// See [`PERIOD_JITTER`].
+const SINUS_JITTER: f64 = 0.3;
+/// See [`PERIOD_JITTER`].
+const REACH_JITTER: f64 = 0.12;
 
 /// `x^e` for `x ≥ 0` (0 at 0).
 fn pw(x: f64, e: f64) -> f64 {
@@ -82,7 +99,55 @@ impl Pinnate {
             lobes: p.leaf_lobes,
             depth: f64::from(p.leaf_lobe_depth),
             point: f64::from(p.leaf_lobe_point),
+            starts: Vec::new(),
+            sinus: Vec::new(),
+            reach: Vec::new(),
         }
+        .irregular(p.leaf_asymmetry_seed)
+    }
+
+    /// Draws the irregular lobes of `seed` (stream `"leaf-lobes"`); seed 0 keeps them regular.
+    /// The periods keep their total (the tip and the lowest lobe stay where they were); the
+    /// terminal half-lobe, the tip's sinus depth and the ends stay as drawn by the parameters.
+    fn irregular(mut self, seed: u32) -> Pinnate {
+        let n = self.lobes as usize;
+        self.starts = (0..=n + 1).map(|k| k as f64).collect();
+        self.sinus = vec![0.0; n + 2];
+        self.reach = vec![0.0; n + 1];
+        if seed == 0 || n == 0 {
+            return self;
+        }
+        let mut rng = crate::rng::Rng::new(u64::from(seed), "leaf-lobes");
+        let widths: Vec<f64> = (0..n).map(|_| 1.0 + PERIOD_JITTER * f64::from(rng.var(1.0))).collect();
+        let total: f64 = widths.iter().sum();
+        let mut at = 0.0;
+        for (k, w) in widths.iter().enumerate() {
+            self.starts[k] = at;
+            at += w * n as f64 / total;
+        }
+        self.starts[n] = n as f64;
+        self.starts[n + 1] = n as f64 + 1.0;
+        for k in 1..n {
+            self.sinus[k] = SINUS_JITTER * f64::from(rng.var(1.0));
+        }
+        for k in 0..n {
+            self.reach[k] = REACH_JITTER * f64::from(rng.var(1.0));
+        }
+        self
+    }
+
+    /// The lobe `k` and the fraction `u` of its period at phase `phi` (the last period, the
+    /// terminal half-lobe, is a regular one).
+    fn period(&self, phi: f64) -> (usize, f64) {
+        let n = self.lobes as usize;
+        let k = self.starts[..=n].partition_point(|&s| s <= phi).saturating_sub(1).min(n);
+        let (a, b) = (self.starts[k], self.starts[k + 1]);
+        (k, ((phi - a) / (b - a)).clamp(0.0, 1.0))
+    }
+
+    /// The phase of fraction `u` of lobe `k`'s period.
+    fn phase_of(&self, k: usize, u: f64) -> f64 {
+        self.starts[k] + u * (self.starts[k + 1] - self.starts[k])
     }
 
     /// The envelope's half-width at `y` (before lobes).
@@ -110,7 +175,7 @@ impl Pinnate {
         let Some(phi) = self.phase(y) else {
             return if self.lobes == 0 { 1.0 } else { 1.0 - self.depth };
         };
-        let u = phi - libm::floor(phi);
+        let (k, u) = self.period(phi);
         let up = self.apex();
         // Skew: the apex at `up` maps to the middle of the profile.
         let s = if u < up { 0.5 * u / up } else { 0.5 + 0.5 * (u - up) / (1.0 - up) };
@@ -120,7 +185,10 @@ impl Pinnate {
         let round = 1.0 - c2 * c2;
         let tri = pw(1.0 - (2.0 * s - 1.0).abs(), 1.5);
         let g = (1.0 - self.point) * round + self.point * tri;
-        1.0 - self.depth * (1.0 - g)
+        // Irregular lobes: the sinus depth blends from this period's lower sinus to its upper
+        // one, and the lobe's reach scales only its raised part (g), so the outline is continuous.
+        let depth = self.depth * (1.0 + self.sinus[k] * (1.0 - u) + self.sinus[k + 1] * u);
+        (1.0 - depth.min(0.95) * (1.0 - g)) * (1.0 + self.reach[k] * g)
     }
 
     /// One half at `t` (0 tip, 1 base); `tooth` widens it by that fraction, `width` scales it.
@@ -133,9 +201,9 @@ impl Pinnate {
     /// `t` of every lobe apex, from the tip down (the terminal lobe at the tip excluded).
     pub fn lobe_tips(&self) -> Vec<f64> {
         let n = f64::from(self.lobes);
-        (0..self.lobes)
+        (0..self.lobes as usize)
             .rev()
-            .map(|k| 1.0 - (PINNATE_Y0 + (f64::from(k) + self.apex()) / (n + 0.5) * (1.0 - PINNATE_Y0)))
+            .map(|k| 1.0 - (PINNATE_Y0 + self.phase_of(k, self.apex()) / (n + 0.5) * (1.0 - PINNATE_Y0)))
             .collect()
     }
 
@@ -143,7 +211,9 @@ impl Pinnate {
     pub fn seeds(&self) -> Vec<f64> {
         let n = f64::from(self.lobes);
         let mut out = self.lobe_tips();
-        out.extend((0..=self.lobes).map(|k| 1.0 - (PINNATE_Y0 + f64::from(k) / (n + 0.5) * (1.0 - PINNATE_Y0))));
+        out.extend(
+            (0..=self.lobes as usize).map(|k| 1.0 - (PINNATE_Y0 + self.starts[k] / (n + 0.5) * (1.0 - PINNATE_Y0))),
+        );
         out
     }
 }

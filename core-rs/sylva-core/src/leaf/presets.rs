@@ -42,6 +42,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "English oak (Quercus robur)",
         description: "Obovate, five rounded lobes per side along the midrib, leaning to the tip, with rounded sinuses over halfway in, one secondary vein per lobe, very short petiole.",
         values: &[
+            ("leaf_asymmetry_seed", 11.0),
             ("leaf_outline", 2.0),
             ("leaf_aspect", 0.56),
             ("leaf_base_shape", 1.5),

@@ -247,7 +247,7 @@ define_params! {
         leaf_tooth_sharpness: f32 = 0.5; [0.0, 1.0, 0.01] "", "Leaf", "Tooth Sharpness", Leaf,
             "Serrate only: how far each tooth leans toward the tip (0 = upright, 1 = hooked).";
         leaf_asymmetry_seed: u32 = 0; [0, 4_294_967_295u32, 1] "", "Leaf", "Asymmetry Seed", Leaf,
-            "Seed of small per-tooth and per-side differences between the halves; 0 = exactly mirror-symmetric.";
+            "Seed of small per-tooth and per-side differences between the halves, and of irregular pinnate lobes (uneven spacing, sinus depth and reach); 0 = exactly mirror-symmetric, regular lobes.";
         leaf_detail: f32 = 1.0; [0.25, 4.0, 0.05] "", "Leaf", "Outline Detail", Leaf,
             "Multiplies the density of the curvature-adaptive outline sampling.";
         leaf_rings: u32 = 5; [1, 16, 1] "", "Leaf", "Rings", Leaf,

@@ -50,6 +50,9 @@ const CLEARANCE: f32 = 1.1;
 /// search skips at a time before looking at each.
 const STEPS: usize = 400;
 const COARSE: usize = 4;
+/// How much further than the clone itself (radians, 12°) the side patch of a clone forking
+/// one step up may lean before it shows as a knee; such a clone stays a separate tube.
+const MAX_KNEE: f32 = 0.21;
 /// How far up from the split toward the facing columns' midpoint the crotch seam rises in the
 /// middle, tried in order until every triangle is well wound.
 const RISES: [f32; 3] = [0.9, 0.7, 0.97];
@@ -67,7 +70,9 @@ pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) 
 /// [`geometry`] with the split moved up the original to `from` (its `t`; None: the clone's own
 /// base). A second clone that leaves at the same point as a fork forks one step up, at that
 /// fork's ring `Jo` (a fork's rows are its own): the clone then seems to leave a little higher,
-/// where it has already drawn a little away, rather than becoming a separate tube.
+/// where it has already drawn a little away, rather than becoming a separate tube; unless it
+/// has drawn so far away that its side patch would lean more than [`MAX_KNEE`] past the clone
+/// (a knee), when it is a separate tube after all (None).
 pub(crate) fn geometry_from(
     stems: &[Stem],
     i: usize,
@@ -132,7 +137,19 @@ pub(crate) fn geometry_from(
                 None => return None,
                 Some(false) => {}
                 Some(true) => {
-                    let (_, t_o, t_c) = at_step(j);
+                    let (s, t_o, t_c) = at_step(j);
+                    // A clone forking one step up has drawn away already: its side patch runs
+                    // from the original's ring out to the clone, leaning further than the clone
+                    // itself. Past MAX_KNEE more it shows as a knee; it stays a separate tube.
+                    if ahead > 0.0 {
+                        let (base, _) = o.sample(t_split);
+                        let w = on_c.at(t_c) - base;
+                        let out = (w - tan * w.dot(tan)).length();
+                        let lean = crate::math::atan2(out, s.max(1e-6));
+                        if lean - crate::math::acos(cos) > MAX_KNEE {
+                            return None;
+                        }
+                    }
                     return Some(Junction {
                         parent: pi,
                         t_start: t_c,
@@ -212,6 +229,64 @@ pub(crate) mod tests {
     /// A fork junction on stem 0 from `t_lo` to `t_hi` (shared with `fork_rows`' tests).
     pub(crate) fn fork(t_lo: f32, t_hi: f32) -> Junction {
         Junction { parent: 0, t_start: 0.2, t_lo, t_hi, foot: 0.1, phi: 0.0, beta: PI, fork: true }
+    }
+
+    /// How much further than the clone itself the fork of clone `i` leans from its split
+    /// ring `S` to the clone's ring `Jc` (radians), and whether it forks above its own base.
+    fn knee(stems: &[Stem], i: usize, j: &Junction) -> (f32, bool) {
+        let (c, o) = (&stems[i], &stems[j.parent as usize]);
+        let t_base = c.offset / o.length;
+        let (_, tan) = o.sample(t_base);
+        let (base, _) = o.sample(j.t_lo);
+        let w = c.sample(j.t_start).0 - base;
+        let out = (w - tan * w.dot(tan)).length();
+        let s = (j.t_hi - j.t_lo) * o.length;
+        let own = c.sample(0.0).1.dot(tan).clamp(-1.0, 1.0).acos();
+        (out.atan2(s) - own, j.t_lo > t_base + 1e-4)
+    }
+
+    #[test]
+    fn a_clone_forking_one_step_up_leans_no_further_than_a_knee_allows() {
+        // Issue #17's knee: CA Black Oak's trunk splits three ways at one point; the second
+        // clone forked one step up, where it had drawn far away, and its side patch ran out
+        // sideways (about 30° past the clone) before turning up along it.
+        for levels in [1.0, 4.0] {
+            let mut p = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
+            p.set("levels", levels).unwrap();
+            p.set("l0_curve_v", 0.0).unwrap();
+            let sk = crate::skeleton::build(&p).unwrap();
+            let sides = vec![16; sk.stems.len()];
+            let plan = super::super::weld::plan(&sk, &p, &sides);
+            let mut shifted = 0;
+            for (i, j) in plan.iter().enumerate() {
+                let Some(j) = j.filter(|j| j.fork) else { continue };
+                let (excess, up) = knee(&sk.stems, i, &j);
+                if up {
+                    shifted += 1;
+                    assert!(
+                        excess <= MAX_KNEE + 1e-4,
+                        "levels {levels}: clone {i} leans {}° past itself",
+                        excess.to_degrees()
+                    );
+                }
+            }
+            // The knee of the issue, unchecked: the clone that forked one step up.
+            let mut rejected = 0;
+            for (i, j) in plan.iter().enumerate() {
+                let Some(f) = j.filter(|j| j.fork) else { continue };
+                for k in (0..sk.stems.len()).filter(|&k| k != i && plan[k].is_none()) {
+                    let same_split =
+                        sk.stems[k].parent == sk.stems[i].parent && sk.stems[k].offset == sk.stems[i].offset;
+                    if same_split && geometry_from(&sk.stems, k, &p, &sides, Some(f.t_hi)).is_none() {
+                        rejected += 1;
+                    }
+                }
+            }
+            assert!(shifted + rejected > 0, "levels {levels}: the tree has clones sharing a split");
+            if levels == 1.0 {
+                assert!(rejected > 0, "the trunk's knee is now a separate tube");
+            }
+        }
     }
 
     #[test]
