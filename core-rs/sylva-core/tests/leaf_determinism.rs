@@ -13,7 +13,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("aspen", "22dee3b7e892a6c3"),
     ("willow", "8250f969fa2c24dd"),
     ("tupelo", "d4024b2675e0d87b"),
-    ("ginkgo", "3642f9b3070fc2df"),
+    ("ginkgo", "fc0bebd1f956c591"),
     ("pine", "0427650aa9388f85"),
     ("fir", "810cb18ec87fd389"),
     ("cypress", "c1ef326598edb2d3"),

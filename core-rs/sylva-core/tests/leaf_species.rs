@@ -465,3 +465,34 @@ fn oak_lobes_are_irregular_like_a_real_leaf() {
     assert!(moved > 0.015, "a lobe moves along the midrib: {moved}");
     assert!(reach > 0.08, "a lobe reaches further or less far: {reach}");
 }
+
+#[test]
+fn ginkgo_is_a_fan_with_straight_sides_and_a_clean_notch() {
+    // A ginkgo blade is a fan: its sides run straight into the petiole. The palmate model drew
+    // round shoulders, a small knob around the junction (its 0.06 floor) and a spike in the
+    // notch (the smooth maximum of the two lobes where they meet stood 2^⅛ above either).
+    let o = outline_of(&preset("ginkgo"));
+    let half = o.half(0);
+    // Straight sides: between the junction and the shoulders the half-width grows in
+    // proportion to the height, as along a line through the junction (a knob would hold it
+    // up low down, a round shoulder would bend it).
+    let width_at = |y: f32| {
+        half.windows(2)
+            .find(|w| (w[0].y - y) * (w[1].y - y) <= 0.0 && (w[0].y - w[1].y).abs() > 1e-6)
+            .map(|w| {
+                let s = (y - w[0].y) / (w[1].y - w[0].y);
+                (w[0].x + (w[1].x - w[0].x) * s).abs()
+            })
+            .unwrap()
+    };
+    let (lowest, _) = half.iter().fold((f32::MAX, 0.0f32), |(lo, x), q| if q.y < lo { (q.y, q.x) } else { (lo, x) });
+    assert!(lowest > -0.02, "no knob below the junction: lowest point at y = {lowest}");
+    let shoulder = half.iter().max_by(|a, b| a.x.abs().total_cmp(&b.x.abs())).unwrap().y;
+    let slope = |y: f32| width_at(y) / y;
+    let (s1, s2, s3) = (slope(0.15 * shoulder), slope(0.5 * shoulder), slope(0.85 * shoulder));
+    assert!((s1 - s2).abs() < 0.15 * s2 && (s3 - s2).abs() < 0.15 * s2, "straight sides: {s1} {s2} {s3}");
+    // A clean notch: the tip point (t = 0, on the midline) is its lowest point, no spike.
+    let notch: Vec<Vec2> = o.points.iter().copied().filter(|q| q.x.abs() < 0.03 && q.y > 0.5).collect();
+    let tip = o.points[0];
+    assert!(notch.iter().all(|q| q.y >= tip.y - 1e-5), "the notch's bottom is at the midline: {tip} {notch:?}");
+}

@@ -28,6 +28,9 @@
 //!   flat-topped rounded lobes, to 0.7, pointed lobes with concave sides), fading to 0 over
 //!   the next 0.6 half-width beyond the outermost lobe; lobes join by a smooth maximum
 //!   (`(Σ r_k⁸)^⅛`, rounded sinuses) above a floor of 0.06 (the base sinus at the petiole).
+//!   Two lobes make a notched fan (ginkgo): the outer flanks keep 88 % of their length to the
+//!   edge and end within 0.12 half-widths, straight sides into the petiole, floor 0.015; they
+//!   join by the plain maximum, a clean V notch.
 //!   Lobe Teeth adds that many large saw teeth to each flank of every lobe (over `|u|` from
 //!   0.2 to 0.85, apex toward the lobe's tip, height 0.09 of the lobe's length).
 //!   Teeth of the margin stage are weighted by how close a point is to a lobe's top, so the
@@ -47,6 +50,14 @@ const SMOOTH_MAX: f64 = 8.0;
 const PALMATE_FLOOR: f64 = 0.06;
 /// Beyond the outermost palmate lobe the radius fades to the floor over this many half-widths.
 const FADE: f64 = 0.6;
+/// A two-lobed fan (ginkgo): its outer flanks lose this fraction of their length toward the
+/// edge, fade out over [`FAN_FADE`] half-widths past it, and the floor is [`FAN_FLOOR`] (no
+/// knob around the petiole, whose half-width is 0.015).
+const FAN_SHOULDER: f64 = 0.12;
+/// See [`FAN_SHOULDER`].
+const FAN_FADE: f64 = 0.12;
+/// See [`FAN_SHOULDER`].
+const FAN_FLOOR: f64 = 0.015;
 /// Height of a palmate lobe tooth, a fraction of the lobe's length.
 const LOBE_TOOTH: f64 = 0.09;
 
@@ -227,6 +238,8 @@ pub struct Palmate {
     depth: f64,
     e: f64,
     teeth: u32,
+    /// Two lobes: a notched fan (ginkgo), whose sides run straight into the petiole.
+    fan: bool,
     /// Mean radius over the half-turn: the margin's tooth scale.
     pub r_mean: f64,
 }
@@ -258,6 +271,7 @@ impl Palmate {
             depth: f64::from(p.leaf_lobe_depth),
             e: 3.0 + (0.7 - 3.0) * point,
             teeth: p.leaf_lobe_teeth,
+            fan: n == 2,
             r_mean: 1.0,
         };
         let samples = 256;
@@ -278,9 +292,16 @@ impl Palmate {
         LOBE_TOOTH * (1.0 - 0.5 * u) * wave
     }
 
-    /// One lobe's radius at angular offset `du` (radians) from its axis.
-    fn profile(&self, len: f64, du: f64, outermost: bool) -> f64 {
+    /// One lobe's radius at angular offset `du` (radians) from its axis (`outward`: on its side
+    /// away from the tip's direction).
+    fn profile(&self, len: f64, du: f64, outermost: bool, outward: bool) -> f64 {
         let u = du.abs() / self.h;
+        if self.fan && outermost && outward {
+            // A fan's outer flank keeps nearly its length to the edge, then ends within a few
+            // degrees: straight sides into the petiole instead of round shoulders.
+            let fade = ((1.0 + FAN_FADE - u) / FAN_FADE).clamp(0.0, 1.0);
+            return len * (1.0 - FAN_SHOULDER * u.min(1.0) * u.min(1.0)) * fade;
+        }
         if u <= 1.0 {
             len * (1.0 - self.depth * pw(u, self.e) + self.tooth(u))
         } else if outermost {
@@ -295,11 +316,13 @@ impl Palmate {
     /// lobe's top (1 on top, 0 in a sinus).
     pub fn radius(&self, theta: f64) -> (f64, f64) {
         let last = self.lobes.len() - 1;
-        let (mut sum, mut top) = (0.0, 0.0f64);
+        let (mut sum, mut top, mut max) = (0.0, 0.0f64, 0.0f64);
         for (k, &(a, len)) in self.lobes.iter().enumerate() {
             for axis in [a, -a] {
-                let r = self.profile(len, theta - axis, k == last);
+                // Outward: on the side of the lobe away from the tip's direction.
+                let r = self.profile(len, theta - axis, k == last, (theta - axis) * axis > 0.0);
                 sum += pw(r, SMOOTH_MAX);
+                max = max.max(r);
                 let u = (theta - axis).abs() / self.h;
                 top = top.max(1.0 - u.min(1.0));
                 if a == 0.0 {
@@ -307,7 +330,11 @@ impl Palmate {
                 }
             }
         }
-        (pw(sum, 1.0 / SMOOTH_MAX).max(PALMATE_FLOOR), libm::sqrt(top))
+        // A fan's notch is where its two lobes meet: there the smooth maximum of the two (each
+        // at the end of its profile) stood 2^⅛ above either, a spike in the notch; the plain
+        // maximum cuts a clean V.
+        let (r, floor) = if self.fan { (max, FAN_FLOOR) } else { (pw(sum, 1.0 / SMOOTH_MAX), PALMATE_FLOOR) };
+        (r.max(floor), libm::sqrt(top))
     }
 
     /// One half at `t` (0 tip, 1 base) about the junction's polar centre: `tooth` (a fraction of
