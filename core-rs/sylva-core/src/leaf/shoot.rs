@@ -25,7 +25,7 @@
 
 use crate::leaf::needles::Surface;
 use crate::leaf::raster::fill_rows;
-use crate::leaf::texture::{self, LeafTexture};
+use crate::leaf::texture::{self, byte, LeafTexture};
 use crate::leaf::uv::UvFrame;
 use crate::math;
 use crate::params::TreeParams;
@@ -165,7 +165,6 @@ pub fn bake(
     let mut color = vec![0u8; w * h * 4];
     // Outside the needles: the flat normal, no height (as the blade's texture has).
     let mut normal = [128u8, 128, 255, 0].repeat(w * h);
-    let byte = |x: f32| (x * 255.0 + 0.5) as u8;
     // Fills the texels whose centres are inside `poly` with `paint(centre) -> (rgb, normal, height)`.
     let mut fill = |poly: &[Vec2], paint: &dyn Fn(Vec2) -> (Vec3, Vec3, f32)| {
         let (lo, hi) = crate::leaf::geom::bounds(poly);

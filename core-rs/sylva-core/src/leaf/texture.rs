@@ -49,7 +49,7 @@ pub fn size(level: u32, frame: &UvFrame) -> (usize, usize) {
 
 /// 0..1 to 0..255, rounded (the float-to-int cast saturates, so out-of-range values clamp).
 #[inline]
-fn byte(x: f32) -> u8 {
+pub(crate) fn byte(x: f32) -> u8 {
     (x * 255.0 + 0.5) as u8
 }
 
