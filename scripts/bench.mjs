@@ -179,7 +179,7 @@ if (!asJson) {
   if (browser) {
     const d = browser.drag;
     console.log(
-      `Browser (headless Chromium, built app, default tree): first tree in the scene ${browser.first_tree_in_scene_ms} ms after navigation, drawn ${browser.first_tree_ms} ms.\n` +
+      `Browser (headless Chromium, built app, default tree): first tree in the scene ${browser.first_tree_in_scene_ms} ms after navigation, drawn ${browser.first_tree_ms} ms, with its shadows ${browser.first_shadowed_ms} ms.\n` +
         `Drag (${d.steps} steps, input to answer in the scene): median ${d.median_ms} ms, p95 ${d.p95_ms} ms; ` +
         `settle ${d.settle_ms} ms; next frame (upload + draw, SwiftShader) ${d.frame_ms} ms.\n` +
         `  per control: ${Object.entries(d.per_param)

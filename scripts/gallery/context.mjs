@@ -14,7 +14,8 @@ const COLOURS = 256;
 /** The embed page's query for parameter values `{id: number}`. */
 export function query(values) {
   const pairs = Object.entries(values).map(([k, v]) => `${k}=${encodeURIComponent(v)}`);
-  return ['v=1', ...pairs, 'wind=0'].join('&');
+  // aa=1: antialiased like a GPU's canvas (software WebGL draws without MSAA otherwise).
+  return ['v=1', ...pairs, 'wind=0', 'aa=1'].join('&');
 }
 
 /** Sets up the shared page and helpers. */

@@ -7,6 +7,7 @@ import {
   LineSegments,
   Mesh,
   MeshLambertMaterial,
+  type Object3D,
   CircleGeometry,
   PCFShadowMap,
   PerspectiveCamera,
@@ -20,6 +21,7 @@ import type { TreeBuffers, TreeUpdate } from '../../../packages/sylva-trees/src/
 import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
 import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
+import { antialiasFor, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
 
@@ -27,6 +29,8 @@ import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/
 export const BACKGROUND_COLOR = '#dce6ec';
 const GROUND_COLOR = '#b9b3a5';
 const VIEW_DIRECTION = new Vector3(0.75, 0.32, 1).normalize();
+/** Time after which the scene is drawn even without a tree (ms). */
+const EMPTY_SCENE_DELAY_MS = 3000;
 
 /** See [`TreeViewer.overlayHost`]. */
 export interface OverlayHost {
@@ -69,13 +73,20 @@ export class TreeViewer {
   private readonly hashListeners = new Set<(hash: string) => void>();
   private frameId = 0;
   private disposed = false;
+  /** True until the first tree has been drawn (see [`TreeViewer.draw`]). */
+  private shadowsDeferred = true;
+  /** Whether the scene is drawn without a tree (after [`EMPTY_SCENE_DELAY_MS`]). */
+  private drawEmpty = false;
+  private readonly emptyTimer: ReturnType<typeof setTimeout>;
 
   constructor(
     private readonly container: HTMLElement,
     /** `alpha`: a canvas that can be transparent (the embed's `bg=transparent`). */
     options: { alpha?: boolean } = {},
   ) {
-    this.renderer = new WebGLRenderer({ antialias: true, alpha: options.alpha ?? false });
+    // No MSAA in software WebGL, where it doubles a frame's time (renderQuality.ts).
+    const antialias = antialiasFor(location.search, webglRendererName());
+    this.renderer = new WebGLRenderer({ antialias, alpha: options.alpha ?? false });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     // Checking every shader program's link status right after it is created makes the page
     // wait for the GPU to compile it (seconds in software WebGL); production builds skip it.
@@ -83,6 +94,8 @@ export class TreeViewer {
     this.renderer.shadowMap.enabled = true;
     this.renderer.shadowMap.type = PCFShadowMap;
     this.renderer.domElement.dataset.testid = 'viewer-canvas';
+    // Until the first tree, frames only clear to the sky (see requestRender).
+    this.renderer.setClearColor(BACKGROUND_COLOR, options.alpha ? 0 : 1);
     container.appendChild(this.renderer.domElement);
 
     this.scene.background = new Color(BACKGROUND_COLOR);
@@ -109,6 +122,12 @@ export class TreeViewer {
     this.frameBounds(new Sphere(new Vector3(0, 4, 0), 5));
 
     this.scene.add(this.tree.group);
+
+    // A generator that never answers (or fails) still gets its sky and ground drawn.
+    this.emptyTimer = setTimeout(() => {
+      this.drawEmpty = true;
+      this.requestRender();
+    }, EMPTY_SCENE_DELAY_MS);
 
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
@@ -181,6 +200,7 @@ export class TreeViewer {
     if (color !== null) this.fog.color.set(color);
     this.scene.fog = color === null ? null : this.fog;
     this.ground.visible = color !== null;
+    this.renderer.setClearColor(color ?? BACKGROUND_COLOR, color === null ? 0 : 1);
     this.requestRender();
   }
 
@@ -221,6 +241,7 @@ export class TreeViewer {
   /** Releases every GPU resource and removes the canvas. */
   dispose(): void {
     this.disposed = true;
+    clearTimeout(this.emptyTimer);
     this.resizeObserver.disconnect();
     this.controls.dispose();
     this.tree.dispose();
@@ -269,7 +290,7 @@ export class TreeViewer {
   renderNow(): void {
     if (this.frameRequested) cancelAnimationFrame(this.frameId);
     this.frameRequested = false;
-    if (!this.disposed) this.renderer.render(this.scene, this.camera);
+    if (!this.disposed) this.draw();
     if (this.wind.animating) this.requestRender();
   }
 
@@ -289,15 +310,45 @@ export class TreeViewer {
 
   private requestRender(): void {
     if (this.frameRequested || !this.rendering) return;
+    if (this.tree.barkMesh === null && !this.drawEmpty) {
+      // No tree yet: the canvas is only cleared to the sky colour. Drawing the empty scene
+      // would make the GPU compile the ground's programs and draw it (half a second of
+      // software WebGL) just when the first tree arrives.
+      this.renderer.clear();
+      return;
+    }
     this.frameRequested = true;
     this.frameId = requestAnimationFrame((now) => {
       this.frameRequested = false;
       if (this.disposed) return;
       // While the wind blows, every frame advances its clock and asks for the next one.
       this.wind.tick(now);
-      this.renderer.render(this.scene, this.camera);
+      this.draw();
       if (this.wind.animating) this.requestRender();
     });
+  }
+
+  /**
+   * Draws a frame. The page's first tree is drawn once without casting shadows, and the next
+   * frame adds them: the shadow pass and its two depth programs cost about 0.6 s of software
+   * WebGL (SwiftShader), so the tree appears that much sooner; on a GPU the shadows follow one
+   * frame later. The shadow map is still rendered (empty), so no shader program changes.
+   */
+  private draw(): void {
+    const defer = this.shadowsDeferred && this.tree.barkMesh !== null;
+    const casting: Object3D[] = [];
+    if (defer) {
+      this.tree.group.traverse((object) => {
+        if (object.castShadow) casting.push(object);
+        object.castShadow = false;
+      });
+    }
+    this.renderer.render(this.scene, this.camera);
+    if (defer) {
+      for (const object of casting) object.castShadow = true;
+      this.shadowsDeferred = false;
+      this.requestRender();
+    }
   }
 
   /**

@@ -8,7 +8,6 @@ import {
   SUN_INTENSITY,
   applyLeafTranslucency,
   impostorLights,
-  skyMaterial,
 } from '../../../packages/sylva-trees/src/viewer/lighting';
 
 describe('lighting', () => {
@@ -18,12 +17,6 @@ describe('lighting', () => {
     expect(l.sunDir.toArray()).toEqual(SUN_DIRECTION.toArray());
     expect(l.sunColor.r).toBeGreaterThan(SUN_INTENSITY * 0.9);
     expect(l.sky.b).toBeGreaterThan(l.ground.b);
-  });
-
-  it('bakes a sky with the sun in it', () => {
-    const m = skyMaterial();
-    expect(m.uniforms.uSunDir?.value).toBe(SUN_DIRECTION);
-    expect(m.fragmentShader).toContain('uSunGlow');
   });
 
   it('adds translucency to the leaf shader after earlier patches', () => {

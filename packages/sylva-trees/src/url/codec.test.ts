@@ -108,6 +108,8 @@ describe('round trip', () => {
   it('keeps the debug flag when rebuilding the page query', () => {
     const search = buildSearch(registry, { ...defaults, seed: 3 }, '?debug=1&seed=9');
     expect(search).toBe('?v=1&seed=3&debug=1');
+    // The antialiasing choice (aa=1/0) survives edits and reloads too.
+    expect(buildSearch(registry, defaults, '?aa=1&seed=9')).toBe('?v=1&aa=1');
   });
 });
 

@@ -1,21 +1,17 @@
 /**
  * The one definition of Sylva's light, shared by the viewer (`TreeViewer`), the forest
  * (`ForestScene`) and the impostor baker (`lod/impostor.ts`): a procedural sky (gradient plus sun
- * glow, `shaders/sky.*.glsl`, no downloaded HDR) rendered once through three's PMREM into an
- * image-based environment light, a sun with soft shadows fitted to the tree, and leaf
+ * glow, no downloaded HDR) prefiltered once per page into a PMREM environment map
+ * (`skyEnvironment.ts`, on the CPU: three's GPU bake took seconds of software WebGL), the
+ * image-based light, a sun with soft shadows fitted to the tree, and leaf
  * translucency when the sun is behind a leaf (the WebGL maple notes' light-oriented leaves,
  * reference 003, face the sky; seen from below against the sun they glow). The crown-depth term
  * that darkens inner leaves and bark comes from the core (`crown_shade.rs`, `mesh::shade`).
  */
+import type { Scene } from 'three';
 import {
-  BackSide,
   Color,
   DirectionalLight,
-  Mesh,
-  PMREMGenerator,
-  Scene,
-  ShaderMaterial,
-  SphereGeometry,
   Vector3,
   type Material,
   type Sphere,
@@ -24,8 +20,7 @@ import {
 } from 'three';
 import { chainFragmentPatch } from './fragmentPatch';
 import leafTranslucency from './shaders/leafTranslucency.frag.glsl?raw';
-import skyFrag from './shaders/sky.frag.glsl?raw';
-import skyVert from './shaders/sky.vert.glsl?raw';
+import { prefilterSky, skyEnvironmentTexture, type Sky } from './skyEnvironment';
 
 /** Direction toward the sun (world, y up). */
 export const SUN_DIRECTION = new Vector3(0.5, 1, 0.35).normalize();
@@ -38,44 +33,28 @@ export const SKY_HORIZON = new Color(0.8, 0.8, 0.78);
 export const SKY_GROUND = new Color(0.22, 0.18, 0.13);
 /** Strength of the sky's image-based light. */
 export const ENVIRONMENT_INTENSITY = 0.75;
-/** Face size (texels) of the prefiltered sky. */
-export const ENVIRONMENT_SIZE = 64;
 /** How much sunlight a leaf lets through (0..1). */
 export const LEAF_TRANSLUCENCY = 0.45;
 /** Shadow map edge (texels) and blur radius: soft, affordable on software WebGL. */
 export const SHADOW_MAP_SIZE = 1024;
 export const SHADOW_RADIUS = 6;
 
-/** The procedural sky's material (for the PMREM bake). */
-export function skyMaterial(): ShaderMaterial {
-  return new ShaderMaterial({
-    vertexShader: skyVert,
-    fragmentShader: skyFrag,
-    side: BackSide,
-    depthWrite: false,
-    uniforms: {
-      uZenith: { value: SKY_ZENITH },
-      uHorizon: { value: SKY_HORIZON },
-      uGround: { value: SKY_GROUND },
-      uSunDir: { value: SUN_DIRECTION },
-      uSunGlow: { value: new Color(SUN_COLOR).multiplyScalar(0.35) },
-    },
-  });
-}
+/** The procedural sky of every scene (skyEnvironment.ts). */
+export const SKY: Sky = {
+  zenith: SKY_ZENITH,
+  horizon: SKY_HORIZON,
+  ground: SKY_GROUND,
+  sunGlow: new Color(SUN_COLOR).multiplyScalar(0.35),
+  sunDirection: SUN_DIRECTION,
+};
 
-/** Renders the procedural sky once into a prefiltered (PMREM) environment map. */
-export function skyEnvironment(renderer: WebGLRenderer): Texture {
-  const scene = new Scene();
-  const geometry = new SphereGeometry(10, 32, 16);
-  const material = skyMaterial();
-  scene.add(new Mesh(geometry, material));
-  const pmrem = new PMREMGenerator(renderer);
-  // A smooth gradient needs no detail: 64² faces bake quickly on software WebGL.
-  const target = pmrem.fromScene(scene, 0, 0.1, 100, { size: ENVIRONMENT_SIZE });
-  pmrem.dispose();
-  geometry.dispose();
-  material.dispose();
-  return target.texture;
+/** The prefiltered sky, computed once per page (the same sky for every scene). */
+let prefiltered: Float32Array[][] | null = null;
+
+/** The sky's prefiltered (PMREM) environment map, a new texture (computed once per page). */
+export function skyEnvironment(): Texture {
+  prefiltered ??= prefilterSky(SKY);
+  return skyEnvironmentTexture(prefiltered);
 }
 
 /** The sun and sky of one scene. */
@@ -83,12 +62,14 @@ export class SceneLights {
   readonly sun = new DirectionalLight(SUN_COLOR, SUN_INTENSITY);
   private readonly environment: Texture;
 
+  /** `renderer`: the renderer that draws `scene` (the sky's map is uploaded to it now). */
   constructor(
     private readonly scene: Scene,
     renderer: WebGLRenderer,
     options: { shadows: boolean },
   ) {
-    this.environment = skyEnvironment(renderer);
+    this.environment = skyEnvironment();
+    renderer.initTexture(this.environment);
     scene.environment = this.environment;
     scene.environmentIntensity = ENVIRONMENT_INTENSITY;
     this.sun.position.copy(SUN_DIRECTION);

@@ -180,4 +180,30 @@ describe('session generation in the worker', () => {
     other.handle({ type: 'generate', id: 1, params: { ...BASE, seed: 8 } });
     expect(other.tree().meta.hash).toBe(coldHash({ ...BASE, seed: 8 }));
   });
+
+  it('a primed session bakes its bark maps ahead, so the first request only copies arrays', () => {
+    const real = loadWasm();
+    let bakes = 0;
+    const counting = {
+      ...real,
+      bark_maps: (kind: number, size: number) => {
+        bakes++;
+        return real.bark_maps!(kind, size);
+      },
+    } as typeof real;
+    const h = harness(counting, { prime: BASE });
+    expect(bakes).toBe(1);
+    h.handle({ type: 'generate', id: 1, params: BASE });
+    expect(bakes).toBe(1);
+    const cold = harness();
+    cold.handle({ type: 'generate', id: 1, params: BASE });
+    const [got, want] = [h.lastResult().barkTextures, cold.lastResult().barkTextures];
+    expect(got?.kind).toBe(want?.kind);
+    expect(got?.color).toEqual(want?.color);
+    expect(got?.orm).toEqual(want?.orm);
+    // A first request with another bark type bakes its own maps.
+    const other = harness(counting, { prime: BASE });
+    other.handle({ type: 'generate', id: 1, params: { ...BASE, bark_type: 2 } });
+    expect(other.lastResult().barkTextures?.kind).toBe(2);
+  });
 });
