@@ -211,7 +211,9 @@ test('LOD0 → LOD1 → LOD2 → impostor by distance, triangle counts shown, si
 
 test('mean colour of every level against LOD0 at the same camera', async ({ page }) => {
   const errors = watchErrors(page);
-  await page.goto(URL);
+  // Antialiased, as on a GPU: software WebGL draws without MSAA (renderQuality.ts), and then
+  // LOD0's sub-pixel leaves cover whole pixels or none, unlike any GPU's canvas.
+  await page.goto(`${URL}&aa=1`);
   await waitForTree(page);
   await expect(page.getByTestId('lod-levels')).toHaveAttribute('data-ready', 'true');
   const { radius } = await lod(page);

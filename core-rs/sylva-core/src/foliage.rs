@@ -169,6 +169,9 @@ fn golden_turns(n: usize) -> Arc<Vec<[f32; 2]>> {
     turns
 }
 
+/// One leaf site in this many is placed by a drag's preview ([`place_lit_by`]).
+pub const PREVIEW_THIN: usize = 2;
+
 /// Where leaves sit along one stem: `(stem index, first t, last t, count)`.
 fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
     let stems = &skeleton.stems;
@@ -241,16 +244,22 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
 /// [`place`], also returning the leaves' light field ([`crate::crown_shade`], `None` for a bare
 /// tree), which has darkened their tints and shades the bark ([`crate::mesh::shade`]).
 pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
-    place_lit_by(skeleton, p, None)
+    place_lit_by(skeleton, p, None, 1)
 }
 
 /// [`place_lit`], darkening the tints by `field` (a field of other leaves, for a preview while
 /// dragging) instead of one built from these leaves when it is given; returns the field used.
+///
+/// `thin` > 1 is a preview while dragging: only every `thin`-th leaf site is placed, each leaf
+/// `√thin` times larger so the crown keeps its leaf area. The leaves kept sit exactly where the
+/// full placement puts them (every site still draws its random numbers).
 pub fn place_lit_by(
     skeleton: &Skeleton,
     p: &TreeParams,
     field: Option<&CrownLight>,
+    thin: usize,
 ) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
+    let thin = thin.max(1);
     let spans = spans(skeleton, p);
     let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
     let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
@@ -262,9 +271,10 @@ pub fn place_lit_by(
         return Ok((bare, None));
     }
     let mut rng = Rng::new(u64::from(p.seed), "foliage");
-    let need_n = need as usize;
+    let need_n = need as usize / thin + 1;
     let mut matrices = Vec::with_capacity(need_n * 16);
     let mut colors = Vec::with_capacity(need_n * 3);
+    let enlarge = if thin == 1 { 1.0 } else { (thin as f32).sqrt() };
     let bias = math::pow(2.0, -2.0 * p.foliage_distribution);
     let a = math::rad(p.foliage_angle);
     let angle = (math::cos(a), math::sin(a));
@@ -287,6 +297,16 @@ pub fn place_lit_by(
             // pow(u, 1) is u exactly: skip the call for an even distribution.
             let u = if bias == 1.0 { u.clamp(0.0, 1.0) } else { math::pow(u.clamp(0.0, 1.0), bias) };
             let t = t0 + (t1 - t0) * u;
+            if k % thin != 0 {
+                // A site a preview leaves out: its random numbers are drawn all the same.
+                k += 1;
+                for _ in 0..per_site {
+                    rng.var(p.foliage_size_v);
+                    rng.var(0.5 * p.foliage_color_v);
+                    rng.next_f32();
+                }
+                continue;
+            }
             let (pos, dir, side) = leaf_frame(stem, &mut curve, t, turns[k], angle);
             k += 1;
             let dirs: &[Vec3] = if p.foliage_twigs3 {
@@ -302,7 +322,7 @@ pub fn place_lit_by(
                 let d = lower(d);
                 let front = face_up(d);
                 let s = (1.0 + rng.var(p.foliage_size_v)).max(0.05);
-                let len = p.foliage_scale * s;
+                let len = p.foliage_scale * s * enlarge;
                 // The petiole (leaf y from -Petiole Length to 0) starts on the stem.
                 let base = pos + d * (len * p.leaf_petiole);
                 push_matrix(&mut matrices, base, d, front, len, len * p.foliage_scale_x);

@@ -18,10 +18,11 @@
 //! **Preview.** While a slider is dragged the caller may allow a [`Quality::Preview`]: when the
 //! bark would take longer than the budget (judged by the last full run), the bark is swept at a
 //! lower Mesh Quality without welds or holes and marked as a preview; when placing the leaves
-//! would take over half the budget, the new leaves are darkened by the previous leaves' light
-//! field ([`crate::crown_shade`]) instead of their own. The skeleton and the leaf are always full
-//! and cached. The next [`Quality::Full`] update with the same parameters redoes only what was
-//! previewed (the bark, the leaf tints and the bark's occlusion).
+//! would take over half the budget, only every other leaf site is placed (each leaf √2 larger, so
+//! the crown keeps its leaf area; the leaves kept sit where the full tree has them) and the new
+//! leaves are darkened by the previous leaves' light field ([`crate::crown_shade`]) instead of
+//! their own. The skeleton and the leaf are always full and cached. The next [`Quality::Full`] update with the same parameters redoes only what was
+//! previewed (the bark, the leaf placements and the bark's occlusion).
 //!
 //! **Hash.** The content hash ([`Session::hash`]) is computed on demand, after the buffers went
 //! out, and only describes a full result.
@@ -131,8 +132,9 @@ pub struct Current {
     pub foliage: Foliage,
     /// The leaves' light field (it darkened their tints and shades the bark); `None` when bare.
     pub light: Option<CrownLight>,
-    /// The leaf tints are darkened by the previous leaves' light field (a drag), not their own.
-    pub lit_by_previous: bool,
+    /// The leaves are a drag's preview: every [`foliage::PREVIEW_THIN`]-th site placed (larger),
+    /// their tints darkened by the previous leaves' light field, not their own.
+    pub leaves_preview: bool,
     /// What the last update changed.
     pub changes: Changes,
     /// Stage times of the last update.
@@ -144,7 +146,7 @@ pub struct Current {
 impl Current {
     /// Whether this is a preview: a preview bark, or a bark shaded for the previous leaves.
     pub fn is_preview(&self) -> bool {
-        self.bark.preview || self.bark.shade_stale || self.lit_by_previous
+        self.bark.preview || self.bark.shade_stale || self.leaves_preview
     }
 
     /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
@@ -177,8 +179,8 @@ struct Fresh {
     skeleton: Option<SkeletonOut>,
     bark: Option<Bark>,
     placements: Option<(Foliage, Option<CrownLight>)>,
-    /// [`Current::lit_by_previous`] of the result.
-    lit_by_previous: bool,
+    /// [`Current::leaves_preview`] of the result.
+    leaves_preview: bool,
     leaf: Option<LeafMesh>,
     /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
     shade: Option<Vec<u8>>,
@@ -220,7 +222,7 @@ impl Fresh {
             bark,
             foliage,
             light,
-            lit_by_previous: self.lit_by_previous,
+            leaves_preview: self.leaves_preview,
             changes: self.changes,
             times: self.times,
             from: self.from,
@@ -342,10 +344,12 @@ impl Session {
             Quality::Full => false,
         };
         let by_previous = over(self.last_place_ms).then(|| prev.and_then(|c| c.light.as_ref())).flatten();
-        let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.lit_by_previous && by_previous.is_none());
+        let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.leaves_preview && by_previous.is_none());
         let placements = if place_stale {
             let t = clock.now_ms();
-            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous)?;
+            // A drag's placement is a preview: every other leaf site, lit by the previous field.
+            let thin = if by_previous.is_some() { foliage::PREVIEW_THIN } else { 1 };
+            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous, thin)?;
             if by_previous.is_none() {
                 self.last_place_ms = Some(clock.now_ms() - t);
             }
@@ -353,9 +357,9 @@ impl Session {
         } else {
             None
         };
-        let lit_by_previous = match placements {
+        let leaves_preview = match placements {
             Some(_) => by_previous.is_some(),
-            None => prev.is_some_and(|c| c.lit_by_previous),
+            None => prev.is_some_and(|c| c.leaves_preview),
         };
         let (placed, light) = match (&placements, prev) {
             (Some((f, l)), _) => (f, l.as_ref()),
@@ -370,7 +374,7 @@ impl Session {
         // (a preview) when computing it would take over half the budget.
         let b = bark.as_ref().or(prev.map(|c| &c.bark)).expect("a first update sweeps the bark");
         let stale = bark.is_none() && prev.is_some_and(|c| c.bark.shade_stale);
-        let defer = over(self.last_shade_ms) || lit_by_previous;
+        let defer = over(self.last_shade_ms) || leaves_preview;
         let shade = if b.preview {
             bark.is_some().then(Vec::new)
         } else if bark.is_none() && ((placements.is_none() && !stale) || defer) {
@@ -403,7 +407,7 @@ impl Session {
             skeleton,
             bark,
             placements,
-            lit_by_previous,
+            leaves_preview,
             leaf,
             shade,
             shade_stale,

@@ -156,7 +156,7 @@ fn a_preview_is_never_the_full_tree_and_the_full_one_follows() {
     // The drag ends: the same parameters at full quality sweep the full bark and light the
     // leaves by their own field (the preview lit them by the previous leaves'), nothing else.
     let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
-    assert!(!cur.is_preview() && cur.changes.bark && !cur.changes.skeleton && !cur.lit_by_previous);
+    assert!(!cur.is_preview() && cur.changes.bark && !cur.changes.skeleton && !cur.leaves_preview);
     assert!(cur.bark.mesh.vertex_count() > preview_vertices, "the preview is coarser");
     assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
     // With a generous budget the answer is full even when a preview is allowed.
@@ -205,31 +205,43 @@ fn a_leaf_drag_defers_the_bark_shade_and_the_full_tree_catches_up() {
     // Released: the same parameters at full quality light the leaves by their own field and
     // shade the bark for them; the bark is not swept again.
     let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
-    assert!(!cur.is_preview() && cur.changes.shade && !cur.changes.bark && !cur.lit_by_previous);
+    assert!(!cur.is_preview() && cur.changes.shade && !cur.changes.bark && !cur.leaves_preview);
     assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
 }
 
 #[test]
-fn a_drag_lights_the_new_leaves_by_the_previous_field_and_the_release_relights_them() {
+fn a_drag_places_every_other_leaf_lit_by_the_previous_field_and_the_release_places_them_all() {
     let mut session = Session::new();
     let mut p = TreeParams::default();
     session.update(&p, Quality::Full, &NoClock, None).unwrap();
     // Over the budget (-1 ms): the leaves move, their tints come from the old crown's field.
     p.set("l1_length", 0.36).unwrap();
     let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
-    assert!(cur.is_preview() && cur.lit_by_previous && cur.changes.placements);
+    assert!(cur.is_preview() && cur.leaves_preview && cur.changes.placements);
     let preview = cur.foliage.clone();
     assert_eq!(session.hash(), None, "a preview has no content hash");
     // A leaf-shape step of the same drag keeps the previewed placements.
     p.set("leaf_teeth", 9.0).unwrap();
     let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
-    assert!(cur.lit_by_previous && !cur.changes.placements);
+    assert!(cur.leaves_preview && !cur.changes.placements);
     // Within the budget the same parameters are placed and lit in full, the cold tree's bytes.
     let cur = session.update(&p, Quality::Preview { budget_ms: 1e9 }, &NoClock, None).unwrap();
     assert!(!cur.is_preview() && cur.changes.placements && !cur.changes.skeleton);
     let cold = generate(&p).unwrap();
-    assert_eq!(cur.foliage.matrices, preview.matrices, "a preview places the leaves where they belong");
     assert_eq!(cur.foliage.matrices, cold.foliage.matrices);
+    // The preview placed every other leaf site, where the full tree has its leaf, √2 larger.
+    let full = &cold.foliage.matrices;
+    let thin = sylva_core::foliage::PREVIEW_THIN;
+    assert_eq!(preview.count(), cold.foliage.count().div_ceil(thin), "one leaf site in {thin}");
+    for (i, m) in preview.matrices.chunks_exact(16).enumerate().step_by(97) {
+        let f = &full[i * thin * 16..(i * thin + 1) * 16];
+        // Where the petiole meets the stem (the translation minus the petiole along the leaf's y).
+        let attach = |c: &[f32]| [0, 1, 2].map(|a| c[12 + a] - c[4 + a] * p.leaf_petiole);
+        let (a, b) = (attach(m), attach(f));
+        assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-5), "preview leaf {i} sits where full leaf {} does", i * thin);
+        let len = |c: &[f32]| (c[4] * c[4] + c[5] * c[5] + c[6] * c[6]).sqrt();
+        assert!((len(m) / len(f) - (thin as f32).sqrt()).abs() < 1e-4, "preview leaf {i} is √{thin} larger");
+    }
     assert_eq!(cur.foliage.colors, cold.foliage.colors);
     assert_ne!(preview.colors, cold.foliage.colors, "the preview's tints came from the old crown");
     assert_eq!(session.hash(), Some(cold.hash));
