@@ -93,6 +93,11 @@ fn leaf_key(p: &TreeParams) -> Vec<u64> {
     registry().iter().filter(|s| s.group.starts_with("Leaf")).map(|s| p.get(&s.id).unwrap_or(0.0).to_bits()).collect()
 }
 
+/// Whether `a` and `b` describe the same leaf (every leaf-shape parameter equal).
+pub fn same_leaf(a: &TreeParams, b: &TreeParams) -> bool {
+    leaf_key(a) == leaf_key(b)
+}
+
 type LeafCache = Mutex<Option<(Vec<u64>, Arc<Leaf>)>>;
 static LEAF_CACHE: LeafCache = Mutex::new(None);
 

@@ -21,8 +21,9 @@
 //! would take over half the budget, only every other leaf site is placed (each leaf √2 larger, so
 //! the crown keeps its leaf area; the leaves kept sit where the full tree has them) and the new
 //! leaves are darkened by the previous leaves' light field ([`crate::crown_shade`]) instead of
-//! their own. The skeleton and the leaf are always full and cached. The next [`Quality::Full`] update with the same parameters redoes only what was
-//! previewed (the bark, the leaf placements and the bark's occlusion).
+//! their own; when the last leaf took over half the budget, a drag of the leaf's shape gets a
+//! leaf whose texture is one Texture Size level down. The skeleton is always full and cached. The next [`Quality::Full`] update with the same parameters redoes only what was
+//! previewed (the bark, the leaf placements, the leaf and the bark's occlusion).
 //!
 //! **Hash.** The content hash ([`Session::hash`]) is computed on demand, after the buffers went
 //! out, and only describes a full result.
@@ -135,6 +136,8 @@ pub struct Current {
     /// The leaves are a drag's preview: every [`foliage::PREVIEW_THIN`]-th site placed (larger),
     /// their tints darkened by the previous leaves' light field, not their own.
     pub leaves_preview: bool,
+    /// The leaf is a drag's preview: its texture one Texture Size level down.
+    pub leaf_preview: bool,
     /// What the last update changed.
     pub changes: Changes,
     /// Stage times of the last update.
@@ -146,7 +149,7 @@ pub struct Current {
 impl Current {
     /// Whether this is a preview: a preview bark, or a bark shaded for the previous leaves.
     pub fn is_preview(&self) -> bool {
-        self.bark.preview || self.bark.shade_stale || self.leaves_preview
+        self.bark.preview || self.bark.shade_stale || self.leaves_preview || self.leaf_preview
     }
 
     /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
@@ -182,6 +185,8 @@ struct Fresh {
     /// [`Current::leaves_preview`] of the result.
     leaves_preview: bool,
     leaf: Option<LeafMesh>,
+    /// [`Current::leaf_preview`] of the result.
+    leaf_preview: bool,
     /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
     shade: Option<Vec<u8>>,
     /// Whether the bark's occlusion is left from other leaves afterwards.
@@ -223,6 +228,7 @@ impl Fresh {
             foliage,
             light,
             leaves_preview: self.leaves_preview,
+            leaf_preview: self.leaf_preview,
             changes: self.changes,
             times: self.times,
             from: self.from,
@@ -241,6 +247,9 @@ pub struct Session {
     /// Time of the last leaf placement with its own light field (ms): a drag lights the new
     /// leaves by the previous field when it is over half the budget.
     last_place_ms: Option<f64>,
+    /// Time of the last full leaf generation (ms): a drag of the leaf's shape gets a preview
+    /// leaf when it is over half the budget.
+    last_leaf_ms: Option<f64>,
 }
 
 /// The first stage whose parameters differ between `a` and `b` (`Viewer` when only viewer
@@ -278,6 +287,7 @@ impl Session {
         self.last_full_mesh_ms = None;
         self.last_shade_ms = None;
         self.last_place_ms = None;
+        self.last_leaf_ms = None;
     }
 
     /// Brings the tree to `params`, rerunning from the first stage that changed. On an error
@@ -367,8 +377,24 @@ impl Session {
             (None, None) => unreachable!("a first update places the leaves"),
         };
         // New placements come without the leaf mesh: it is dressed again (the leaf is cached).
-        let leaf =
-            (from <= Stage::Leaf || placements.is_some()).then(|| foliage::leaf_mesh(placed.count(), p)).transpose()?;
+        // A drag of the leaf's shape whose last leaf took over half the budget gets a preview
+        // leaf, its texture one size down (a quarter of the texels to vein, raster and bake).
+        let leaf_shape_changed = prev.is_none_or(|c| !foliage::same_leaf(&c.params, p));
+        let leaf_preview = over(self.last_leaf_ms) && (leaf_shape_changed || prev.is_some_and(|c| c.leaf_preview));
+        let redo_leaf =
+            from <= Stage::Leaf || placements.is_some() || prev.is_some_and(|c| c.leaf_preview != leaf_preview);
+        let leaf = if !redo_leaf {
+            None
+        } else if leaf_preview {
+            Some(foliage::leaf_mesh(placed.count(), &preview_leaf_params(p))?)
+        } else {
+            let t = clock.now_ms();
+            let dressed = foliage::leaf_mesh(placed.count(), p)?;
+            if leaf_shape_changed || prev.is_some_and(|c| c.leaf_preview) {
+                self.last_leaf_ms = Some(clock.now_ms() - t);
+            }
+            Some(dressed)
+        };
         // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
         // A preview bark goes without it; a drag of the leaves keeps the old one meanwhile
         // (a preview) when computing it would take over half the budget.
@@ -409,6 +435,7 @@ impl Session {
             placements,
             leaves_preview,
             leaf,
+            leaf_preview,
             shade,
             shade_stale,
             changes,
@@ -459,6 +486,17 @@ impl Session {
         })
     }
 }
+
+/// The leaf parameters of a preview leaf: the texture one Texture Size level down (not below
+/// the parameter's minimum).
+fn preview_leaf_params(p: &TreeParams) -> TreeParams {
+    let mut q = p.clone();
+    q.leaf_texture_level = p.leaf_texture_level.saturating_sub(1).max(PREVIEW_MIN_TEXTURE_LEVEL);
+    q
+}
+
+/// Smallest Texture Size level a preview leaf goes down to (16 texels).
+const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
 
 /// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
 fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {

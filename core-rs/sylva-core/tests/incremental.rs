@@ -246,3 +246,30 @@ fn a_drag_places_every_other_leaf_lit_by_the_previous_field_and_the_release_plac
     assert_ne!(preview.colors, cold.foliage.colors, "the preview's tints came from the old crown");
     assert_eq!(session.hash(), Some(cold.hash));
 }
+
+#[test]
+fn a_drag_of_the_leaf_shape_shows_a_smaller_texture_and_the_release_the_full_leaf() {
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    let full_height =
+        session.update(&p, Quality::Full, &NoClock, None).unwrap().foliage.leaf.as_ref().unwrap().texture.height;
+    // Over the budget (-1 ms): the new leaf's texture is one Texture Size level down.
+    p.set("leaf_teeth", 21.0).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
+    assert!(cur.is_preview() && cur.leaf_preview && cur.changes.leaf && !cur.changes.placements);
+    assert_eq!(cur.foliage.leaf.as_ref().unwrap().texture.height * 2, full_height);
+    assert_eq!(session.hash(), None, "a preview has no content hash");
+    // A leaf-placement step of the same drag keeps the preview leaf.
+    p.set("foliage_angle", 33.0).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap();
+    assert!(cur.leaf_preview);
+    // Released: the full leaf, the cold tree's bytes.
+    let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    assert!(!cur.is_preview() && !cur.leaf_preview && cur.changes.leaf);
+    assert_eq!(cur.foliage.leaf.as_ref().unwrap().texture.height, full_height);
+    assert_eq!(session.hash(), Some(generate(&p).unwrap().hash));
+    // Within the budget a leaf edit is answered in full at once.
+    p.set("leaf_teeth", 22.0).unwrap();
+    let cur = session.update(&p, Quality::Preview { budget_ms: 1e9 }, &NoClock, None).unwrap();
+    assert!(!cur.leaf_preview && !cur.is_preview());
+}

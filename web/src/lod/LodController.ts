@@ -189,7 +189,9 @@ export class LodController {
   private onTree(buffers: TreeBuffers): void {
     this.hash = buffers.meta.hash;
     this.base = findBaseObjects(this.host.scene, buffers, this.root, this.probe);
-    this.sphere = sphereOf(buffers);
+    // A drag's preview keeps the last full tree's sphere: sizing it loops over every leaf on
+    // the main thread (a millisecond a step), and the full tree follows on release.
+    if (!buffers.meta.preview) this.sphere = sphereOf(buffers);
     this.clearLevels();
     this.update();
     this.armIdle();

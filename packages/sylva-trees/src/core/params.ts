@@ -86,16 +86,29 @@ export function applyPreset(registry: readonly ParamSpec[], preset: Preset): Par
   return out;
 }
 
-/** The preset whose values exactly reproduce `params`, if any. */
+/** Every preset applied to the defaults, per preset list (and the registry it was applied with). */
+const appliedPresets = new WeakMap<
+  readonly Preset[],
+  { registry: readonly ParamSpec[]; applied: Params[] }
+>();
+
+/**
+ * The preset whose values exactly reproduce `params`, if any. The app asks on every slider step:
+ * the presets are applied once per list, and each comparison stops at the first difference.
+ */
 export function matchingPreset(
   registry: readonly ParamSpec[],
   presets: readonly Preset[],
   params: Params,
 ): Preset | undefined {
-  return presets.find((p) => {
-    const expected = applyPreset(registry, p);
-    return registry.every((s) => expected[s.id] === params[s.id]);
-  });
+  let cached = appliedPresets.get(presets);
+  if (cached?.registry !== registry) {
+    cached = { registry, applied: presets.map((p) => applyPreset(registry, p)) };
+    appliedPresets.set(presets, cached);
+  }
+  const { applied } = cached;
+  const i = applied.findIndex((expected) => registry.every((s) => expected[s.id] === params[s.id]));
+  return i < 0 ? undefined : presets[i];
 }
 
 /** Parameters grouped by `group`, in registry (display) order. */

@@ -102,13 +102,19 @@ describe('session generation in the worker', () => {
     const full = sent.at(-2);
     if (full?.type !== 'result') throw new Error(JSON.stringify(full));
     expect(full.meta.preview).toBe(false);
-    // The bark is swept again (with its occlusion, which a preview goes without) and the
-    // leaves' tints are lit by their own crown (the preview's came from the previous one): the
-    // skeleton and the leaf were full, and the leaves keep their places.
+    // The bark is swept again (with its occlusion, which a preview goes without) and every
+    // leaf is placed (the preview placed every other site, lit by the previous crown): the
+    // skeleton and the leaf were full.
     expect(parts(full)).toEqual(['bark', 'instances', 'shade']);
     if (!preview.instances || !full.instances) throw new Error('no leaves sent');
-    expect(full.instances.matrices).toEqual(preview.instances.matrices);
-    expect(full.instances.colors).not.toEqual(preview.instances.colors);
+    const leaves = (m: Float32Array) => m.length / 16;
+    expect(leaves(preview.instances.matrices)).toBe(Math.ceil(leaves(full.instances.matrices) / 2));
+    // The preview's first leaf is the full tree's first leaf, √2 larger.
+    const size = (m: Float32Array) => Math.hypot(m[4]!, m[5]!, m[6]!);
+    expect(size(preview.instances.matrices) / size(full.instances.matrices)).toBeCloseTo(
+      Math.SQRT2,
+      4,
+    );
     expect(preview.shade).toHaveLength(0);
     expect(full.meta.vertices).toBeGreaterThan(preview.meta.vertices);
     const hashes = sent.filter((m) => m.type === 'hash');
