@@ -25,6 +25,9 @@ describe('bark look', () => {
     patchBarkShader(shader, u);
     for (const map of ['map', 'normalMap', 'roughnessMap', 'aoMap']) {
       expect(shader.fragmentShader).toMatch(new RegExp(`barkSample\\(\\s*${map}\\b`));
+      // No plain fetch is left: three's tangent-space normal map once kept one, so the relief
+      // was one tile around the stem while the colour had many.
+      expect(shader.fragmentShader).not.toMatch(new RegExp(`texture2D\\(\\s*${map}\\s*,`));
     }
     expect(shader.fragmentShader).not.toContain('#include <map_fragment>');
     expect(shader.vertexShader).toContain('attribute float barkRadius');

@@ -61,10 +61,11 @@ export function patchBarkShader(
   uniforms: BarkLookUniforms,
 ): void {
   if (shader.vertexShader.includes(MARKER)) return;
+  // Every fetch: the chunk has one for object-space and one for tangent-space normal maps.
   const normalMaps = ShaderChunk.normal_fragment_maps
-    .replace('texture2D( normalMap, vNormalMapUv )', 'barkSample( normalMap, vNormalMapUv )')
+    .replaceAll('texture2D( normalMap, vNormalMapUv )', 'barkSample( normalMap, vNormalMapUv )')
     .replace('mapN.xy *= normalScale;', 'mapN.xy *= normalScale * ( 1.0 - vBark.y );');
-  const ao = ShaderChunk.aomap_fragment.replace(
+  const ao = ShaderChunk.aomap_fragment.replaceAll(
     'texture2D( aoMap, vAoMapUv )',
     'barkSample( aoMap, vAoMapUv )',
   );

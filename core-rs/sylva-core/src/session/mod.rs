@@ -35,9 +35,12 @@ use crate::foliage::{self, Foliage};
 use crate::mesh::holes::Hole;
 use crate::mesh::tube::WeldStats;
 use crate::mesh::{self, Bounds, TreeMesh};
-use crate::params::{registry, GrowthMode, Stage, TreeParams};
+use crate::params::{registry, Stage, TreeParams};
 use crate::skeleton::Skeleton;
-use crate::{growth, skeleton, Generated, Stats, ENVELOPE_SAMPLES};
+use crate::{Generated, Stats};
+
+mod stages;
+use stages::{build_skeleton, full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
 
 /// Mesh Quality factor of a preview bark (never below the parameter's minimum).
 pub const PREVIEW_QUALITY: f32 = 0.5;
@@ -86,7 +89,7 @@ pub struct SkeletonOut {
     pub skeleton: Skeleton,
     /// Growth mode: the markers sampled at the start.
     pub markers: Vec<glam::Vec3>,
-    /// Crown envelope profile ([`skeleton::preview_profile`]).
+    /// Crown envelope profile ([`crate::skeleton::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
 }
 
@@ -173,66 +176,6 @@ impl Current {
             "shade": c.shade,
         });
         meta.to_string()
-    }
-}
-
-/// The stages an update ran; `None` = reuse the previous result.
-struct Fresh {
-    params: TreeParams,
-    skeleton: Option<SkeletonOut>,
-    bark: Option<Bark>,
-    placements: Option<(Foliage, Option<CrownLight>)>,
-    /// [`Current::leaves_preview`] of the result.
-    leaves_preview: bool,
-    leaf: Option<LeafMesh>,
-    /// [`Current::leaf_preview`] of the result.
-    leaf_preview: bool,
-    /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
-    shade: Option<Vec<u8>>,
-    /// Whether the bark's occlusion is left from other leaves afterwards.
-    shade_stale: bool,
-    changes: Changes,
-    times: StageTimes,
-    from: Stage,
-}
-
-type LeafMesh = (TreeMesh, Option<std::sync::Arc<crate::leaf::Leaf>>);
-
-impl Fresh {
-    /// The new current tree: fresh stages, the rest moved (not copied) out of `prev`.
-    fn assemble(self, prev: Option<Current>) -> Current {
-        let (skeleton, mut bark, (mut foliage, light)) = match prev {
-            Some(c) => (
-                self.skeleton.unwrap_or(c.skeleton),
-                self.bark.unwrap_or(c.bark),
-                self.placements.unwrap_or((c.foliage, c.light)),
-            ),
-            None => (
-                self.skeleton.expect("a first update builds the skeleton"),
-                self.bark.expect("a first update sweeps the bark"),
-                self.placements.expect("a first update places the leaves"),
-            ),
-        };
-        if let Some((mesh, leaf)) = self.leaf {
-            (foliage.mesh, foliage.leaf) = (mesh, leaf);
-        }
-        if let Some(shade) = self.shade {
-            bark.mesh.shade = shade;
-            bark.hash = None;
-        }
-        bark.shade_stale = self.shade_stale;
-        Current {
-            params: self.params,
-            skeleton,
-            bark,
-            foliage,
-            light,
-            leaves_preview: self.leaves_preview,
-            leaf_preview: self.leaf_preview,
-            changes: self.changes,
-            times: self.times,
-            from: self.from,
-        }
     }
 }
 
@@ -376,25 +319,8 @@ impl Session {
             (None, Some(c)) => (&c.foliage, c.light.as_ref()),
             (None, None) => unreachable!("a first update places the leaves"),
         };
-        // New placements come without the leaf mesh: it is dressed again (the leaf is cached).
-        // A drag of the leaf's shape whose last leaf took over half the budget gets a preview
-        // leaf, its texture one size down (a quarter of the texels to vein, raster and bake).
-        let leaf_shape_changed = prev.is_none_or(|c| !foliage::same_leaf(&c.params, p));
-        let leaf_preview = over(self.last_leaf_ms) && (leaf_shape_changed || prev.is_some_and(|c| c.leaf_preview));
-        let redo_leaf =
-            from <= Stage::Leaf || placements.is_some() || prev.is_some_and(|c| c.leaf_preview != leaf_preview);
-        let leaf = if !redo_leaf {
-            None
-        } else if leaf_preview {
-            Some(foliage::leaf_mesh(placed.count(), &preview_leaf_params(p))?)
-        } else {
-            let t = clock.now_ms();
-            let dressed = foliage::leaf_mesh(placed.count(), p)?;
-            if leaf_shape_changed || prev.is_some_and(|c| c.leaf_preview) {
-                self.last_leaf_ms = Some(clock.now_ms() - t);
-            }
-            Some(dressed)
-        };
+        let (leaf, leaf_preview) =
+            self.dress(prev, p, placed.count(), from <= Stage::Leaf || placements.is_some(), quality, clock)?;
         // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
         // A preview bark goes without it; a drag of the leaves keeps the old one meanwhile
         // (a preview) when computing it would take over half the budget.
@@ -444,6 +370,41 @@ impl Session {
         })
     }
 
+    /// The leaf stage: the mesh drawn per leaf for `count` leaves, dressed again when `stale`
+    /// (new leaf parameters or new placements; the leaf itself is cached). A drag of the leaf's
+    /// shape whose last leaf took over half the budget gets a preview leaf, its texture one size
+    /// down (a quarter of the texels to vein, raster and bake). Returns the mesh (`None`: keep
+    /// the previous one) and whether the leaf is a preview.
+    fn dress(
+        &mut self,
+        prev: Option<&Current>,
+        p: &TreeParams,
+        count: usize,
+        stale: bool,
+        quality: Quality,
+        clock: &dyn Clock,
+    ) -> Result<(Option<LeafMesh>, bool), SylvaError> {
+        let over = match quality {
+            Quality::Preview { budget_ms } => self.last_leaf_ms.is_some_and(|ms| ms > budget_ms / 2.0),
+            Quality::Full => false,
+        };
+        let was_preview = prev.is_some_and(|c| c.leaf_preview);
+        let shape_changed = prev.is_none_or(|c| !foliage::same_leaf(&c.params, p));
+        let preview = over && (shape_changed || was_preview);
+        if !stale && was_preview == preview {
+            return Ok((None, preview));
+        }
+        if preview {
+            return Ok((Some(foliage::leaf_mesh(count, &preview_leaf_params(p))?), true));
+        }
+        let t = clock.now_ms();
+        let dressed = foliage::leaf_mesh(count, p)?;
+        if shape_changed || was_preview {
+            self.last_leaf_ms = Some(clock.now_ms() - t);
+        }
+        Ok((Some(dressed), false))
+    }
+
     /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),
     /// computed once per bark and cheap for leaf-only edits. `None` before the first update or
     /// while the bark is a preview.
@@ -485,48 +446,4 @@ impl Session {
             bark: c.params.bark_type,
         })
     }
-}
-
-/// The leaf parameters of a preview leaf: the texture one Texture Size level down (not below
-/// the parameter's minimum).
-fn preview_leaf_params(p: &TreeParams) -> TreeParams {
-    let mut q = p.clone();
-    q.leaf_texture_level = p.leaf_texture_level.saturating_sub(1).max(PREVIEW_MIN_TEXTURE_LEVEL);
-    q
-}
-
-/// Smallest Texture Size level a preview leaf goes down to (16 texels).
-const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
-
-/// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
-fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {
-    let (skeleton, markers) = match p.growth_mode {
-        GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
-        GrowthMode::SpaceColonization => {
-            let grown = growth::grow_with_progress(p, progress)?;
-            (growth::skeleton(p, &grown), grown.markers)
-        }
-    };
-    let envelope = skeleton::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
-    Ok(SkeletonOut { skeleton, markers, envelope })
-}
-
-/// The mesh stage at full quality: sweep and weld, then cut the holes.
-fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
-    let built = mesh::tube::build_with_stats(skeleton, p)?;
-    let mut mesh = built.mesh;
-    let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
-    let bounds = mesh.bounds();
-    Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, shade_stale: false, hash: None })
-}
-
-/// A preview bark: [`PREVIEW_QUALITY`] times the Mesh Quality, separate tubes, no holes.
-fn preview_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
-    let mut q = p.clone();
-    q.mesh_quality = (p.mesh_quality * PREVIEW_QUALITY).max(0.25);
-    q.weld = false;
-    q.hole_count = 0;
-    let mut bark = full_bark(skeleton, &q)?;
-    bark.preview = true;
-    Ok(bark)
 }

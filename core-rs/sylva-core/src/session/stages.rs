@@ -1,0 +1,116 @@
+//! The stages of a [`super::Session`] update: the skeleton, the full and the preview bark, the
+//! preview leaf's parameters, and [`Fresh`], what one update ran, assembled into the next
+//! [`Current`].
+
+use super::{Bark, Changes, Current, SkeletonOut, StageTimes, PREVIEW_QUALITY};
+use crate::crown_shade::CrownLight;
+use crate::error::SylvaError;
+use crate::foliage::Foliage;
+use crate::mesh::{self, TreeMesh};
+use crate::params::{GrowthMode, Stage, TreeParams};
+use crate::skeleton::{self, Skeleton};
+use crate::{growth, ENVELOPE_SAMPLES};
+
+/// The stages an update ran; `None` = reuse the previous result.
+pub(super) struct Fresh {
+    pub(super) params: TreeParams,
+    pub(super) skeleton: Option<SkeletonOut>,
+    pub(super) bark: Option<Bark>,
+    pub(super) placements: Option<(Foliage, Option<CrownLight>)>,
+    /// [`Current::leaves_preview`] of the result.
+    pub(super) leaves_preview: bool,
+    pub(super) leaf: Option<LeafMesh>,
+    /// [`Current::leaf_preview`] of the result.
+    pub(super) leaf_preview: bool,
+    /// The bark's new occlusion (with a new bark or new placements; empty for a preview).
+    pub(super) shade: Option<Vec<u8>>,
+    /// Whether the bark's occlusion is left from other leaves afterwards.
+    pub(super) shade_stale: bool,
+    pub(super) changes: Changes,
+    pub(super) times: StageTimes,
+    pub(super) from: Stage,
+}
+
+pub(super) type LeafMesh = (TreeMesh, Option<std::sync::Arc<crate::leaf::Leaf>>);
+
+impl Fresh {
+    /// The new current tree: fresh stages, the rest moved (not copied) out of `prev`.
+    pub(super) fn assemble(self, prev: Option<Current>) -> Current {
+        let (skeleton, mut bark, (mut foliage, light)) = match prev {
+            Some(c) => (
+                self.skeleton.unwrap_or(c.skeleton),
+                self.bark.unwrap_or(c.bark),
+                self.placements.unwrap_or((c.foliage, c.light)),
+            ),
+            None => (
+                self.skeleton.expect("a first update builds the skeleton"),
+                self.bark.expect("a first update sweeps the bark"),
+                self.placements.expect("a first update places the leaves"),
+            ),
+        };
+        if let Some((mesh, leaf)) = self.leaf {
+            (foliage.mesh, foliage.leaf) = (mesh, leaf);
+        }
+        if let Some(shade) = self.shade {
+            bark.mesh.shade = shade;
+            bark.hash = None;
+        }
+        bark.shade_stale = self.shade_stale;
+        Current {
+            params: self.params,
+            skeleton,
+            bark,
+            foliage,
+            light,
+            leaves_preview: self.leaves_preview,
+            leaf_preview: self.leaf_preview,
+            changes: self.changes,
+            times: self.times,
+            from: self.from,
+        }
+    }
+}
+
+/// The leaf parameters of a preview leaf: the texture one Texture Size level down (not below
+/// the parameter's minimum).
+pub(super) fn preview_leaf_params(p: &TreeParams) -> TreeParams {
+    let mut q = p.clone();
+    q.leaf_texture_level = p.leaf_texture_level.saturating_sub(1).max(PREVIEW_MIN_TEXTURE_LEVEL);
+    q
+}
+
+/// Smallest Texture Size level a preview leaf goes down to (16 texels).
+const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
+
+/// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
+pub(super) fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {
+    let (skeleton, markers) = match p.growth_mode {
+        GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
+        GrowthMode::SpaceColonization => {
+            let grown = growth::grow_with_progress(p, progress)?;
+            (growth::skeleton(p, &grown), grown.markers)
+        }
+    };
+    let envelope = skeleton::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
+    Ok(SkeletonOut { skeleton, markers, envelope })
+}
+
+/// The mesh stage at full quality: sweep and weld, then cut the holes.
+pub(super) fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+    let built = mesh::tube::build_with_stats(skeleton, p)?;
+    let mut mesh = built.mesh;
+    let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
+    let bounds = mesh.bounds();
+    Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, shade_stale: false, hash: None })
+}
+
+/// A preview bark: [`PREVIEW_QUALITY`] times the Mesh Quality, separate tubes, no holes.
+pub(super) fn preview_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+    let mut q = p.clone();
+    q.mesh_quality = (p.mesh_quality * PREVIEW_QUALITY).max(0.25);
+    q.weld = false;
+    q.hole_count = 0;
+    let mut bark = full_bark(skeleton, &q)?;
+    bark.preview = true;
+    Ok(bark)
+}
