@@ -36,16 +36,22 @@ pub fn fbm(u: f32, v: f32, px: i32, py: i32, seed: u32) -> f32 {
 /// Cellular noise: one feature point per cell of a `px` × `py` grid over the tile. Returns the
 /// distances to the nearest and second-nearest points (in cell widths along u; v distances are
 /// scaled by `px / py` so elongated cells stay elongated) and the nearest cell's id hash in [0, 1).
+/// Each column of cells is shifted along v by its own fraction of a cell (periodic over the
+/// tile): on an aligned grid the borders between two rows of cells run across the whole tile,
+/// which the tiling around a stem turns into rings.
 pub fn cells(u: f32, v: f32, px: i32, py: i32, seed: u32) -> (f32, f32, f32) {
     let (x, y) = (u * px as f32, v * py as f32);
-    let (xi, yi) = (x.floor() as i32, y.floor() as i32);
+    let xi = x.floor() as i32;
     let aspect = py as f32 / px as f32;
     let (mut f1, mut f2, mut id) = (f32::MAX, f32::MAX, 0.0);
-    for dy in -1..=1 {
-        for dx in -1..=1 {
-            let (cx, cy) = (xi + dx, yi + dy);
+    for dx in -1..=1 {
+        let cx = xi + dx;
+        let shift = lattice(cx, 0, px, 1, seed + 53);
+        let yi = (y - shift).floor() as i32;
+        for dy in -1..=1 {
+            let cy = yi + dy;
             let fx = cx as f32 + 0.1 + 0.8 * lattice(cx, cy, px, py, seed);
-            let fy = cy as f32 + 0.1 + 0.8 * lattice(cx, cy, px, py, seed + 17);
+            let fy = cy as f32 + shift + 0.1 + 0.8 * lattice(cx, cy, px, py, seed + 17);
             let (ex, ey) = (fx - x, (fy - y) / aspect);
             let d = (ex * ex + ey * ey).sqrt();
             if d < f1 {
