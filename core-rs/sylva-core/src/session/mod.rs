@@ -58,6 +58,17 @@ pub enum Quality {
     },
 }
 
+impl Quality {
+    /// Whether a stage whose last full run took `last` ms gets a preview: a drag (`Preview`)
+    /// and that run over half the budget.
+    fn over_half_budget(self, last: Option<f64>) -> bool {
+        match self {
+            Quality::Preview { budget_ms } => last.is_some_and(|ms| ms > budget_ms / 2.0),
+            Quality::Full => false,
+        }
+    }
+}
+
 /// What an update changed, relative to the previous successful update of the session.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Changes {
@@ -292,10 +303,7 @@ impl Session {
 
         // Placed again when their inputs changed, or when their tints were lit by the previous
         // leaves (a drag) and a full answer is wanted.
-        let over = |last: Option<f64>| match quality {
-            Quality::Preview { budget_ms } => last.is_some_and(|ms| ms > budget_ms / 2.0),
-            Quality::Full => false,
-        };
+        let over = |last: Option<f64>| quality.over_half_budget(last);
         let by_previous = over(self.last_place_ms).then(|| prev.and_then(|c| c.light.as_ref())).flatten();
         let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.leaves_preview && by_previous.is_none());
         let placements = if place_stale {
@@ -384,10 +392,7 @@ impl Session {
         quality: Quality,
         clock: &dyn Clock,
     ) -> Result<(Option<LeafMesh>, bool), SylvaError> {
-        let over = match quality {
-            Quality::Preview { budget_ms } => self.last_leaf_ms.is_some_and(|ms| ms > budget_ms / 2.0),
-            Quality::Full => false,
-        };
+        let over = quality.over_half_budget(self.last_leaf_ms);
         let was_preview = prev.is_some_and(|c| c.leaf_preview);
         let shape_changed = prev.is_none_or(|c| !foliage::same_leaf(&c.params, p));
         let preview = over && (shape_changed || was_preview);
