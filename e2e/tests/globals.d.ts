@@ -8,6 +8,7 @@ interface Window {
     trees?(): { id: number; at: number; preview: boolean }[];
     pauseRendering?(paused: boolean): void;
     probeFrame?(): number | null;
+    leafPullCheck?(): { covered: number; differing: number } | null;
     growth?(): { markers: number; volumes: number; dragging: boolean };
   };
   /** Set by the tests' init scripts. */

@@ -116,6 +116,23 @@ test('leaves render on the tree (green pixels on the canvas)', async ({ page }) 
   expect(await greenShare(page)).toBeLessThan(leafy / 4);
 });
 
+test('leaves drawn by vertex pulling match an InstancedMesh of the same arrays', async ({
+  page,
+}) => {
+  // The viewer draws leaves in one plain draw whose vertex shader reads each leaf from float
+  // textures (leafPull.ts; software WebGL runs every instance of an instanced draw as a draw of
+  // its own). The debug hook draws the current leaves both ways and compares the pixels.
+  for (const query of ['', '&leaf_outline=2&leaf_lobes=5&leaf_lobe_depth=0.6&leaves=12']) {
+    await page.goto(`/?debug=1${query}`);
+    await waitForTree(page);
+    const check = await page.evaluate(() => window.__sylva?.leafPullCheck?.() ?? null);
+    expect(check, query).not.toBeNull();
+    console.log(`leaf pull check${query}: ${JSON.stringify(check)}`);
+    expect(check!.covered, `leaf pixels${query}`).toBeGreaterThan(2000);
+    expect(check!.differing, `differing pixels${query}`).toBeLessThan(check!.covered * 0.002);
+  }
+});
+
 test('a fir wears shoots of needles and reads as a dark mass from where the viewer frames it', async ({
   page,
 }) => {

@@ -17,6 +17,7 @@ export function useViewerDebugHook(viewerRef: RefObject<TreeViewer | null>): voi
           if (viewer) viewer.rendering = !paused;
         },
         probeFrame: () => viewerRef.current?.probeFrame() ?? null,
+        leafPullCheck: () => viewerRef.current?.leafPullCheck() ?? null,
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
           if (host) lookFrom(host, from, to);

@@ -1,4 +1,5 @@
 /** The `window.__sylva` debug hook (dev mode or `?debug=1` only). */
+import type { LeafPullCheck } from '../viewer/leafPullCheck';
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
 import type { WindSettings } from '../../../packages/sylva-trees/src/viewer/windSettings';
@@ -64,6 +65,8 @@ export interface SylvaDebugHook {
   wind(): WindSettings & { time: number; vertexData: boolean };
   /** Renders one frame now and returns a hash of the canvas pixels (`WxH:hash`). */
   frameHash(): string | null;
+  /** Leaves drawn pulled and as an InstancedMesh, compared (null before the first tree). */
+  leafPullCheck(): LeafPullCheck | null;
   /** Size of the bark colour map, null before it arrived. */
   barkTexture(): { width: number; height: number } | null;
 }

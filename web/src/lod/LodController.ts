@@ -8,6 +8,10 @@
 import { leafTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
 import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
 import {
+  LEAF_INSTANCED_MATERIAL_KEY,
+  LEAF_MATRICES_KEY,
+} from '../../../packages/sylva-trees/src/viewer/Foliage';
+import {
   BufferAttribute,
   BufferGeometry,
   DoubleSide,
@@ -315,6 +319,12 @@ export class LodController {
   private baseMaterial(kind: 'bark' | 'leaves'): Material | null {
     for (const o of this.base) {
       const m = (o as Mesh).material;
+      // Pulled leaves (leafPull.ts) hand over the same look for an InstancedMesh.
+      const instanced = o.userData[LEAF_INSTANCED_MATERIAL_KEY] as Material | undefined;
+      if (instanced) {
+        if (kind === 'leaves') return instanced;
+        continue;
+      }
       const isLeaves = (o as InstancedMesh).isInstancedMesh === true;
       if (kind === 'leaves' && isLeaves && m && !Array.isArray(m)) return m;
       if (kind === 'bark' && !isLeaves) {
@@ -465,7 +475,10 @@ export function findBaseObjects(
     const mesh = o as Partial<InstancedMesh>;
     if (mesh.isMesh && mesh.geometry) {
       const position = mesh.geometry.getAttribute('position');
-      if (mesh.isInstancedMesh) {
+      const pulled: unknown = o.userData[LEAF_MATRICES_KEY];
+      if (pulled !== undefined) {
+        if (pulled === buffers.foliage?.matrices) leaf[0].push(o);
+      } else if (mesh.isInstancedMesh) {
         if (mesh.instanceMatrix?.array === buffers.foliage?.matrices) leaf[0].push(o);
         else if (leaves > 0 && mesh.count === leaves) leaf[1].push(o);
       } else if (position) {

@@ -23,6 +23,7 @@ import type { WindController } from '../../../packages/sylva-trees/src/viewer/wi
 import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
 import { antialiasFor, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
+import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
 import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
@@ -349,6 +350,13 @@ export class TreeViewer {
       this.shadowsDeferred = false;
       this.requestRender();
     }
+  }
+
+  /** Test support: the current leaves drawn pulled and instanced, compared (leafPullCheck.ts). */
+  leafPullCheck(): LeafPullCheck | null {
+    const buffers = this.tree.buffers;
+    if (!buffers) return null;
+    return checkLeafPull(this.renderer, this.camera, buffers, this.tree.leafMap);
   }
 
   /**

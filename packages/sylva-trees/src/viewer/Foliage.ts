@@ -1,26 +1,19 @@
 /**
- * The leaves of the tree: one `InstancedMesh` of the core's leaf geometry, with the instance
- * matrices and colours taken straight from the transferred typed arrays (no per-leaf loop on
- * the main thread) and a double-sided material that reads as thin leaf tissue: the baked leaf
- * texture with an alpha test, plus a dim emissive copy of it standing in for light shining
- * through the blade from behind.
+ * The leaves of the tree: one draw of the core's leaf mesh per leaf, by vertex pulling
+ * (`leafPull.ts`: the transferred matrices and tints go into float textures as they are, no
+ * per-leaf loop on the main thread), with a double-sided material that reads as thin leaf
+ * tissue: the baked leaf texture with an alpha test, plus a dim emissive copy of it standing in
+ * for light shining through the blade from behind.
  */
-import type { DataTexture, InstancedMesh } from 'three';
-import {
-  BufferAttribute,
-  BufferGeometry,
-  DoubleSide,
-  MeshStandardMaterial,
-  type Material,
-  type Object3D,
-} from 'three';
+import type { DataTexture } from 'three';
+import { DoubleSide, Mesh, MeshStandardMaterial, type Material, type Object3D } from 'three';
 import type {
   FoliageBuffers,
   LeafMeshBuffers,
   LeafTextureBuffers,
   TreeUpdate,
 } from '../core/types';
-import { wrapInstances } from './instances';
+import { applyLeafPull, LeafPullData } from './leafPull';
 import { leafTexture as makeLeafTexture } from './leafTexture';
 
 type Instances = NonNullable<TreeUpdate['instances']>;
@@ -28,163 +21,139 @@ type Instances = NonNullable<TreeUpdate['instances']>;
 /** Strength of the leaf's dim emissive copy of its texture (light shining through the blade). */
 export const LEAF_TRANSLUCENCY = 0.22;
 
-/** Owns the leaf mesh, texture and material. */
-export class Foliage {
-  /** The leaf material (the viewer patches it with wind). */
-  readonly material = new MeshStandardMaterial({
+/** `userData` key of the leaf mesh: the matrices array it draws (LOD code finds it by it). */
+export const LEAF_MATRICES_KEY = 'sylvaLeafMatrices';
+/** `userData` key of the leaf mesh: the same look for an `InstancedMesh` of leaves. */
+export const LEAF_INSTANCED_MATERIAL_KEY = 'sylvaInstancedLeafMaterial';
+
+/** The leaf look: thin double-sided tissue, alpha-tested, lit through from behind. */
+function leafMaterial(vertexColors: boolean): MeshStandardMaterial {
+  return new MeshStandardMaterial({
     color: '#ffffff',
     roughness: 0.7,
     side: DoubleSide,
     alphaTest: 0.5,
     emissive: '#ffffff',
     emissiveIntensity: LEAF_TRANSLUCENCY,
+    // Pulled leaves take their tints as vertex colours (see leafPull.ts).
+    vertexColors,
   });
+}
+
+/** Owns the leaf textures, mesh and materials. */
+export class Foliage {
+  /** The leaf material (the viewer patches it with wind; it is made to pull its leaves). */
+  readonly material = leafMaterial(true);
+  /**
+   * The same look for instanced leaves (`InstancedMesh`, tints from `instanceColor`): the
+   * levels of detail draw theirs with it. The viewer patches it as it patches `material`.
+   */
+  readonly instancedMaterial = leafMaterial(false);
   private texture: DataTexture | null = null;
-  private mesh: InstancedMesh | null = null;
-  /** The leaf mesh every instance draws (kept across placement changes). */
-  private geometry: BufferGeometry | null = null;
-  /** The current per-leaf matrices and tints. */
-  private instances: Instances | null = null;
-  /** Shadow depth material given to every leaf mesh (the wind's, so shadows move too). */
-  depthMaterial: Material | undefined = undefined;
+  private readonly data = new LeafPullData();
+  private mesh: Mesh | null = null;
+  private depth: Material | undefined = undefined;
+  /** Whether the leaf material pulls its leaves yet (patched last, after the viewer's patches). */
+  private pulled = false;
 
   constructor(private readonly parent: Object3D) {}
 
   /** Number of leaves shown. */
   get count(): number {
-    return this.mesh?.count ?? 0;
+    return this.mesh ? this.data.count : 0;
+  }
+
+  /** Shadow depth material of the leaves (the wind's, so shadows move too); made to pull. */
+  get depthMaterial(): Material | undefined {
+    return this.depth;
+  }
+
+  set depthMaterial(material: Material | undefined) {
+    if (material) applyLeafPull(material, this.data.uniforms);
+    this.depth = material;
+    if (this.mesh) this.mesh.customDepthMaterial = material;
   }
 
   /** Replaces the leaves (an empty buffer set removes them). */
   set(buffers: FoliageBuffers | undefined): void {
-    this.removeMesh();
-    this.geometry?.dispose();
-    this.geometry = null;
-    this.instances = null;
-    if (!buffers) return;
     this.update({
-      instances: { matrices: buffers.matrices, colors: buffers.colors },
-      leafMesh: buffers,
-      ...(buffers.texture ? { leafTexture: buffers.texture } : {}),
+      instances: buffers
+        ? { matrices: buffers.matrices, colors: buffers.colors }
+        : { matrices: new Float32Array(0), colors: new Float32Array(0) },
+      ...(buffers ? { leafMesh: buffers } : {}),
+      ...(buffers?.texture ? { leafTexture: buffers.texture } : {}),
     });
   }
 
   /**
-   * Applies the leaf parts of a session update; absent parts stay. Arrays of the sizes already
-   * on the GPU are swapped in place (no new buffers); other sizes get new objects and the old
-   * ones are disposed.
+   * Applies the leaf parts of a session update; absent parts stay. The arrays are copied into
+   * the leaf textures, which keep their GPU storage while their number of rows stays the same.
    */
   update(update: Pick<TreeUpdate, 'instances' | 'leafMesh' | 'leafTexture'>): void {
     if (update.leafTexture) this.setTexture(update.leafTexture);
     if (update.leafMesh) this.setLeafMesh(update.leafMesh);
     if (update.instances) this.setInstances(update.instances);
-    else if (update.leafMesh) this.syncMesh(false);
+    this.syncMesh(update.instances?.matrices);
   }
 
   private setInstances(instances: Instances): void {
-    const count = instances.colors.length / 3;
-    const mesh = this.mesh;
-    this.instances = instances;
-    if (mesh && count > 0 && mesh.count === count && mesh.geometry === this.geometry) {
-      mesh.instanceMatrix.array = instances.matrices;
-      mesh.instanceMatrix.needsUpdate = true;
-      if (mesh.instanceColor) {
-        mesh.instanceColor.array = instances.colors;
-        mesh.instanceColor.needsUpdate = true;
-      }
-      return;
-    }
-    this.syncMesh(true);
+    this.data.setInstances(instances.matrices, instances.colors);
   }
 
-  /** Makes the instanced mesh draw the current leaf geometry and instances (`rebuild`: anew). */
-  private syncMesh(rebuild: boolean): void {
-    const instances = this.instances;
-    const count = instances ? instances.colors.length / 3 : 0;
-    if (!this.geometry || !instances || count === 0) {
+  private setLeafMesh(leaf: LeafMeshBuffers): void {
+    this.data.setMesh(leaf);
+  }
+
+  /** Adds the leaf mesh when there is something to draw, removes it when not. */
+  private syncMesh(matrices: Float32Array | undefined): void {
+    if (this.data.vertexCount === 0) {
       this.removeMesh();
       return;
     }
-    if (this.mesh && !rebuild) {
-      this.mesh.geometry = this.geometry;
-      return;
+    if (!this.pulled) {
+      applyLeafPull(this.material, this.data.uniforms);
+      this.pulled = true;
     }
-    this.removeMesh();
-    const mesh = wrapInstances(
-      this.geometry,
-      this.material,
-      instances.matrices,
-      instances.colors,
-      count,
-    );
-    // Bounds over every instance would loop over the leaves: the tree is framed by its bark.
-    mesh.frustumCulled = false;
-    if (this.depthMaterial) mesh.customDepthMaterial = this.depthMaterial;
-    mesh.castShadow = true;
-    mesh.receiveShadow = true;
-    this.mesh = mesh;
-    this.parent.add(mesh);
+    if (!this.mesh) {
+      const mesh = new Mesh(this.data.geometry, this.material);
+      mesh.name = 'sylva-leaves';
+      // The geometry has no positions to bound: the tree is framed by its bark.
+      mesh.frustumCulled = false;
+      if (this.depth) mesh.customDepthMaterial = this.depth;
+      mesh.castShadow = true;
+      mesh.receiveShadow = true;
+      this.mesh = mesh;
+      this.parent.add(mesh);
+    }
+    if (matrices) this.mesh.userData[LEAF_MATRICES_KEY] = matrices;
+    this.mesh.userData[LEAF_INSTANCED_MATERIAL_KEY] = this.instancedMaterial;
   }
 
   private setTexture(leafTexture: LeafTextureBuffers): void {
     this.texture?.dispose();
     const texture = makeLeafTexture(leafTexture);
     this.texture = texture;
-    this.material.map = texture;
-    this.material.emissiveMap = texture;
-    this.material.needsUpdate = true;
-  }
-
-  /** The leaf mesh: swapped into the current geometry when the sizes match, else a new one. */
-  private setLeafMesh(leaf: LeafMeshBuffers): void {
-    const g = this.geometry;
-    const same = (name: string, array: Float32Array) =>
-      (g?.getAttribute(name) as BufferAttribute | undefined)?.array.length === array.length;
-    if (
-      g &&
-      same('position', leaf.positions) &&
-      same('normal', leaf.normals) &&
-      same('uv', leaf.uvs) &&
-      g.getIndex()?.array.length === leaf.indices.length
-    ) {
-      for (const [name, array] of [
-        ['position', leaf.positions],
-        ['normal', leaf.normals],
-        ['uv', leaf.uvs],
-      ] as const) {
-        const attribute = g.getAttribute(name) as BufferAttribute;
-        attribute.array = array;
-        attribute.needsUpdate = true;
-      }
-      const index = g.getIndex() as BufferAttribute;
-      index.array = leaf.indices;
-      index.needsUpdate = true;
-      return;
+    for (const material of [this.material, this.instancedMaterial]) {
+      material.map = texture;
+      material.emissiveMap = texture;
+      material.needsUpdate = true;
     }
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(leaf.positions, 3));
-    geometry.setAttribute('normal', new BufferAttribute(leaf.normals, 3));
-    geometry.setAttribute('uv', new BufferAttribute(leaf.uvs, 2));
-    geometry.setIndex(new BufferAttribute(leaf.indices, 1));
-    this.geometry?.dispose();
-    this.geometry = leaf.indices.length > 0 ? geometry : null;
   }
 
-  /** Releases the geometry, texture and material. */
+  /** Releases the textures, geometry and material. */
   dispose(): void {
     this.removeMesh();
-    this.geometry?.dispose();
-    this.geometry = null;
+    this.data.dispose();
     this.texture?.dispose();
     this.texture = null;
     this.material.dispose();
+    this.instancedMaterial.dispose();
   }
 
-  /** Removes the instanced mesh (its instance buffers go with it; the leaf geometry stays). */
+  /** Removes the leaf mesh (the leaf textures stay for the next leaves). */
   private removeMesh(): void {
     if (!this.mesh) return;
     this.parent.remove(this.mesh);
-    this.mesh.dispose();
     this.mesh = null;
   }
 }

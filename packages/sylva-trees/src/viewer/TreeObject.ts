@@ -14,6 +14,7 @@ import {
   Sphere,
   Vector3,
   type BufferGeometry,
+  type Texture,
 } from 'three';
 import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
 import { BarkTextures, createBarkMaterial } from './barkMaterial';
@@ -53,10 +54,12 @@ export class TreeObject {
     this.wind = new WindController(onChange);
     this.wind.apply(this.bark, 'bark');
     this.wind.apply(this.leaves, 'bark');
-    this.wind.apply(this.foliage.material, 'leaves');
+    for (const leaves of [this.foliage.material, this.foliage.instancedMaterial]) {
+      this.wind.apply(leaves, 'leaves');
+      applyLeafTranslucency(leaves);
+      applyLeafCoverage(leaves);
+    }
     applyBarkLook(this.bark, this.barkLook);
-    applyLeafTranslucency(this.foliage.material);
-    applyLeafCoverage(this.foliage.material);
     this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
   }
 
@@ -68,6 +71,11 @@ export class TreeObject {
   /** The bark mesh, null before the first tree. */
   get barkMesh(): Mesh<BufferGeometry, MeshStandardMaterial[]> | null {
     return this.mesh;
+  }
+
+  /** The leaf texture (null before the first leaves). */
+  get leafMap(): Texture | null {
+    return this.foliage.material.map;
   }
 
   /** Number of leaves drawn. */

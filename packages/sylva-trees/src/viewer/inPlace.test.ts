@@ -1,11 +1,19 @@
 /**
  * Session updates reach the GPU objects in place: same-size arrays are swapped into the
- * existing attributes (no new buffers), other sizes get new objects and the old are disposed.
+ * existing attributes (no new buffers), other sizes get new objects and the old are disposed;
+ * leaves are copied into their textures, which are replaced only when their rows change.
  */
-import { Group, type BufferAttribute, type InstancedMesh } from 'three';
+import {
+  Group,
+  type BufferAttribute,
+  type DataTexture,
+  type Mesh,
+  type MeshStandardMaterial,
+} from 'three';
 import { describe, expect, it } from 'vitest';
 import type { BarkBuffers, TreeMeta } from '../core/types';
-import { Foliage } from './Foliage';
+import { Foliage, LEAF_MATRICES_KEY } from './Foliage';
+import { LEAVES_PER_ROW, type LeafPullUniforms } from './leafPull';
 import { buildTreeGeometry, updateTreeGeometry } from './geometry';
 
 const META: TreeMeta = {
@@ -55,9 +63,9 @@ describe('bark geometry in place', () => {
   });
 });
 
-function leaves(count: number) {
+function leaves(count: number, value = 0) {
   return {
-    matrices: new Float32Array(count * 16),
+    matrices: new Float32Array(count * 16).fill(value),
     colors: new Float32Array(count * 3).fill(1),
   };
 }
@@ -69,64 +77,81 @@ const LEAF_MESH = {
   indices: new Uint32Array([0, 1, 2]),
 };
 
-function meshOf(parent: Group): InstancedMesh {
-  const m = parent.children[0] as InstancedMesh | undefined;
+function meshOf(parent: Group): Mesh {
+  const m = parent.children[0] as Mesh | undefined;
   if (!m) throw new Error('no leaves');
   return m;
 }
 
+/** The texture a pulled-leaf uniform points at. */
+function uniformTexture(mesh: Mesh, name: keyof LeafPullUniforms): DataTexture {
+  const material = mesh.material as MeshStandardMaterial;
+  const shader = {
+    uniforms: {} as Record<string, { value: unknown }>,
+    vertexShader: 'void main() {',
+  };
+  material.onBeforeCompile(shader as never, null as never);
+  return shader.uniforms[name]!.value as DataTexture;
+}
+
 describe('foliage in place', () => {
-  it('new placements of the same count go into the same instanced mesh', () => {
+  it('new placements of the same count go into the same mesh and textures', () => {
     const parent = new Group();
     const foliage = new Foliage(parent);
     foliage.update({ instances: leaves(5), leafMesh: LEAF_MESH });
     const mesh = meshOf(parent);
-    const next = leaves(5);
+    const texture = uniformTexture(mesh, 'sylvaLeafMatrices');
+    const version = texture.version;
+    const next = leaves(5, 7);
     foliage.update({ instances: next });
     expect(meshOf(parent)).toBe(mesh);
-    expect(mesh.instanceMatrix.array).toBe(next.matrices);
-    expect(mesh.instanceColor?.array).toBe(next.colors);
+    expect(uniformTexture(mesh, 'sylvaLeafMatrices')).toBe(texture);
+    expect(texture.version).toBe(version + 1);
+    expect(Array.from((texture.image.data as Float32Array).subarray(0, 80))).toEqual(
+      Array.from(next.matrices),
+    );
+    expect(mesh.userData[LEAF_MATRICES_KEY]).toBe(next.matrices);
+    expect(mesh.geometry.drawRange.count).toBe(5 * 3);
   });
 
-  it('another count makes a new mesh and disposes the old; the leaf geometry stays', () => {
+  it('a count that needs another number of texture rows gets a new texture, the old is disposed', () => {
     const parent = new Group();
     const foliage = new Foliage(parent);
     foliage.update({ instances: leaves(5), leafMesh: LEAF_MESH });
     const mesh = meshOf(parent);
+    const texture = uniformTexture(mesh, 'sylvaLeafMatrices');
     let disposed = 0;
-    mesh.addEventListener('dispose', () => disposed++);
-    let geometryDisposed = 0;
-    mesh.geometry.addEventListener('dispose', () => geometryDisposed++);
+    texture.addEventListener('dispose', () => disposed++);
     foliage.update({ instances: leaves(7) });
-    expect(parent.children).toHaveLength(1);
-    expect(meshOf(parent)).not.toBe(mesh);
-    expect(meshOf(parent).count).toBe(7);
-    expect(meshOf(parent).geometry).toBe(mesh.geometry);
+    expect(uniformTexture(mesh, 'sylvaLeafMatrices')).toBe(texture);
+    expect(disposed).toBe(0);
+    foliage.update({ instances: leaves(LEAVES_PER_ROW + 1) });
+    const bigger = uniformTexture(mesh, 'sylvaLeafMatrices');
+    expect(bigger).not.toBe(texture);
+    expect(bigger.image.height).toBe(2);
     expect(disposed).toBe(1);
-    expect(geometryDisposed).toBe(0);
+    expect(meshOf(parent)).toBe(mesh);
+    expect(foliage.count).toBe(LEAVES_PER_ROW + 1);
   });
 
-  it('a new leaf mesh of the same size is swapped in; another size replaces the geometry', () => {
+  it('a new leaf mesh goes into the leaf-mesh texture and sets the vertices drawn', () => {
     const parent = new Group();
     const foliage = new Foliage(parent);
     foliage.update({ instances: leaves(2), leafMesh: LEAF_MESH });
-    const geometry = meshOf(parent).geometry;
-    const same = { ...LEAF_MESH, positions: new Float32Array(9).fill(2) };
-    foliage.update({ leafMesh: same });
-    expect(meshOf(parent).geometry).toBe(geometry);
-    expect(geometry.getAttribute('position').array).toBe(same.positions);
-    let disposed = 0;
-    geometry.addEventListener('dispose', () => disposed++);
     const bigger = {
-      positions: new Float32Array(12),
-      normals: new Float32Array(12),
-      uvs: new Float32Array(8),
+      positions: new Float32Array([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]),
+      normals: new Float32Array([0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1]),
+      uvs: new Float32Array([0, 0, 1, 0, 1, 1, 0, 1]),
       indices: new Uint32Array([0, 1, 2, 0, 2, 3]),
     };
     foliage.update({ leafMesh: bigger });
-    expect(meshOf(parent).geometry).not.toBe(geometry);
-    expect(meshOf(parent).geometry.getIndex()?.count).toBe(6);
-    expect(disposed).toBe(1);
+    const mesh = meshOf(parent);
+    expect(mesh.geometry.drawRange.count).toBe(2 * 6);
+    const data = uniformTexture(mesh, 'sylvaLeafMesh').image.data as Float32Array;
+    // Row 0: corner 2's position and u; row 1: its normal and v; row 2: the triangle list.
+    expect(Array.from(data.subarray(8, 12))).toEqual([1, 1, 0, 1]);
+    expect(Array.from(data.subarray((6 + 2) * 4, (6 + 2) * 4 + 4))).toEqual([0, 0, 1, 1]);
+    expect([0, 1, 2, 3, 4, 5].map((k) => data[(12 + k) * 4])).toEqual([0, 1, 2, 0, 2, 3]);
     expect(foliage.count).toBe(2);
   });
 
@@ -142,5 +167,6 @@ describe('foliage in place', () => {
     expect(foliage.count).toBe(0);
     foliage.update({ instances: leaves(3), leafMesh: LEAF_MESH });
     expect(foliage.count).toBe(3);
+    expect(parent.children).toHaveLength(1);
   });
 });

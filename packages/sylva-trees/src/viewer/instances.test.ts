@@ -6,6 +6,7 @@ import {
   InstancedMesh,
   Matrix4,
   MeshBasicMaterial,
+  type Mesh,
 } from 'three';
 import { Foliage } from './Foliage';
 import { wrapInstances } from './instances';
@@ -31,7 +32,7 @@ describe('wrapInstances', () => {
     expect(m.elements.slice(12, 15)).toEqual([1, 2, 3]);
   });
 
-  it("is how the viewer's leaves are built", () => {
+  it("is not how the viewer's leaves are drawn: they are pulled, one plain draw", () => {
     const setMatrixAt = vi.spyOn(InstancedMesh.prototype, 'setMatrixAt');
     const parent = new Group();
     const n = 1000;
@@ -46,7 +47,10 @@ describe('wrapInstances', () => {
       leafHash: '',
     });
     expect(setMatrixAt).not.toHaveBeenCalled();
-    expect((parent.children[0] as InstancedMesh).count).toBe(n);
+    const leaves = parent.children[0] as Mesh;
+    expect((leaves as Partial<InstancedMesh>).isInstancedMesh).toBeUndefined();
+    expect(Object.keys(leaves.geometry.attributes)).toEqual([]);
+    expect(leaves.geometry.drawRange.count).toBe(3 * n);
   });
 
   it('shares an attribute and draws fewer instances than it holds', () => {

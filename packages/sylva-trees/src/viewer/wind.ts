@@ -10,8 +10,9 @@
  * Per-vertex data (bark): the core's `TreeMesh.wind` (8 floats per vertex) wrapped as one
  * interleaved buffer with two vec4 views, `windPivot` (pivot xyz, level) and `windParams`
  * (phase, stiffness, distance, radius). Without it (`uWindTree.z = 0`) the bark gets the main
- * bending and the position-based branch sway only. Leaves (an `InstancedMesh`) take their
- * attachment point from `instanceMatrix[3].xyz`.
+ * bending and the position-based branch sway only. Leaves (an `InstancedMesh`, or the viewer's
+ * pulled leaves, whose `instanceMatrix` is read from a texture) take their attachment point
+ * from `instanceMatrix[3].xyz`.
  */
 import {
   type BufferGeometry,
