@@ -10,7 +10,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("quaking_aspen", "14b7394c730bf1b2"),
     ("black_tupelo", "f152a72d17b516b1"),
     ("weeping_willow", "f8611f674b7856e0"),
-    ("ca_black_oak", "b97da7fc498e6272"),
+    ("ca_black_oak", "039431ee7c62e177"),
     ("fir", "c67f2b6ff88933b7"),
     ("oak", "2910d4991c4ee911"),
     ("cypress", "fe0bfcfb389de051"),

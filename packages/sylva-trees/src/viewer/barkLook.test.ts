@@ -30,6 +30,13 @@ describe('bark look', () => {
       expect(shader.fragmentShader).not.toMatch(new RegExp(`texture2D\\(\\s*${map}\\s*,`));
     }
     expect(shader.fragmentShader).not.toContain('#include <map_fragment>');
+    // The occlusion hides the reflections too, after the lights and before they are summed.
+    const f = shader.fragmentShader;
+    for (const term of ['indirectSpecular', 'directSpecular']) {
+      const at = f.indexOf(`reflectedLight.${term} *= vBark.z;`);
+      expect(at, term).toBeGreaterThan(f.indexOf('#include <lights_fragment_end>'));
+      expect(at, term).toBeLessThan(f.indexOf('vec3 totalSpecular'));
+    }
     expect(shader.vertexShader).toContain('attribute float barkRadius');
     expect(Object.keys(shader.uniforms)).toEqual(['uBarkTile', 'uBarkYoungRadius', 'uBarkYoung']);
     const once = shader.fragmentShader;

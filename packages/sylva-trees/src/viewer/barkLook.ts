@@ -4,7 +4,7 @@
  * tiles around = girth / (tile_at_1m · √girth), blended between the two nearest powers of two so
  * the seam at u = 1 still meets u = 0), thin stems fade to smooth young bark of the type's
  * colour, and the core's per-vertex occlusion (`TreeMesh.shade`: crown depth, tree holes)
- * darkens the colour. The stem radius comes from the wind data (`radius`, read from the same GPU
+ * darkens the colour and hides the reflections. The stem radius comes from the wind data (`radius`, read from the same GPU
  * buffer); GLSL lives in `shaders/bark*.glsl`.
  */
 import {
@@ -26,6 +26,13 @@ import roughnessFrag from './shaders/barkRoughness.frag.glsl?raw';
 /** Stem radius (m) assumed where a tree has no wind data. */
 export const FALLBACK_RADIUS = 0.3;
 const MARKER = '// sylva-bark-look';
+/**
+ * The occlusion darkens the colour (barkMap.frag.glsl), which scales the diffuse light; the
+ * reflections of the sky and the sun are hidden as much (the inside of a tree hole reflected
+ * the bright sky off its walls and read as lit bark).
+ */
+const SHADE_SPECULAR = `reflectedLight.indirectSpecular *= vBark.z;
+reflectedLight.directSpecular *= vBark.z;`;
 
 /** The bark look's uniforms, shared by every program of one material. */
 export interface BarkLookUniforms {
@@ -65,10 +72,10 @@ export function patchBarkShader(
   const normalMaps = ShaderChunk.normal_fragment_maps
     .replaceAll('texture2D( normalMap, vNormalMapUv )', 'barkSample( normalMap, vNormalMapUv )')
     .replace('mapN.xy *= normalScale;', 'mapN.xy *= normalScale * ( 1.0 - vBark.y );');
-  const ao = ShaderChunk.aomap_fragment.replaceAll(
+  const ao = `${ShaderChunk.aomap_fragment.replaceAll(
     'texture2D( aoMap, vAoMapUv )',
     'barkSample( aoMap, vAoMapUv )',
-  );
+  )}\n${SHADE_SPECULAR}`;
   let v = replaceOnce(
     shader.vertexShader,
     '#include <common>',

@@ -1,6 +1,7 @@
 //! The cavity of one hole (the thesis, §4.3: the extrude and subdivide steps of the 3ds Max
-//! recipe): the boundary loop gets a rolled callus lip (two rings raised [`LIP`] × the opening's
-//! half-size above the surface, curling over the edge), then a chamfered ring (inset toward the loop's centre and bevelled
+//! recipe): the boundary loop gets a rolled callus lip (three rings rising to [`LIP`] × the
+//! opening's half-size above the surface and curling over the edge, along a round copy of the
+//! loop, which on a coarse mesh zigzags around the ellipse), then a chamfered ring (inset toward the loop's centre and bevelled
 //! inward), and that rim is extruded inward along minus the surface normal into
 //! [`CAVITY_RINGS`] rings that narrow toward a closed bottom `hole_depth` × local radius below the
 //! surface; the cavity rings are then smoothed by a few Laplacian passes (the thesis' final
@@ -30,6 +31,20 @@ pub(super) struct Cavity {
     pub(super) hole: Hole,
 }
 
+/// The loop's offsets from its centre with their lengths low-pass filtered around the loop
+/// (three passes of a 1-2-1 kernel): same directions, a round outline.
+fn round_loop(q: &[Vec3]) -> Vec<Vec3> {
+    let m = q.len();
+    let mut len: Vec<f32> = q.iter().map(|v| v.length()).collect();
+    for _ in 0..3 {
+        let old = len.clone();
+        for i in 0..m {
+            len[i] = 0.25 * old[(i + m - 1) % m] + 0.5 * old[i] + 0.25 * old[(i + 1) % m];
+        }
+    }
+    q.iter().zip(&len).map(|(v, &l)| unit_or(*v, || Vec3::ZERO) * l).collect()
+}
+
 /// Build the cavity of one region (chamfered rim, extruded rings, bottom fan, smoothing,
 /// normals); None if any new triangle would be degenerate or wound against its normals.
 pub(super) fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavity> {
@@ -51,21 +66,35 @@ pub(super) fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavi
         }
     }
     let mean_q = q.iter().map(|v| v.length()).sum::<f32>() / m as f32;
-    let bevel = (0.3 * CHAMFER * mean_q).min(0.5 * r.depth);
+    // The wall drops right inside the lip, so the opening reads as a dark ellipse in its rim.
+    let bevel = (0.35 * mean_q).min(0.5 * r.depth);
     let lip = LIP * mean_q;
-    // The callus roll: two rings rise above the rim and curl over it, then the chamfer ring
-    // tucks under it; the cavity rings follow.
-    let roll = [(0.94, -lip), (0.86, -0.6 * lip)];
+    // The loop runs along mesh edges and zigzags in and out around the ellipse (a star on a
+    // coarse mesh); the rings inside it follow a round copy of it.
+    let round = round_loop(&q);
+    // The callus roll: three rings rise above the rim, crest and curl over into the opening,
+    // then the chamfer ring tucks under it; the cavity rings follow. No roll ring may reach
+    // past the (zigzag) rim it starts from.
+    let roll = [(0.97, -0.55 * lip), (0.9, -lip), (0.84, -0.6 * lip)];
     let rings = CAVITY_RINGS + 1 + roll.len();
+    let at_scale = |i: usize, s: f32| {
+        let inside = 0.96 * q[i].length();
+        let len = round[i].length();
+        if len * s > inside && len > 0.0 {
+            round[i] * (inside / len)
+        } else {
+            round[i] * s
+        }
+    };
     let mut ring_pos: Vec<Vec<Vec3>> = (0..rings)
         .map(|k| {
             if let Some(&(s, d)) = roll.get(k) {
-                return (0..m).map(|i| g + q[i] * s + n * (h[i] - d)).collect();
+                return (0..m).map(|i| g + at_scale(i, s) + n * (h[i] - d)).collect();
             }
             let a = (k - roll.len()) as f32 / CAVITY_RINGS as f32;
             let s = (1.0 - CHAMFER) * (1.0 - 0.35 * a * a);
             let d = bevel + (r.depth - bevel) * a;
-            (0..m).map(|i| g + q[i] * s + n * (h[i] * (1.0 - a) + h_c * a - d)).collect()
+            (0..m).map(|i| g + at_scale(i, s) + n * (h[i] * (1.0 - a) + h_c * a - d)).collect()
         })
         .collect();
     let bottom = g + n * (h_c - r.depth);

@@ -56,7 +56,7 @@ const ELONGATION: f32 = 1.5;
 const CHAMFER: f32 = 0.2;
 /// Height of the rolled callus lip around an opening, as a fraction of its half-size (the wound
 /// wood a tree grows over the edge of a cavity).
-const LIP: f32 = 0.12;
+const LIP: f32 = 0.22;
 /// Laplacian smoothing passes over the cavity rings.
 const SMOOTH_PASSES: usize = 4;
 
