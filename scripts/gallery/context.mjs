@@ -58,7 +58,8 @@ export async function galleryContext(browser, url, outDir, options = {}) {
     },
     /** Screenshot into `outDir/file` as a palette PNG; returns its size in bytes. */
     async shoot(file) {
-      const png = await page.screenshot({ type: 'png' });
+      // CA Black Oak (9 million bark triangles) takes about 9 s a frame in software WebGL.
+      const png = await page.screenshot({ type: 'png', timeout: 180_000 });
       const img = UPNG.decode(png);
       const rgba = UPNG.toRGBA8(img)[0];
       const small = Buffer.from(UPNG.encode([rgba], img.width, img.height, COLOURS));

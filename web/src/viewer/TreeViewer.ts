@@ -21,6 +21,7 @@ import type { TreeBuffers, TreeUpdate } from '../../../packages/sylva-trees/src/
 import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
 import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
+import { applySoftShadows } from '../../../packages/sylva-trees/src/viewer/softShadows';
 import { antialiasFor, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
@@ -109,6 +110,7 @@ export class TreeViewer {
       // Lambert: the ground fills most of the view; the sky's image-based light is for the tree.
       new MeshLambertMaterial({ color: GROUND_COLOR }),
     );
+    applySoftShadows(this.ground.material);
     this.ground.rotation.x = -Math.PI / 2;
     this.ground.receiveShadow = true;
     this.scene.add(this.ground);

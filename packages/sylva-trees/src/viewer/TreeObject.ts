@@ -23,6 +23,7 @@ import { Foliage } from './Foliage';
 import { buildTreeGeometry, updateShade, updateTreeGeometry } from './geometry';
 import { applyLeafCoverage } from './leafCoverage';
 import { applyLeafTranslucency } from './lighting';
+import { applySoftShadows } from './softShadows';
 import { mergeUpdate, updateOf } from './treeState';
 import { WindController } from './wind';
 
@@ -60,7 +61,18 @@ export class TreeObject {
       applyLeafCoverage(leaves);
     }
     applyBarkLook(this.bark, this.barkLook);
-    this.foliage.depthMaterial = this.wind.depthMaterial('leaves');
+    for (const material of [
+      this.bark,
+      this.leaves,
+      this.foliage.material,
+      this.foliage.instancedMaterial,
+    ]) {
+      applySoftShadows(material);
+    }
+    this.foliage.setDepthMaterials(
+      this.wind.depthMaterial('leaves', 'pulled'),
+      this.wind.depthMaterial('leaves'),
+    );
   }
 
   /** The whole current tree, null before the first update. */

@@ -7,12 +7,13 @@ import {
   Group,
   type BufferAttribute,
   type DataTexture,
+  type InstancedMesh,
   type Mesh,
   type MeshStandardMaterial,
 } from 'three';
 import { describe, expect, it } from 'vitest';
 import type { BarkBuffers, TreeMeta } from '../core/types';
-import { Foliage, LEAF_MATRICES_KEY } from './Foliage';
+import { Foliage, LEAF_MATRICES_KEY, PULL_MAX_INDICES } from './Foliage';
 import { LEAVES_PER_ROW, type LeafPullUniforms } from './leafPull';
 import { buildTreeGeometry, updateTreeGeometry } from './geometry';
 
@@ -168,5 +169,35 @@ describe('foliage in place', () => {
     foliage.update({ instances: leaves(3), leafMesh: LEAF_MESH });
     expect(foliage.count).toBe(3);
     expect(parent.children).toHaveLength(1);
+  });
+
+  it('a leaf mesh of more than PULL_MAX_INDICES indices is instanced, in place; back to pulled', () => {
+    const parent = new Group();
+    const foliage = new Foliage(parent);
+    const triangles = PULL_MAX_INDICES / 3 + 1;
+    const big = {
+      positions: new Float32Array(9 * triangles),
+      normals: new Float32Array(9 * triangles),
+      uvs: new Float32Array(6 * triangles),
+      indices: Uint32Array.from({ length: 3 * triangles }, (_, i) => i),
+    };
+    foliage.update({ instances: leaves(5), leafMesh: big });
+    const mesh = meshOf(parent) as InstancedMesh;
+    expect(mesh.isInstancedMesh).toBe(true);
+    expect(mesh.count).toBe(5);
+    const next = leaves(5, 3);
+    foliage.update({ instances: next });
+    expect(meshOf(parent)).toBe(mesh);
+    expect(mesh.instanceMatrix.array).toBe(next.matrices);
+    expect(mesh.instanceColor?.array).toBe(next.colors);
+    foliage.update({ instances: leaves(6) });
+    expect(parent.children).toHaveLength(1);
+    expect((meshOf(parent) as InstancedMesh).count).toBe(6);
+    // A small leaf again: pulled, the instanced mesh gone.
+    foliage.update({ leafMesh: LEAF_MESH });
+    expect(parent.children).toHaveLength(1);
+    expect((meshOf(parent) as Partial<InstancedMesh>).isInstancedMesh).toBeUndefined();
+    expect(meshOf(parent).geometry.drawRange.count).toBe(6 * 3);
+    expect(foliage.count).toBe(6);
   });
 });

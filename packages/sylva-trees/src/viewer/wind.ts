@@ -198,7 +198,7 @@ export class WindController {
   readonly uniforms = createWindUniforms();
   readonly clock = new WindClock();
   private current: WindSettings = initialWind();
-  private readonly depth = new Map<WindKind, MeshDepthMaterial>();
+  private readonly depth = new Map<string, MeshDepthMaterial>();
 
   /** `onChange` asks for a new frame (settings or time changed). */
   constructor(private readonly onChange: () => void = () => undefined) {
@@ -260,12 +260,16 @@ export class WindController {
     applyWind(material, this.uniforms, kind);
   }
 
-  /** The (shared) shadow depth material for `kind`. */
-  depthMaterial(kind: WindKind): MeshDepthMaterial {
-    let material = this.depth.get(kind);
+  /**
+   * The (shared) shadow depth material for `kind`; `variant` names another one of the same kind
+   * (pulled leaves patch theirs further).
+   */
+  depthMaterial(kind: WindKind, variant = ''): MeshDepthMaterial {
+    const key = `${kind}${variant}`;
+    let material = this.depth.get(key);
     if (!material) {
       material = createWindDepthMaterial(this.uniforms, kind);
-      this.depth.set(kind, material);
+      this.depth.set(key, material);
     }
     return material;
   }
