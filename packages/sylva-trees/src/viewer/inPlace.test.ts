@@ -1,7 +1,7 @@
 /**
  * Session updates reach the GPU objects in place: same-size arrays are swapped into the
  * existing attributes (no new buffers), other sizes get new objects and the old are disposed;
- * leaves are copied into their textures, which are replaced only when their rows change.
+ * leaves are copied into their textures, replaced only when the leaves outgrow or halve them.
  */
 import {
   Group,
@@ -14,7 +14,7 @@ import {
 import { describe, expect, it } from 'vitest';
 import type { BarkBuffers, TreeMeta } from '../core/types';
 import { Foliage, LEAF_MATRICES_KEY, PULL_MAX_INDICES } from './Foliage';
-import { LEAVES_PER_ROW, type LeafPullUniforms } from './leafPull';
+import { LEAVES_PER_ROW, ROW_STEP, type LeafPullUniforms } from './leafPull';
 import { buildTreeGeometry, updateTreeGeometry } from './geometry';
 
 const META: TreeMeta = {
@@ -115,24 +115,31 @@ describe('foliage in place', () => {
     expect(mesh.geometry.drawRange.count).toBe(5 * 3);
   });
 
-  it('a count that needs another number of texture rows gets a new texture, the old is disposed', () => {
+  it('leaf counts within the allocated rows keep the texture; outgrowing or halving replaces it', () => {
     const parent = new Group();
     const foliage = new Foliage(parent);
     foliage.update({ instances: leaves(5), leafMesh: LEAF_MESH });
     const mesh = meshOf(parent);
     const texture = uniformTexture(mesh, 'sylvaLeafMatrices');
+    expect(texture.image.height).toBe(ROW_STEP);
     let disposed = 0;
     texture.addEventListener('dispose', () => disposed++);
-    foliage.update({ instances: leaves(7) });
-    expect(uniformTexture(mesh, 'sylvaLeafMatrices')).toBe(texture);
+    // A drag of the leaf count: every step copies into the same texture.
+    for (const n of [7, LEAVES_PER_ROW + 1, ROW_STEP * LEAVES_PER_ROW]) {
+      foliage.update({ instances: leaves(n) });
+      expect(uniformTexture(mesh, 'sylvaLeafMatrices'), `${n}`).toBe(texture);
+      expect(mesh.geometry.drawRange.count).toBe(n * 3);
+    }
     expect(disposed).toBe(0);
-    foliage.update({ instances: leaves(LEAVES_PER_ROW + 1) });
+    foliage.update({ instances: leaves(ROW_STEP * LEAVES_PER_ROW + 1) });
     const bigger = uniformTexture(mesh, 'sylvaLeafMatrices');
     expect(bigger).not.toBe(texture);
-    expect(bigger.image.height).toBe(2);
+    expect(bigger.image.height).toBe(2 * ROW_STEP);
     expect(disposed).toBe(1);
+    foliage.update({ instances: leaves(3) });
+    expect(uniformTexture(mesh, 'sylvaLeafMatrices').image.height).toBe(ROW_STEP);
     expect(meshOf(parent)).toBe(mesh);
-    expect(foliage.count).toBe(LEAVES_PER_ROW + 1);
+    expect(foliage.count).toBe(3);
   });
 
   it('a new leaf mesh goes into the leaf-mesh texture and sets the vertices drawn', () => {

@@ -7,6 +7,7 @@ import {
   LEAVES_PER_ROW,
   LeafPullData,
   pullLeafVertexShader,
+  ROW_STEP,
 } from './leafPull';
 import { applyWind, createWindUniforms } from './wind';
 
@@ -70,8 +71,8 @@ describe('pulled leaf textures', () => {
     data.setInstances(matrices, tints);
     const m = data.uniforms.sylvaLeafMatrices.value!;
     const t = data.uniforms.sylvaLeafTints.value!;
-    expect([m.image.width, m.image.height]).toEqual([4 * LEAVES_PER_ROW, 2]);
-    expect([t.image.width, t.image.height]).toEqual([LEAVES_PER_ROW, 2]);
+    expect([m.image.width, m.image.height]).toEqual([4 * LEAVES_PER_ROW, ROW_STEP]);
+    expect([t.image.width, t.image.height]).toEqual([LEAVES_PER_ROW, ROW_STEP]);
     expect(m.internalFormat).toBe('RGBA32F');
     expect(t.internalFormat).toBe('RGB32F');
     // Leaf LEAVES_PER_ROW + 1 starts the second row's second group of 4 texels.

@@ -16,7 +16,8 @@
  * - leaf mesh: `max(V, I)` × 3 RGBA: row 0 the corners' positions with u in w, row 1 their
  *   normals with v in w, row 2 the triangle list's vertex indices in x.
  * The main thread only copies the transferred arrays into the textures' storage (a bulk copy,
- * no per-leaf loop); a texture is reallocated only when its number of rows changes.
+ * no per-leaf loop); rows are allocated [`ROW_STEP`] at a time, so a texture is replaced only
+ * when the leaves outgrow it or shrink to under half of it.
  */
 import {
   BufferGeometry,
@@ -33,6 +34,9 @@ import type { LeafMeshBuffers } from '../core/types';
 
 /** Leaves per texture row (the matrix texture is 4096 texels wide). */
 export const LEAVES_PER_ROW = 1024;
+
+/** Texture rows are allocated in steps of this many (8,192 leaves). */
+export const ROW_STEP = 8;
 
 /** Marks a vertex shader as pulled (and keys its program). */
 export const LEAF_PULL_MARKER = '// sylva-leaf-pull';
@@ -136,16 +140,22 @@ class LeafTable {
     private readonly channels: 3 | 4,
   ) {}
 
-  /** Copies `source` (`count` leaves) in; returns the texture (new only if its rows changed). */
+  /**
+   * Copies `source` (`count` leaves) in; returns the texture, new only when the leaves outgrow
+   * its rows or fill less than half of them (rows come in steps of [`ROW_STEP`], so a drag of
+   * the leaf count copies into the same texture instead of allocating one a step).
+   */
   set(source: Float32Array, count: number): DataTexture | null {
     if (count === 0) return this.texture;
     const rows = Math.ceil(count / LEAVES_PER_ROW);
     let texture = this.texture;
-    if (!texture || texture.image.height !== rows) {
+    const have = texture?.image.height ?? 0;
+    if (!texture || have < rows || (have > ROW_STEP && rows <= have / 2)) {
       texture?.dispose();
       const width = LEAVES_PER_ROW * this.texels;
-      const data = new Float32Array(width * rows * this.channels);
-      texture = floatTexture(data, width, rows, this.channels === 4 ? RGBAFormat : RGBFormat);
+      const capacity = Math.ceil(rows / ROW_STEP) * ROW_STEP;
+      const data = new Float32Array(width * capacity * this.channels);
+      texture = floatTexture(data, width, capacity, this.channels === 4 ? RGBAFormat : RGBFormat);
       this.texture = texture;
     }
     const data = texture.image.data as Float32Array;
