@@ -45,6 +45,23 @@ fn round_loop(q: &[Vec3]) -> Vec<Vec3> {
     q.iter().zip(&len).map(|(v, &l)| unit_or(*v, || Vec3::ZERO) * l).collect()
 }
 
+/// Laplacian smoothing of the cavity rings from ring `first` on (the roll, the chamfer ring and
+/// the bottom stay).
+fn smooth_rings(ring_pos: &mut [Vec<Vec3>], first: usize, bottom: Vec3) {
+    let rings = ring_pos.len();
+    let m = ring_pos.first().map_or(0, Vec::len);
+    for _ in 0..SMOOTH_PASSES {
+        let old = ring_pos.to_vec();
+        for k in first..rings {
+            for i in 0..m {
+                let below = if k + 1 < rings { old[k + 1][i] } else { bottom };
+                let avg = (old[k][(i + m - 1) % m] + old[k][(i + 1) % m] + old[k - 1][i] + below) * 0.25;
+                ring_pos[k][i] = old[k][i] + (avg - old[k][i]) * 0.5;
+            }
+        }
+    }
+}
+
 /// Build the cavity of one region (chamfered rim, extruded rings, bottom fan, smoothing,
 /// normals); None if any new triangle would be degenerate or wound against its normals.
 pub(super) fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavity> {
@@ -98,17 +115,7 @@ pub(super) fn plan_cavity(mesh: &TreeMesh, r: &Region, stem: u32) -> Option<Cavi
         })
         .collect();
     let bottom = g + n * (h_c - r.depth);
-    // Laplacian smoothing of the cavity rings (the roll, the chamfer ring and the bottom stay).
-    for _ in 0..SMOOTH_PASSES {
-        let old = ring_pos.clone();
-        for k in roll.len() + 1..rings {
-            for i in 0..m {
-                let below = if k + 1 < rings { old[k + 1][i] } else { bottom };
-                let avg = (old[k][(i + m - 1) % m] + old[k][(i + 1) % m] + old[k - 1][i] + below) * 0.25;
-                ring_pos[k][i] = old[k][i] + (avg - old[k][i]) * 0.5;
-            }
-        }
-    }
+    smooth_rings(&mut ring_pos, roll.len() + 1, bottom);
     let circumference = TAU * r.local_radius.max(1e-6);
     let rim_uv: Vec<[f32; 2]> = lp.iter().map(|&v| [mesh.uvs[v as usize * 2], mesh.uvs[v as usize * 2 + 1]]).collect();
     let id = |k: usize, i: usize| Id::New(k * m + i);
