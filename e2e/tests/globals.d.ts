@@ -11,6 +11,8 @@ interface Window {
     leafPullCheck?(): { covered: number; differing: number } | null;
     growth?(): { markers: number; volumes: number; dragging: boolean };
   };
+  /** The embed page's camera hook. */
+  __sylvaEmbed?: { view(from: number[], to: number[]): void };
   /** Set by the tests' init scripts. */
   __cspViolations?: string[];
   __longTasks?: { start: number; duration: number; script?: string }[];

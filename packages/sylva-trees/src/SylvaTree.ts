@@ -146,7 +146,7 @@ function starter(inWorker: boolean): GeneratorWorkerFactory {
 
 /** One tree: `object` for the scene, `set` to change it, `toGLB` to export it. */
 export class SylvaTree {
-  /** Add this to your scene: the bark mesh and the instanced leaves, wind included. */
+  /** Add this to your scene: the bark mesh and the leaves (one draw call), wind included. */
   readonly object: Group;
   /** Notices about ignored share-link values (`fromShareLink`). */
   readonly messages: readonly string[];
