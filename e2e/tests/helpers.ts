@@ -160,3 +160,25 @@ export function pick(ids: string[], candidates: (string | RegExp)[]): string {
   }
   throw new Error(`none of ${candidates.join(', ')} in ${ids.join(', ')}`);
 }
+
+/** A PNG (a screenshot) decoded by the page into RGBA bytes, row by row from the top. */
+export async function decodePng(
+  page: Page,
+  png: Buffer,
+): Promise<{ width: number; height: number; data: Uint8Array }> {
+  const { width, height, base64 } = await page.evaluate(async (encoded) => {
+    const bytes = Uint8Array.from(atob(encoded), (c) => c.charCodeAt(0));
+    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const context = canvas.getContext('2d');
+    if (!context) throw new Error('no 2d context');
+    context.drawImage(bitmap, 0, 0);
+    const data = context.getImageData(0, 0, bitmap.width, bitmap.height).data;
+    let binary = '';
+    for (let i = 0; i < data.length; i += 0x8000) {
+      binary += String.fromCharCode(...data.subarray(i, i + 0x8000));
+    }
+    return { width: bitmap.width, height: bitmap.height, base64: btoa(binary) };
+  }, png.toString('base64'));
+  return { width, height, data: new Uint8Array(Buffer.from(base64, 'base64')) };
+}

@@ -1,7 +1,7 @@
 /** Issue 4 end to end: the leaf inspector (presets, growth replay, export) and leaves on the tree. */
 import { expect, test, type Page } from '@playwright/test';
 import { readFileSync } from 'node:fs';
-import { waitForNewTree, waitForTree, watchErrors } from './helpers';
+import { decodePng, waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 /** Opens the app with the leaf inspector showing a drawn leaf. */
 async function openInspector(page: Page): Promise<void> {
@@ -69,26 +69,15 @@ test('Export SVG downloads the drawing', async ({ page }) => {
  */
 async function greenShare(page: Page, dark = false): Promise<number> {
   const png = await page.getByTestId('viewer-canvas').screenshot();
-  return page.evaluate(
-    async ([base64, dark]) => {
-      const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-      const context = canvas.getContext('2d');
-      if (!context) throw new Error('no 2d context');
-      context.drawImage(bitmap, 0, 0);
-      const data = context.getImageData(0, 0, bitmap.width, bitmap.height).data;
-      let green = 0;
-      for (let i = 0; i < data.length; i += 4) {
-        const r = data[i] ?? 0;
-        const g = data[i + 1] ?? 0;
-        const b = data[i + 2] ?? 0;
-        if (dark ? 0.2126 * r + 0.7152 * g + 0.0722 * b < 100 : g > r + 12 && g > b + 12) green++;
-      }
-      return green / (bitmap.width * bitmap.height);
-    },
-    [png.toString('base64'), dark] as const,
-  );
+  const { width, height, data } = await decodePng(page, png);
+  let green = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    const r = data[i] ?? 0;
+    const g = data[i + 1] ?? 0;
+    const b = data[i + 2] ?? 0;
+    if (dark ? 0.2126 * r + 0.7152 * g + 0.0722 * b < 100 : g > r + 12 && g > b + 12) green++;
+  }
+  return green / (width * height);
 }
 
 test('leaves render on the tree (green pixels on the canvas)', async ({ page }) => {

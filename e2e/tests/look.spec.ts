@@ -2,6 +2,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import { nativeCli } from '../../scripts/native-cli.mjs';
+import { decodePng } from './helpers';
 
 const WIDTH = 480;
 const HEIGHT = 360;
@@ -16,37 +17,27 @@ interface HoleReport {
   radius: number;
 }
 
-/** Mean luminance of the page in each region (pixel offsets from its centre, see below). */
+/**
+ * Mean luminance of the page in each region `[x0, x1, y0, y1]`: the pixels with |dx| in
+ * [x0, x1] and |dy| in [y0, y1], offsets from the image centre.
+ */
 async function luminance(page: Page, regions: [number, number, number, number][]) {
-  const png = await page.screenshot();
-  return page.evaluate(
-    async ([base64, regions]) => {
-      const bytes = Uint8Array.from(atob(base64), (c) => c.charCodeAt(0));
-      const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
-      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-      const context = canvas.getContext('2d');
-      if (!context) throw new Error('no 2d context');
-      context.drawImage(bitmap, 0, 0);
-      const { data, width, height } = context.getImageData(0, 0, bitmap.width, bitmap.height);
-      // Each region: |dx| in [x0, x1], |dy| in [y0, y1] (pixels from the image centre).
-      return regions.map(([x0, x1, y0, y1]) => {
-        let sum = 0;
-        let n = 0;
-        for (let y = 0; y < height; y++) {
-          for (let x = 0; x < width; x++) {
-            const dx = Math.abs(x + 0.5 - width / 2);
-            const dy = Math.abs(y + 0.5 - height / 2);
-            if (dx < x0 || dx > x1 || dy < y0 || dy > y1) continue;
-            const i = (y * width + x) * 4;
-            sum += 0.2126 * data[i]! + 0.7152 * data[i + 1]! + 0.0722 * data[i + 2]!;
-            n++;
-          }
-        }
-        return n > 0 ? sum / n : NaN;
-      });
-    },
-    [png.toString('base64'), regions] as const,
-  );
+  const { data, width, height } = await decodePng(page, await page.screenshot());
+  return regions.map(([x0, x1, y0, y1]) => {
+    let sum = 0;
+    let n = 0;
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        const dx = Math.abs(x + 0.5 - width / 2);
+        const dy = Math.abs(y + 0.5 - height / 2);
+        if (dx < x0 || dx > x1 || dy < y0 || dy > y1) continue;
+        const i = (y * width + x) * 4;
+        sum += 0.2126 * data[i]! + 0.7152 * data[i + 1]! + 0.0722 * data[i + 2]!;
+        n++;
+      }
+    }
+    return n > 0 ? sum / n : NaN;
+  });
 }
 
 test("a tree hole's inside is darker than its rim in a rendered close-up", async ({ page }) => {
