@@ -20,7 +20,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("grown_shrub", "6bfc872f9c669d7b"),
     ("grown_hedgerow", "f283bda79442a16c"),
     ("grown_beside_wall", "4c09e556bb781e66"),
-    ("grown_bushy", "b8f71550f1e696f6"),
+    ("grown_bushy", "082651432f9ef10a"),
 ];
 
 #[test]

@@ -143,6 +143,18 @@ fn growth_is_deterministic_and_bounded_by_the_budget() {
 }
 
 #[test]
+fn regression_the_bushy_reference_reads_the_add_ons_units() {
+    // The SCA add-on gives Kill Distance and Influence Range in internode lengths; the preset
+    // once took "kill distance 2.5" as metres (twice the add-on's) and grew 50 bare stems.
+    let p = grown("grown_bushy");
+    assert_eq!((p.internode, p.markers, p.extra_markers, p.iterations), (0.5, 400, 3000, 1000));
+    assert!((p.kill_distance / p.internode - 2.5).abs() < 1e-6, "{}", p.kill_distance);
+    assert!((p.influence_radius / p.internode - 15.0).abs() < 1e-6, "{}", p.influence_radius);
+    let g = generate(&p).unwrap();
+    assert!(g.skeleton.stems.len() > 80, "{} stems", g.skeleton.stems.len());
+}
+
+#[test]
 fn regression_trunks_leave_the_ground_vertically() {
     // The shrub's markers start just above the ground: its trunks once leaned from the first
     // step, tilting their base rings into the ground (mesh below y = 0).

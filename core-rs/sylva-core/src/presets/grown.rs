@@ -94,22 +94,31 @@ pub(super) const GROWN_BESIDE_WALL: Preset = Preset {
 pub(super) const GROWN_BUSHY: Preset = Preset {
     name: "grown_bushy",
     label: "Grown: Bushy (reference)",
-    description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5, 3,000 extra markers per 1,000 iterations.",
+    description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5 internodes, 3,000 extra markers per 1,000 iterations, in the add-on's default crown.",
     leaf: "oak",
     values: &[
         ("bark_type", 2.0),
         ("growth_mode", 1.0),
         ("markers", 400.0),
         ("internode", 0.5),
-        ("kill_distance", 2.5),
-        ("influence_radius", 8.0),
+        // The add-on gives Kill Distance and Influence Range in internode lengths: "reduced to
+        // 2.5" is 1.25 m, and its default influence of 15 internodes is 7.5 m.
+        ("kill_distance", 1.25),
+        ("influence_radius", 7.5),
         ("extra_markers", 3000.0),
         ("iterations", 1000.0),
+        // The add-on's default crown: Crown Size 5 (an ellipsoid of radius 5) above a 3 m bole.
         ("crown_base", 3.0),
-        ("crown_height", 12.0),
-        ("crown_radius", 8.0),
+        ("crown_height", 10.0),
+        ("crown_radius", 5.0),
         ("tip_radius", 0.01),
         ("apical_control", 0.0),
         ("growth_jitter", 0.05),
+        // Three-leaf twigs of larger leaves in loose clumps: the add-on hangs a 0.5-unit leaf on
+        // most outer internodes, which reads as a full crown at this scale.
+        ("leaves", 40.0),
+        ("foliage_twigs3", 1.0),
+        ("foliage_scale", 0.25),
+        ("foliage_clumping", 0.5),
     ],
 };

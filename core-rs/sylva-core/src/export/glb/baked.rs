@@ -7,10 +7,10 @@
 //!
 //! * **Its leaf's tint** as `COLOR_0` (RGBA8): the instanced file's `_COLOR_0`, which already
 //!   holds the crown's shade (inner leaves darker, [`crate::crown_shade`]), clamped to glTF's
-//!   0..1 as the OBJ's vertex colours are. On the presets at most 0.6% of the leaves have a
-//!   component past 1 (bright outer leaves; 22% of the small `grown_bushy`, whose brightest
-//!   reach 1.10): clamping keeps every other leaf exactly as the engines' file shows it, where
-//!   scaling all of them to fit would darken the whole crown.
+//!   0..1 as the OBJ's vertex colours are. On the presets at most 0.7% of the leaves have a
+//!   component past 1 (bright outer leaves, reaching 1.11): clamping keeps every other leaf
+//!   exactly as the engines' file shows it, where scaling all of them to fit would darken the
+//!   whole crown.
 //! * **The wind record of its twig** (`_WIND_PIVOT`, `_WIND_PARAMS`, [`leaf_wind`]), so a
 //!   shader that sways the bark with them sways each leaf with the twig it hangs on: the same
 //!   pivot, level and phase, and the twig's stiffness, distance from the root and radius where
