@@ -1,8 +1,9 @@
 // Browser part of `npm run bench`: the built app (`web/dist`, served by `vite preview`) in
 // headless Chromium, measured end to end with the app's own debug events (`?debug=1`):
-//   - first_tree_ms: navigation to the first tree drawn (median over fresh pages),
-//     first_tree_in_scene_ms: to its arrays in the scene, ready for that frame, and
-//     first_shadowed_ms: to the end of the next frame, the first with the tree's shadows;
+//   - first_tree_ms: navigation to the first tree drawn (median over fresh pages; in software
+//     WebGL that frame is drawn at half resolution), first_tree_in_scene_ms: to its arrays in
+//     the scene, ready for that frame, and first_shadowed_ms: to the end of the next frame, the
+//     first with the tree's shadows and at full resolution;
 //   - drag: 20-step drags of each control of DRAG_PARAMS; per step, the time from the input event
 //     to the answer (preview or full) being in the scene (`sylva:applied`: buffers received,
 //     attributes set, ready for the next frame); after each drag, settle_ms = release to the

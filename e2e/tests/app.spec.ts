@@ -36,6 +36,47 @@ test('(a) loads and the canvas shows a tree, without uncaught errors', async ({ 
   expect(errors).toEqual([]);
 });
 
+test('(a2) in software WebGL the first tree frame is half resolution, the next one sharp', async ({
+  page,
+}) => {
+  // The drawing buffer's width in the frame that first draws the tree (after the app's
+  // requestAnimationFrame callback), recorded before any app code runs (`sylva:applied` is a
+  // debug page's event).
+  await page.addInitScript(() => {
+    addEventListener(
+      'sylva:applied',
+      () =>
+        requestAnimationFrame(() =>
+          setTimeout(() => {
+            const canvas = document.querySelector<HTMLCanvasElement>(
+              '[data-testid="viewer-canvas"]',
+            );
+            (window as unknown as { __firstWidth: number }).__firstWidth = canvas?.width ?? -1;
+          }, 0),
+        ),
+      { once: true },
+    );
+  });
+  await page.goto('/?debug=1');
+  await waitForTree(page);
+  const sizes = () =>
+    page.evaluate(() => {
+      const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="viewer-canvas"]');
+      return {
+        first: (window as unknown as { __firstWidth?: number }).__firstWidth,
+        width: canvas?.width ?? 0,
+        full: Math.round((canvas?.clientWidth ?? 0) * Math.min(devicePixelRatio, 2)),
+      };
+    });
+  await expect.poll(async () => (await sizes()).first).toBeGreaterThan(0);
+  // Headless Chromium draws with SwiftShader.
+  await expect.poll(async () => (await sizes()).width).toBeGreaterThan(100);
+  const { first, width, full } = await sizes();
+  expect(width).toBe(full);
+  expect(Math.abs((first ?? 0) - full / 2)).toBeLessThanOrEqual(1);
+  await expectTreeOnCanvas(page);
+});
+
 test('(b) dragging a slider updates the vertex stat and the URL', async ({ page }) => {
   const errors = watchErrors(page);
   await page.goto('/');

@@ -22,7 +22,7 @@ import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
 import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
 import { applySoftShadows } from '../../../packages/sylva-trees/src/viewer/softShadows';
-import { antialiasFor, webglRendererName } from './renderQuality';
+import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
 import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
@@ -77,6 +77,8 @@ export class TreeViewer {
   private disposed = false;
   /** True until the first tree has been drawn (see [`TreeViewer.draw`]). */
   private shadowsDeferred = true;
+  /** The pixel ratio to go back to after the first tree's frame (see [`TreeViewer.draw`]). */
+  private restorePixelRatio: number | null = null;
   /** Whether the scene is drawn without a tree (after [`EMPTY_SCENE_DELAY_MS`]). */
   private drawEmpty = false;
   private readonly emptyTimer: ReturnType<typeof setTimeout>;
@@ -335,9 +337,15 @@ export class TreeViewer {
    * Draws a frame. The page's first tree is drawn once without casting shadows, and the next
    * frame adds them: the shadow pass and its two depth programs cost about 0.6 s of software
    * WebGL (SwiftShader), so the tree appears that much sooner; on a GPU the shadows follow one
-   * frame later. The shadow map is still rendered (empty), so no shader program changes.
+   * frame later. The shadow map is still rendered (empty), so no shader program changes. In
+   * software WebGL that first frame is also drawn at half the resolution, and the next one
+   * sharp ([`firstTreePixelRatio`]).
    */
   private draw(): void {
+    if (this.restorePixelRatio !== null) {
+      this.renderer.setPixelRatio(this.restorePixelRatio);
+      this.restorePixelRatio = null;
+    }
     const defer = this.shadowsDeferred && this.tree.barkMesh !== null;
     const casting: Object3D[] = [];
     if (defer) {
@@ -345,6 +353,12 @@ export class TreeViewer {
         if (object.castShadow) casting.push(object);
         object.castShadow = false;
       });
+      const ratio = this.renderer.getPixelRatio();
+      const first = firstTreePixelRatio(ratio, webglRendererName());
+      if (first !== ratio) {
+        this.restorePixelRatio = ratio;
+        this.renderer.setPixelRatio(first);
+      }
     }
     this.renderer.render(this.scene, this.camera);
     if (defer) {

@@ -1,6 +1,6 @@
-/** Which renderers draw without MSAA (renderQuality.ts). */
+/** Which renderers draw without MSAA, and at what resolution the first tree is drawn (renderQuality.ts). */
 import { describe, expect, it } from 'vitest';
-import { antialiasFor, isSoftwareRenderer } from './renderQuality';
+import { antialiasFor, firstTreePixelRatio, isSoftwareRenderer } from './renderQuality';
 
 const SWIFTSHADER =
   'ANGLE (Google, Vulkan 1.3.0 (SwiftShader Device (Subzero) (0x0000C0DE)), SwiftShader driver)';
@@ -23,5 +23,12 @@ describe('render quality', () => {
     expect(antialiasFor('', SWIFTSHADER)).toBe(false);
     expect(antialiasFor('?debug=1&aa=1', SWIFTSHADER)).toBe(true);
     expect(antialiasFor('?aa=0', 'Apple M2')).toBe(false);
+  });
+
+  it('draws the first tree at half resolution in software WebGL only', () => {
+    expect(firstTreePixelRatio(1, SWIFTSHADER)).toBe(0.5);
+    expect(firstTreePixelRatio(2, 'llvmpipe (LLVM 15.0.6, 256 bits)')).toBe(1);
+    expect(firstTreePixelRatio(2, 'Apple M2')).toBe(2);
+    expect(firstTreePixelRatio(1, null)).toBe(1);
   });
 });
