@@ -12,7 +12,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("weeping_willow", "f8611f674b7856e0"),
     ("ca_black_oak", "039431ee7c62e177"),
     ("fir", "c67f2b6ff88933b7"),
-    ("oak", "2910d4991c4ee911"),
+    ("oak", "4a112b7870f4654e"),
     ("cypress", "fe0bfcfb389de051"),
     ("umbrella", "b490dcf7ac471bdc"),
     ("weeping", "c1b57b19897e03be"),
