@@ -178,10 +178,14 @@ export class Foliage {
     this.instancedMaterial.dispose();
   }
 
-  /** Removes the pulled leaf mesh (the leaf textures stay for the next leaves). */
+  /**
+   * Removes the pulled leaf mesh and releases its textures (a few MB for the default tree): the
+   * next pulled leaves fill new ones.
+   */
   private removePulled(): void {
     if (!this.pulledMesh) return;
     this.parent.remove(this.pulledMesh);
     this.pulledMesh = null;
+    this.data.release();
   }
 }

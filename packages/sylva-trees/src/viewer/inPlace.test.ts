@@ -207,4 +207,35 @@ describe('foliage in place', () => {
     expect(meshOf(parent).geometry.drawRange.count).toBe(6 * 3);
     expect(foliage.count).toBe(6);
   });
+
+  it('leaving pulled leaves (instanced or bare) releases their textures; pulled again makes new ones', () => {
+    const parent = new Group();
+    const foliage = new Foliage(parent);
+    foliage.update({ instances: leaves(4), leafMesh: LEAF_MESH });
+    const mesh = meshOf(parent);
+    const names = ['sylvaLeafMatrices', 'sylvaLeafTints', 'sylvaLeafMesh'] as const;
+    const textures = names.map((n) => uniformTexture(mesh, n));
+    let disposed = 0;
+    for (const t of textures) t.addEventListener('dispose', () => disposed++);
+    const big = {
+      positions: new Float32Array(9 * 9),
+      normals: new Float32Array(9 * 9),
+      uvs: new Float32Array(6 * 9),
+      indices: Uint32Array.from({ length: 27 }, (_, i) => i),
+    };
+    foliage.update({ leafMesh: big });
+    expect((meshOf(parent) as InstancedMesh).isInstancedMesh).toBe(true);
+    expect(disposed).toBe(3);
+    foliage.update({ leafMesh: LEAF_MESH });
+    const again = meshOf(parent);
+    for (const [k, n] of names.entries()) {
+      const t = uniformTexture(again, n);
+      expect(t, n).not.toBe(textures[k]);
+      expect(t, n).not.toBeNull();
+    }
+    expect(Array.from((uniformTexture(again, 'sylvaLeafMatrices').image.data as Float32Array).subarray(0, 64))).toEqual(
+      Array.from(leaves(4).matrices),
+    );
+    expect(again.geometry.drawRange.count).toBe(4 * 3);
+  });
 });

@@ -244,12 +244,26 @@ export class LeafPullData {
     this.geometry.setDrawRange(0, this.vertexCount);
   }
 
-  /** Releases the textures and the geometry. */
-  dispose(): void {
+  /**
+   * Releases the textures (their GPU storage and their copies of the arrays) while no pulled
+   * leaves are shown; the next `setMesh` and `setInstances` make new ones.
+   */
+  release(): void {
     this.matrices.dispose();
     this.tints.dispose();
     this.meshTexture?.dispose();
     this.meshTexture = null;
+    this.uniforms.sylvaLeafMatrices.value = null;
+    this.uniforms.sylvaLeafTints.value = null;
+    this.uniforms.sylvaLeafMesh.value = null;
+    this.leaves = 0;
+    this.indices = 0;
+    this.updateRange();
+  }
+
+  /** Releases the textures and the geometry. */
+  dispose(): void {
+    this.release();
     this.geometry.dispose();
   }
 }
