@@ -115,4 +115,71 @@ describe('the sky environment', () => {
     expect(texture.generateMipmaps).toBe(false);
     texture.dispose();
   });
+
+  it('is, to the bit, the plain composition of texelDirection, the frame and skyRadiance', () => {
+    expect(levels).toEqual(referencePrefilter());
+  });
 });
+
+/** Van der Corput radical inverse in base 2, written with arithmetic (not bit tricks). */
+function vanDerCorput(i: number): number {
+  let x = 0;
+  let f = 0.5;
+  for (let k = i; k > 0; k = Math.floor(k / 2), f /= 2) x += (k % 2) * f;
+  return x;
+}
+
+/** The prefilter as the plain composition of its parts (three's vectors, skyRadiance). */
+function referencePrefilter(): Float32Array[][] {
+  const sizes = [64, 32, 16, 8];
+  const samplesOf = [0, 16, 32, 256];
+  const n = new Vector3();
+  const tangent = new Vector3();
+  const bitangent = new Vector3();
+  const rgb = [0, 0, 0];
+  return sizes.map((size, lod) => {
+    const alpha = lodToRoughness(lod, 3) ** 2;
+    const samples = samplesOf[lod]!;
+    const faces: Float32Array[] = [];
+    for (let face = 0; face < 6; face++) {
+      const data = new Float32Array(size * size * 4);
+      for (let j = 0; j < size; j++) {
+        for (let i = 0; i < size; i++) {
+          texelDirection(face, i, j, size, n);
+          let [r, g, b] = [0, 0, 0];
+          if (samples === 0) {
+            skyRadiance(SKY, n.x, n.y, n.z, rgb);
+            [r, g, b] = rgb as [number, number, number];
+          } else {
+            const up = Math.abs(n.y) < 0.999;
+            tangent.set(up ? 0 : 1, up ? 1 : 0, 0).cross(n).normalize();
+            bitangent.crossVectors(n, tangent);
+            let weight = 0;
+            for (let k = 0; k < samples; k++) {
+              const u = k / samples;
+              const c = Math.sqrt((1 - u) / (1 + (alpha * alpha - 1) * u));
+              const phi = 2 * Math.PI * vanDerCorput(k);
+              const sinT = Math.sqrt(Math.max(0, 1 - c * c));
+              const h = tangent
+                .clone()
+                .multiplyScalar(sinT * Math.cos(phi))
+                .add(bitangent.clone().multiplyScalar(sinT * Math.sin(phi)))
+                .add(n.clone().multiplyScalar(c));
+              const nl = 2 * c * c - 1;
+              if (nl <= 0) continue;
+              skyRadiance(SKY, 2 * c * h.x - n.x, 2 * c * h.y - n.y, 2 * c * h.z - n.z, rgb);
+              r += rgb[0]! * nl;
+              g += rgb[1]! * nl;
+              b += rgb[2]! * nl;
+              weight += nl;
+            }
+            [r, g, b] = [r / weight, g / weight, b / weight];
+          }
+          data.set([r, g, b, 1], (j * size + i) * 4);
+        }
+      }
+      faces.push(data);
+    }
+    return faces;
+  });
+}
