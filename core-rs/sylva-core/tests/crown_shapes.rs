@@ -195,3 +195,19 @@ fn preview_lines_trace_the_profile() {
         assert!(r <= profile_radius(&prof, p[1]) + 1e-4, "point {p:?} outside the profile");
     }
 }
+
+#[test]
+fn the_weeping_preset_hangs_curtains() {
+    // Inverse Conical with a negative Attraction Up (the crown shape guide's weeping tree): its
+    // twigs must hang, and far enough to read as curtains. With short, curved twigs they fell
+    // 0.08 of the tree's height and the crown read as an upright cone.
+    let p = sylva_core::presets::find("weeping").unwrap().params().unwrap();
+    let s = skeleton::build(&p).unwrap();
+    let twigs: Vec<_> = s.stems.iter().filter(|st| st.level == 2 && st.points.len() >= 2).collect();
+    let drop = |st: &&sylva_core::skeleton::Stem| st.points[0].y - st.points.last().unwrap().y;
+    let hanging = twigs.iter().filter(|st| drop(st) > 0.0).count() as f32 / twigs.len() as f32;
+    let mean_drop = twigs.iter().map(drop).sum::<f32>() / twigs.len() as f32;
+    let top = s.stems.iter().flat_map(|st| st.points.iter()).map(|q| q.y).fold(0.0f32, f32::max);
+    assert!(hanging > 0.9, "{hanging} of the twigs hang");
+    assert!(mean_drop > 0.14 * top, "twigs fall {mean_drop} m of a {top} m tree");
+}

@@ -15,7 +15,7 @@ const GOLDEN: &[(&str, &str)] = &[
     ("oak", "4a112b7870f4654e"),
     ("cypress", "fe0bfcfb389de051"),
     ("umbrella", "b490dcf7ac471bdc"),
-    ("weeping", "c1b57b19897e03be"),
+    ("weeping", "a567c59b121ad2ac"),
     ("grown_broadleaf", "654350748d87a769"),
     ("grown_shrub", "6bfc872f9c669d7b"),
     ("grown_hedgerow", "f283bda79442a16c"),

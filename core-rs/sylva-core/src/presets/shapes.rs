@@ -237,8 +237,10 @@ pub(super) const WEEPING: Preset = Preset {
         ("lobe_depth", 0.05),
         ("attraction_up", -3.0),
         ("l0_length", 1.0),
-        ("l1_length", 0.5),
-        ("l2_length", 0.8),
+        ("l1_length", 0.6),
+        // Long, straight level-2 stems that Attraction Up bends down: curtains that arch over
+        // the crown and fall (0.8, curved, read as an upright cone).
+        ("l2_length", 1.6),
         ("l3_length", 0.4),
         ("l0_curve_res", 4.0),
         ("l1_curve_res", 8.0),
@@ -246,7 +248,7 @@ pub(super) const WEEPING: Preset = Preset {
         ("l3_curve_res", 1.0),
         ("l0_curve", 0.0),
         ("l1_curve", 30.0),
-        ("l2_curve", 20.0),
+        ("l2_curve", 0.0),
         ("l3_curve", 0.0),
         ("l0_curve_v", 10.0),
         ("l1_curve_v", 30.0),
