@@ -233,9 +233,11 @@ describe('foliage in place', () => {
       expect(t, n).not.toBe(textures[k]);
       expect(t, n).not.toBeNull();
     }
-    expect(Array.from((uniformTexture(again, 'sylvaLeafMatrices').image.data as Float32Array).subarray(0, 64))).toEqual(
-      Array.from(leaves(4).matrices),
-    );
+    expect(
+      Array.from(
+        (uniformTexture(again, 'sylvaLeafMatrices').image.data as Float32Array).subarray(0, 64),
+      ),
+    ).toEqual(Array.from(leaves(4).matrices));
     expect(again.geometry.drawRange.count).toBe(4 * 3);
   });
 });

@@ -152,7 +152,10 @@ function referencePrefilter(): Float32Array[][] {
             [r, g, b] = rgb as [number, number, number];
           } else {
             const up = Math.abs(n.y) < 0.999;
-            tangent.set(up ? 0 : 1, up ? 1 : 0, 0).cross(n).normalize();
+            tangent
+              .set(up ? 0 : 1, up ? 1 : 0, 0)
+              .cross(n)
+              .normalize();
             bitangent.crossVectors(n, tangent);
             let weight = 0;
             for (let k = 0; k < samples; k++) {
