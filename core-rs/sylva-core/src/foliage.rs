@@ -174,8 +174,17 @@ fn golden_turns(n: usize) -> Arc<Vec<[f32; 2]>> {
     turns
 }
 
-/// One leaf site in this many is placed by a drag's preview ([`place_lit_by`]).
+/// A drag's preview ([`place_lit_by`]) places at most one leaf site in this many.
 pub const PREVIEW_THIN: usize = 2;
+/// The most leaves a drag's preview places (about half the default tree's): a denser crown is
+/// thinned further, so a preview's cost stays bounded whatever the leaf count.
+pub const PREVIEW_LEAVES: u64 = 20_000;
+
+/// One leaf site in this many is placed by a drag's preview of a tree of `leaves` leaves: every
+/// [`PREVIEW_THIN`]-th, or sparser so that at most about [`PREVIEW_LEAVES`] are placed.
+pub fn preview_thin(leaves: u64) -> usize {
+    PREVIEW_THIN.max(leaves.div_ceil(PREVIEW_LEAVES) as usize)
+}
 
 /// Where leaves sit along one stem: `(stem index, first t, last t, count)`.
 fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
@@ -249,22 +258,22 @@ pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError>
 /// [`place`], also returning the leaves' light field ([`crate::crown_shade`], `None` for a bare
 /// tree), which has darkened their tints and shades the bark ([`crate::mesh::shade`]).
 pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
-    place_lit_by(skeleton, p, None, 1)
+    place_lit_by(skeleton, p, None, false)
 }
 
 /// [`place_lit`], darkening the tints by `field` (a field of other leaves, for a preview while
 /// dragging) instead of one built from these leaves when it is given; returns the field used.
 ///
-/// `thin` > 1 is a preview while dragging: only every `thin`-th leaf site is placed, each leaf
-/// `√thin` times larger so the crown keeps its leaf area. The leaves kept sit exactly where the
-/// full placement puts them (every site still draws its random numbers).
+/// A `preview` (while dragging) places only every `thin`-th leaf site ([`preview_thin`]: every
+/// other one, sparser for crowns of over [`PREVIEW_LEAVES`] leaves), each leaf `√thin` times
+/// larger so the crown keeps its leaf area. The leaves kept sit exactly where the full
+/// placement puts them (every site still draws its random numbers).
 pub fn place_lit_by(
     skeleton: &Skeleton,
     p: &TreeParams,
     field: Option<&CrownLight>,
-    thin: usize,
+    preview: bool,
 ) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
-    let thin = thin.max(1);
     let spans = spans(skeleton, p);
     let per_site: u64 = if p.foliage_twigs3 { 3 } else { 1 };
     let need: u64 = spans.iter().map(|s| s.3 as u64).sum::<u64>() * per_site;
@@ -275,6 +284,7 @@ pub fn place_lit_by(
     if need == 0 {
         return Ok((bare, None));
     }
+    let thin = if preview { preview_thin(need) } else { 1 };
     let mut rng = Rng::new(u64::from(p.seed), "foliage");
     let need_n = need as usize / thin + 1;
     let mut matrices = Vec::with_capacity(need_n * 16);

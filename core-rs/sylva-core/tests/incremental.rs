@@ -231,7 +231,8 @@ fn a_drag_places_every_other_leaf_lit_by_the_previous_field_and_the_release_plac
     assert_eq!(cur.foliage.matrices, cold.foliage.matrices);
     // The preview placed every other leaf site, where the full tree has its leaf, √2 larger.
     let full = &cold.foliage.matrices;
-    let thin = sylva_core::foliage::PREVIEW_THIN;
+    let thin = sylva_core::foliage::preview_thin(cold.foliage.count() as u64);
+    assert_eq!(thin, sylva_core::foliage::PREVIEW_THIN, "the default tree's preview places every other site");
     assert_eq!(preview.count(), cold.foliage.count().div_ceil(thin), "one leaf site in {thin}");
     for (i, m) in preview.matrices.chunks_exact(16).enumerate().step_by(97) {
         let f = &full[i * thin * 16..(i * thin + 1) * 16];
@@ -245,6 +246,37 @@ fn a_drag_places_every_other_leaf_lit_by_the_previous_field_and_the_release_plac
     assert_eq!(cur.foliage.colors, cold.foliage.colors);
     assert_ne!(preview.colors, cold.foliage.colors, "the preview's tints came from the old crown");
     assert_eq!(session.hash(), Some(cold.hash));
+}
+
+#[test]
+fn a_dense_crowns_drag_places_a_bounded_number_of_leaves_and_keeps_the_leaf_area() {
+    use sylva_core::foliage::{preview_thin, PREVIEW_LEAVES};
+    let mut session = Session::new();
+    let mut p = TreeParams::default();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    // A drag of Leaves to 65 a twig: about 2.6 times the default tree's leaves.
+    p.set("leaves", 65.0).unwrap();
+    let preview = session.update(&p, Quality::Preview { budget_ms: -1.0 }, &NoClock, None).unwrap().foliage.clone();
+    let full = generate(&p).unwrap().foliage;
+    let thin = preview_thin(full.count() as u64);
+    assert!(thin > 2, "a crown of {} leaves is thinned past every other site", full.count());
+    assert_eq!(preview.count(), full.count().div_ceil(thin));
+    assert!(preview.count() as u64 <= PREVIEW_LEAVES + 1, "{} leaves in the preview", preview.count());
+    // Leaf area (the sum of length × width over the leaves) within a few percent of the full tree's.
+    let area = |m: &[f32]| -> f64 {
+        m.chunks_exact(16)
+            .map(|c| {
+                let x = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+                let y = (c[4] * c[4] + c[5] * c[5] + c[6] * c[6]).sqrt();
+                f64::from(x * y)
+            })
+            .sum()
+    };
+    let (a, b) = (area(&preview.matrices), area(&full.matrices));
+    assert!((a / b - 1.0).abs() < 0.05, "preview leaf area {a:.1} against {b:.1} m²");
+    // A bigger crown is thinned further, never below one site in two.
+    assert_eq!(preview_thin(1), 2);
+    assert!(preview_thin(10 * PREVIEW_LEAVES) == 10 && preview_thin(10 * PREVIEW_LEAVES + 1) == 11);
 }
 
 #[test]

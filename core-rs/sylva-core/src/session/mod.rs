@@ -147,7 +147,7 @@ pub struct Current {
     pub foliage: Foliage,
     /// The leaves' light field (it darkened their tints and shades the bark); `None` when bare.
     pub light: Option<CrownLight>,
-    /// The leaves are a drag's preview: every [`foliage::PREVIEW_THIN`]-th site placed (larger),
+    /// The leaves are a drag's preview: one site in [`foliage::preview_thin`] placed (larger),
     /// their tints darkened by the previous leaves' light field, not their own.
     pub leaves_preview: bool,
     /// The leaf is a drag's preview: its texture one Texture Size level down.
@@ -308,9 +308,9 @@ impl Session {
         let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.leaves_preview && by_previous.is_none());
         let placements = if place_stale {
             let t = clock.now_ms();
-            // A drag's placement is a preview: every other leaf site, lit by the previous field.
-            let thin = if by_previous.is_some() { foliage::PREVIEW_THIN } else { 1 };
-            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous, thin)?;
+            // A drag's placement is a preview: every other leaf site (or fewer, for a dense
+            // crown), lit by the previous field.
+            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous, by_previous.is_some())?;
             if by_previous.is_none() {
                 self.last_place_ms = Some(clock.now_ms() - t);
             }
