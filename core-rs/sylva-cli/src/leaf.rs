@@ -15,14 +15,14 @@ fn params(preset: Option<&str>, sets: &[(String, String)]) -> Result<TreeParams,
     let known: Vec<&str> = presets::LEAF_PRESETS.iter().map(|p| p.name).collect();
     let find = |name: &str| presets::find(name).map(|p| p.params());
     let p = super::preset_with_sets(preset, "leaf preset", &known, find, sets)?;
-    leaf::validate(&p).map_err(|e| e.to_string())?;
+    leaf::validate(&p.leaf, p.foliage.leaf_petiole).map_err(|e| e.to_string())?;
     Ok(p)
 }
 
 /// `sylva leaf`: the leaf as JSON, its SVG drawing with `--svg`, its blade as OBJ with `--obj`.
 pub fn leaf(a: &LeafArgs) -> Result<String, String> {
     let p = params(a.preset.as_deref(), &a.set.set)?;
-    let l = leaf::generate(&p).map_err(|e| e.to_string())?;
+    let l = leaf::generate(&p.leaf, p.foliage.leaf_petiole).map_err(|e| e.to_string())?;
     if let Some(path) = &a.svg {
         let opts = svg::SvgOptions { triangulation: a.triangulation, step: a.step, ..svg::SvgOptions::default() };
         std::fs::write(path, svg::render(&l, &opts)).map_err(|e| format!("cannot write {path}: {e}"))?;
@@ -47,9 +47,9 @@ pub fn bench(o: &BenchLeafArgs) -> Result<String, String> {
         let p = params(Some(name), &sets)?;
         let mut totals = Vec::with_capacity(runs);
         let mut stages: Vec<(&'static str, Vec<f64>)> = Vec::new();
-        let mut last = leaf::generate(&p).map_err(|e| e.to_string())?;
+        let mut last = leaf::generate(&p.leaf, p.foliage.leaf_petiole).map_err(|e| e.to_string())?;
         for _ in 0..runs {
-            last = leaf::generate(&p).map_err(|e| e.to_string())?;
+            last = leaf::generate(&p.leaf, p.foliage.leaf_petiole).map_err(|e| e.to_string())?;
             totals.push(last.stats.total_ms);
             for (i, (stage, ms)) in last.stats.stage_ms.iter().enumerate() {
                 if stages.len() <= i {
@@ -64,7 +64,7 @@ pub fn bench(o: &BenchLeafArgs) -> Result<String, String> {
         let g = &last.veins.graph;
         lines.push(format!(
             "native leaf {name} ({}): {} auxins, {} vein nodes, {} loops, median {median_ms:.3} ms over {} runs (veins {:.3} ms)",
-            p.leaf_venation.label(),
+            p.leaf.leaf_venation.label(),
             last.veins.auxins.len(),
             g.nodes.len(),
             g.loops(),
@@ -73,7 +73,7 @@ pub fn bench(o: &BenchLeafArgs) -> Result<String, String> {
         ));
         results.push(serde_json::json!({
             "preset": name,
-            "venation": p.leaf_venation.label(),
+            "venation": p.leaf.leaf_venation.label(),
             "auxins": last.veins.auxins.len(),
             "vein_nodes": g.nodes.len(),
             "loops": g.loops(),

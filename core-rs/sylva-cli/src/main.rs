@@ -120,7 +120,7 @@ fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
     let mut params = preset_with_sets(a.preset.as_deref(), "preset", &known, find, &a.in_order)?;
     if let Some(path) = &a.volumes {
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
-        params.volumes = sylva_core::params::volumes::from_json(&text).map_err(|e| e.to_string())?;
+        params.skeleton.volumes = sylva_core::params::volumes::from_json(&text).map_err(|e| e.to_string())?;
     }
     Ok(params)
 }

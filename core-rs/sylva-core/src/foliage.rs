@@ -32,7 +32,7 @@ use crate::error::SylvaError;
 use crate::leaf::{self, texture::LeafTexture, Leaf};
 use crate::math;
 use crate::mesh::TreeMesh;
-use crate::params::{registry, GrowthMode, LeafLod, TreeParams};
+use crate::params::{FoliageParams, GrowthMode, LeafLod, LeafParams};
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem, StemPoints};
 use glam::Vec3;
@@ -88,23 +88,26 @@ impl Foliage {
     }
 }
 
-/// The wire values of the leaf-shape parameters (groups "Leaf", "Leaf Veins", "Leaf Surface").
-fn leaf_key(p: &TreeParams) -> Vec<u64> {
-    registry().iter().filter(|s| s.group.starts_with("Leaf")).map(|s| p.get(&s.id).unwrap_or(0.0).to_bits()).collect()
+/// What the leaf itself is made of: the leaf parameters but Leaf Mesh (which picks one of the
+/// leaf's meshes to draw, not the leaf), and the petiole's length (a foliage parameter).
+/// Equal keys give the same [`Leaf`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct LeafKey(LeafParams, u32);
+
+impl LeafKey {
+    /// The key of the leaf of `p` with a petiole `petiole` leaf lengths long.
+    pub fn of(p: &LeafParams, petiole: f32) -> LeafKey {
+        LeafKey(LeafParams { foliage_lod: LeafLod::Auto, ..p.clone() }, petiole.to_bits())
+    }
 }
 
-/// Whether `a` and `b` describe the same leaf (every leaf-shape parameter equal).
-pub fn same_leaf(a: &TreeParams, b: &TreeParams) -> bool {
-    leaf_key(a) == leaf_key(b)
-}
-
-type LeafCache = Mutex<Option<(Vec<u64>, Arc<Leaf>)>>;
+type LeafCache = Mutex<Option<(LeafKey, Arc<Leaf>)>>;
 static LEAF_CACHE: LeafCache = Mutex::new(None);
 
 /// The leaf for these parameters, generated once per leaf-parameter change (the leaf is a pure
 /// function of its parameters, so the cache never changes a result).
-pub fn cached_leaf(p: &TreeParams) -> Result<Arc<Leaf>, SylvaError> {
-    let key = leaf_key(p);
+pub fn cached_leaf(p: &LeafParams, petiole: f32) -> Result<Arc<Leaf>, SylvaError> {
+    let key = LeafKey::of(p, petiole);
     if let Ok(slot) = LEAF_CACHE.lock() {
         if let Some((k, l)) = slot.as_ref() {
             if *k == key {
@@ -112,7 +115,7 @@ pub fn cached_leaf(p: &TreeParams) -> Result<Arc<Leaf>, SylvaError> {
             }
         }
     }
-    let l = Arc::new(leaf::generate(p)?);
+    let l = Arc::new(leaf::generate(p, petiole)?);
     if let Ok(mut slot) = LEAF_CACHE.lock() {
         *slot = Some((key, Arc::clone(&l)));
     }
@@ -187,7 +190,7 @@ pub fn preview_thin(leaves: u64) -> usize {
 }
 
 /// Where leaves sit along one stem: `(stem index, first t, last t, count)`.
-fn spans(skeleton: &Skeleton, p: &TreeParams) -> Vec<(usize, f32, f32, usize)> {
+fn spans(skeleton: &Skeleton, p: &FoliageParams) -> Vec<(usize, f32, f32, usize)> {
     let stems = &skeleton.stems;
     let n = p.leaves as f32;
     if p.leaves == 0 || stems.is_empty() {
@@ -242,22 +245,22 @@ fn push_matrix(out: &mut Vec<f32>, pos: Vec3, dir: Vec3, front: Vec3, len: f32, 
 }
 
 /// Places the leaves on `skeleton` and dresses them with the leaf ([`place`] then [`dress`]).
-pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
+pub fn build(skeleton: &Skeleton, p: &FoliageParams, leaf: &LeafParams) -> Result<Foliage, SylvaError> {
     let mut foliage = place(skeleton, p)?;
-    dress(&mut foliage, p)?;
+    dress(&mut foliage, leaf, p.leaf_petiole)?;
     Ok(foliage)
 }
 
 /// The foliage stage: where the leaves sit (per-leaf matrices and tints), without the leaf
 /// itself (`mesh` empty, `leaf` none until [`dress`]). Reads the skeleton and the Foliage
 /// parameters; the leaf-shape parameters never change a placement.
-pub fn place(skeleton: &Skeleton, p: &TreeParams) -> Result<Foliage, SylvaError> {
+pub fn place(skeleton: &Skeleton, p: &FoliageParams) -> Result<Foliage, SylvaError> {
     place_lit(skeleton, p).map(|(f, _)| f)
 }
 
 /// [`place`], also returning the leaves' light field ([`crate::crown_shade`], `None` for a bare
 /// tree), which has darkened their tints and shades the bark ([`crate::mesh::shade`]).
-pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
+pub fn place_lit(skeleton: &Skeleton, p: &FoliageParams) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
     place_lit_by(skeleton, p, None, false)
 }
 
@@ -270,7 +273,7 @@ pub fn place_lit(skeleton: &Skeleton, p: &TreeParams) -> Result<(Foliage, Option
 /// placement puts them (every site still draws its random numbers).
 pub fn place_lit_by(
     skeleton: &Skeleton,
-    p: &TreeParams,
+    p: &FoliageParams,
     field: Option<&CrownLight>,
     preview: bool,
 ) -> Result<(Foliage, Option<CrownLight>), SylvaError> {
@@ -285,7 +288,7 @@ pub fn place_lit_by(
         return Ok((bare, None));
     }
     let thin = if preview { preview_thin(need) } else { 1 };
-    let mut rng = Rng::new(u64::from(p.seed), "foliage");
+    let mut rng = Rng::new(u64::from(skeleton.seed), "foliage");
     let need_n = need as usize / thin + 1;
     let mut matrices = Vec::with_capacity(need_n * 16);
     let mut colors = Vec::with_capacity(need_n * 3);
@@ -357,20 +360,20 @@ pub fn place_lit_by(
 /// The leaf stage: the leaf of the Leaf parameters (generated once per leaf shape, see
 /// [`cached_leaf`]) and the mesh drawn for every placed leaf, by **Leaf Mesh** (Auto: the
 /// finest whose triangles times the leaf count stay within [`AUTO_TRIANGLES`]). A bare tree
-/// stays bare.
-pub fn dress(foliage: &mut Foliage, p: &TreeParams) -> Result<(), SylvaError> {
-    (foliage.mesh, foliage.leaf) = leaf_mesh(foliage.count(), p)?;
+/// stays bare. `petiole`: the Petiole Length the leaves were placed with.
+pub fn dress(foliage: &mut Foliage, p: &LeafParams, petiole: f32) -> Result<(), SylvaError> {
+    (foliage.mesh, foliage.leaf) = leaf_mesh(foliage.count(), p, petiole)?;
     Ok(())
 }
 
 /// The mesh drawn per leaf for `count` leaves and the leaf it comes from (empty and none for
 /// no leaves); see [`dress`].
-pub fn leaf_mesh(count: usize, p: &TreeParams) -> Result<(TreeMesh, Option<Arc<Leaf>>), SylvaError> {
+pub fn leaf_mesh(count: usize, p: &LeafParams, petiole: f32) -> Result<(TreeMesh, Option<Arc<Leaf>>), SylvaError> {
     let need = count as u64;
     if need == 0 {
         return Ok((TreeMesh::default(), None));
     }
-    let leaf = cached_leaf(p)?;
+    let leaf = cached_leaf(p, petiole)?;
     let mesh = match p.foliage_lod {
         LeafLod::Blade => leaf.mesh.clone(),
         LeafLod::Billboards => leaf.lod.billboards.clone(),

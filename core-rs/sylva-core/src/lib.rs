@@ -20,6 +20,10 @@
 //!
 //! Same parameters and seed give byte-identical buffers on every target (see `math`).
 
+// `define_params!` (params/macros.rs) sorts the registry's table into the stage structs one
+// entry per recursion step: the table has more entries than the default limit of 128.
+#![recursion_limit = "256"]
+
 pub mod clock;
 pub mod crown;
 pub mod crown_shade;

@@ -29,7 +29,7 @@ use crate::error::SylvaError;
 use crate::foliage::Foliage;
 use crate::mesh::shade::occlusion_with;
 use crate::mesh::{tube, TreeMesh};
-use crate::params::TreeParams;
+use crate::params::{MeshParams, TreeParams};
 use crate::skeleton::Skeleton;
 use crate::Generated;
 use glam::Vec3;
@@ -172,11 +172,12 @@ impl TreeLods {
 /// Generates a tree and its reduced levels (see the module docs).
 pub fn generate_lods(params: &TreeParams) -> Result<TreeLods, SylvaError> {
     let lod0 = crate::generate(params)?;
-    lods_of(lod0, params)
+    lods_of(lod0, &params.mesh)
 }
 
-/// The reduced levels of an already generated tree (`lod0` must come from `params`).
-pub fn lods_of(lod0: Generated, params: &TreeParams) -> Result<TreeLods, SylvaError> {
+/// The reduced levels of an already generated tree (`lod0` must come from parameters whose
+/// mesh parameters are `params`).
+pub fn lods_of(lod0: Generated, params: &MeshParams) -> Result<TreeLods, SylvaError> {
     let mut lod1 = build_lod1(&lod0.skeleton, &lod0.foliage, params)?;
     let mut lod2 = build_lod2(&lod0.skeleton, &lod0.foliage, params)?;
     // The reduced barks sit in LOD0's crown: the same leaves shade them (no holes are cut).
@@ -188,14 +189,14 @@ pub fn lods_of(lod0: Generated, params: &TreeParams) -> Result<TreeLods, SylvaEr
 }
 
 /// `params` with Mesh Quality scaled by `factor` (not re-validated: the sweep only needs q > 0).
-fn with_quality(params: &TreeParams, factor: f32) -> TreeParams {
+fn with_quality(params: &MeshParams, factor: f32) -> MeshParams {
     let mut p = params.clone();
     p.mesh_quality = params.mesh_quality * factor;
     p
 }
 
 /// LOD1: the whole skeleton at a lower quality, fewer but larger leaves.
-pub fn build_lod1(skeleton: &Skeleton, foliage: &Foliage, params: &TreeParams) -> Result<LodLevel, SylvaError> {
+pub fn build_lod1(skeleton: &Skeleton, foliage: &Foliage, params: &MeshParams) -> Result<LodLevel, SylvaError> {
     let mesh = tube::build(skeleton, &with_quality(params, LOD1_QUALITY))?;
     Ok(LodLevel {
         mesh,
@@ -206,7 +207,7 @@ pub fn build_lod1(skeleton: &Skeleton, foliage: &Foliage, params: &TreeParams) -
 }
 
 /// LOD2: trunk and level-1 stems at a low quality; leaves as a billboard cloud.
-pub fn build_lod2(skeleton: &Skeleton, foliage: &Foliage, params: &TreeParams) -> Result<LodLevel, SylvaError> {
+pub fn build_lod2(skeleton: &Skeleton, foliage: &Foliage, params: &MeshParams) -> Result<LodLevel, SylvaError> {
     let main = main_stems(skeleton);
     let mesh = tube::build(&main, &with_quality(params, LOD2_QUALITY))?;
     Ok(LodLevel {
@@ -234,7 +235,8 @@ pub fn main_stems(skeleton: &Skeleton) -> Skeleton {
         kept.parent = parent;
         stems.push(kept);
     }
-    Skeleton { mode: skeleton.mode, stems, scale: skeleton.scale, crown_base: skeleton.crown_base }
+    let Skeleton { mode, scale, crown_base, seed, levels, max_vertices, .. } = *skeleton;
+    Skeleton { mode, stems, scale, crown_base, seed, levels, max_vertices }
 }
 
 /// The leaf mesh one step lighter than `mesh`: blade → billboard cloud → card.

@@ -2,6 +2,7 @@
 //! generated trees (silhouettes rather than exact floats).
 
 use sylva_core::crown::profile_radius;
+use sylva_core::params::SkeletonParams;
 use sylva_core::skeleton::preview_profile;
 use sylva_core::skeleton::{self, Skeleton};
 use sylva_core::{CrownShape, TreeParams};
@@ -47,11 +48,12 @@ fn shape_ratio_matches_the_formulas_at_201_points() {
 }
 
 fn tree(shape: CrownShape, tweak: impl Fn(&mut TreeParams)) -> (TreeParams, Skeleton) {
-    let mut p = TreeParams { shape, levels: 2, ..TreeParams::default() };
-    p.level[1].length_v = 0.0;
-    p.level[1].branches = 60;
+    let mut p =
+        TreeParams { skeleton: SkeletonParams { shape, levels: 2, ..Default::default() }, ..TreeParams::default() };
+    p.skeleton.level[1].length_v = 0.0;
+    p.skeleton.level[1].branches = 60;
     tweak(&mut p);
-    let s = skeleton::build(&p).unwrap();
+    let s = skeleton::build(&p.skeleton).unwrap();
     (p, s)
 }
 
@@ -103,11 +105,11 @@ fn every_level1_tip_is_inside_the_preview_envelope() {
     for (i, shape) in CrownShape::ALL.iter().enumerate() {
         for seed in 0..3 {
             let (p, s) = tree(*shape, |p| {
-                p.seed = seed;
-                p.level[1].length_v = 0.1;
-                p.level[1].curve_v = 90.0;
+                p.skeleton.seed = seed;
+                p.skeleton.level[1].length_v = 0.1;
+                p.skeleton.level[1].curve_v = 90.0;
             });
-            let prof = preview_profile(&s, &p, sylva_core::ENVELOPE_SAMPLES);
+            let prof = preview_profile(&s, &p.skeleton, sylva_core::ENVELOPE_SAMPLES);
             assert!(!prof.is_empty());
             for st in s.stems.iter().filter(|x| x.level == 1) {
                 let tip = st.tip();
@@ -136,18 +138,18 @@ fn mean_declination(s: &Skeleton, top: bool) -> f32 {
 #[test]
 fn angle_spread_tilts_top_up_and_base_down() {
     let flat = |p: &mut TreeParams| {
-        p.level[1].curve = 0.0;
-        p.level[1].curve_v = 0.0;
-        p.level[1].down_angle_v = 0.0;
+        p.skeleton.level[1].curve = 0.0;
+        p.skeleton.level[1].curve_v = 0.0;
+        p.skeleton.level[1].down_angle_v = 0.0;
     };
     let (_, s0) = tree(CrownShape::Cylindrical, flat);
     let (_, sp) = tree(CrownShape::Cylindrical, |p| {
         flat(p);
-        p.angle_spread = 30.0;
+        p.skeleton.angle_spread = 30.0;
     });
     let (_, sn) = tree(CrownShape::Cylindrical, |p| {
         flat(p);
-        p.angle_spread = -30.0;
+        p.skeleton.angle_spread = -30.0;
     });
     assert!(mean_declination(&sp, true) < mean_declination(&s0, true) - 10.0, "positive: top more upright");
     assert!(mean_declination(&sp, false) > mean_declination(&s0, false) + 10.0, "positive: base more outward");
@@ -157,28 +159,33 @@ fn angle_spread_tilts_top_up_and_base_down() {
 #[test]
 fn splits_helix_and_pruning_do_what_they_say() {
     // Base splits make extra trunk records from the first joint.
-    let (_, s) = tree(CrownShape::Cylindrical, |p| p.base_splits = 2);
+    let (_, s) = tree(CrownShape::Cylindrical, |p| p.skeleton.base_splits = 2);
     assert_eq!(s.stems.iter().filter(|x| x.level == 0).count(), 3);
     // Negative CurveV winds the stem: its tip is much closer to the base than its length.
     let (_, s) = tree(CrownShape::Cylindrical, |p| {
-        p.level[1].curve_v = -60.0;
-        p.level[1].curve_res = 12;
+        p.skeleton.level[1].curve_v = -60.0;
+        p.skeleton.level[1].curve_res = 12;
     });
     let st = s.stems.iter().find(|x| x.level == 1).unwrap();
     assert!(st.tip().distance(st.base()) < 0.8 * st.length, "helix did not wind");
     // Pruning keeps every branch point inside the pruning envelope.
     let (p, s) = tree(CrownShape::Cylindrical, |p| {
-        p.prune_ratio = 1.0;
-        p.prune_width = 0.3;
+        p.skeleton.prune_ratio = 1.0;
+        p.skeleton.prune_width = 0.3;
     });
     let (_, unpruned) = tree(CrownShape::Cylindrical, |_| {});
     let total = |s: &Skeleton| s.stems.iter().filter(|x| x.level == 1).map(|x| x.length).sum::<f32>();
     assert!(total(&s) < 0.9 * total(&unpruned), "pruning shortened nothing");
     for st in s.stems.iter().filter(|x| x.level == 1) {
         for q in &st.points {
-            let ratio = (s.scale - q.y) / (s.scale * (1.0 - p.base_size));
-            let w = p.prune_width
-                * sylva_core::crown::prune_envelope(ratio, p.prune_width_peak, p.prune_power_low, p.prune_power_high);
+            let ratio = (s.scale - q.y) / (s.scale * (1.0 - p.skeleton.base_size));
+            let w = p.skeleton.prune_width
+                * sylva_core::crown::prune_envelope(
+                    ratio,
+                    p.skeleton.prune_width_peak,
+                    p.skeleton.prune_power_low,
+                    p.skeleton.prune_power_high,
+                );
             assert!((q.x * q.x + q.z * q.z).sqrt() / s.scale <= w + 0.02, "pruned branch leaves the envelope");
         }
     }
@@ -202,7 +209,7 @@ fn the_weeping_preset_hangs_curtains() {
     // twigs must hang, and far enough to read as curtains. With short, curved twigs they fell
     // 0.08 of the tree's height and the crown read as an upright cone.
     let p = sylva_core::presets::find("weeping").unwrap().params().unwrap();
-    let s = skeleton::build(&p).unwrap();
+    let s = skeleton::build(&p.skeleton).unwrap();
     let twigs: Vec<_> = s.stems.iter().filter(|st| st.level == 2 && st.points.len() >= 2).collect();
     let drop = |st: &&sylva_core::skeleton::Stem| st.points[0].y - st.points.last().unwrap().y;
     let hanging = twigs.iter().filter(|st| drop(st) > 0.0).count() as f32 / twigs.len() as f32;

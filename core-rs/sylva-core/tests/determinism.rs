@@ -3,6 +3,7 @@
 //! A hash change means every user's share URL now draws a different tree: change a golden
 //! value only on purpose, and say so in the commit.
 
+use sylva_core::params::SkeletonParams;
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 const GOLDEN: &[(&str, &str)] = &[
@@ -37,6 +38,8 @@ fn same_input_same_bytes_and_seed_matters() {
     let a = generate(&TreeParams::default()).unwrap();
     let b = generate(&TreeParams::default()).unwrap();
     assert_eq!(a.mesh, b.mesh);
-    let c = generate(&TreeParams { seed: 2, ..TreeParams::default() }).unwrap();
+    let c =
+        generate(&TreeParams { skeleton: SkeletonParams { seed: 2, ..Default::default() }, ..TreeParams::default() })
+            .unwrap();
     assert_ne!(a.hash, c.hash);
 }

@@ -475,7 +475,7 @@ fn ring_tangents_agree_with_lengyel_on_every_preset() {
 #[test]
 fn bare_tree_exports_without_leaves() {
     let mut p = TreeParams::default();
-    p.leaves = 0;
+    p.foliage.leaves = 0;
     let g = generate(&p).unwrap();
     assert_eq!(g.foliage.count(), 0);
     let glb = parse(&export::to_glb(&g, &ExportOptions::default()));
@@ -488,11 +488,11 @@ fn bare_tree_exports_without_leaves() {
 #[test]
 fn bark_type_changes_the_exported_textures_and_the_hash() {
     let mut p = TreeParams::default();
-    p.leaves = 0;
+    p.foliage.leaves = 0;
     let opts = ExportOptions::from_json(r#"{"bark_texture_size":32}"#).unwrap();
     let mut seen = Vec::new();
     for &kind in sylva_core::params::BarkType::ALL {
-        p.bark_type = kind;
+        p.mesh.bark_type = kind;
         let g = generate(&p).unwrap();
         let glb = parse(&export::to_glb(&g, &opts));
         let img = &glb.json["images"][0];

@@ -4,12 +4,13 @@
 use glam::Vec3;
 use sylva_core::foliage::{self, face_up, lower};
 use sylva_core::params::LeafLod;
+use sylva_core::params::{FoliageParams, LeafParams, SkeletonParams};
 use sylva_core::{generate, params::GrowthMode, SylvaError, TreeParams};
 
 fn small() -> TreeParams {
     let mut p = TreeParams::default();
-    p.level[1].branches = 8;
-    p.level[2].branches = 6;
+    p.skeleton.level[1].branches = 8;
+    p.skeleton.level[2].branches = 6;
     p
 }
 
@@ -37,17 +38,17 @@ fn default_tree_has_leaves_only_on_the_last_level() {
             (0..=200).any(|k| (s.sample(k as f32 / 200.0).0 - pos).length() < 0.02 * s.length.max(0.05) + 1e-3)
         })
     };
-    assert!(p.leaf_petiole > 0.0, "the default leaf (aspen) has a long petiole");
+    assert!(p.foliage.leaf_petiole > 0.0, "the default leaf (aspen) has a long petiole");
     for i in (0..n).step_by((n / 40).max(1)) {
         // The blade's base hangs Petiole Length (leaf y) beyond the stem: the petiole starts on it.
         let [_, dir, _, blade] = frame(&g.foliage.matrices, i);
-        let pos = blade - dir * p.leaf_petiole;
+        let pos = blade - dir * p.foliage.leaf_petiole;
         assert!(on_stem(pos, last), "leaf {i}'s petiole at {pos} is not on a level-{last} stem");
-        assert!(!on_stem(blade, last) || p.leaf_petiole * dir.length() < 0.02, "the blade hangs off the stem");
+        assert!(!on_stem(blade, last) || p.foliage.leaf_petiole * dir.length() < 0.02, "the blade hangs off the stem");
     }
     // Leaves per stem: Leaves on each whole last-level stem (split records share them).
     let stems = g.skeleton.stems.iter().filter(|s| s.level == last).count();
-    assert!(n <= stems * p.leaves as usize + stems, "{n} leaves on {stems} stems");
+    assert!(n <= stems * p.foliage.leaves as usize + stems, "{n} leaves on {stems} stems");
 }
 
 #[test]
@@ -94,7 +95,7 @@ fn orientation_follows_the_top_oriented_rule() {
 #[test]
 fn leaf_budget_is_a_clear_error() {
     let mut p = small();
-    p.max_leaves = 10;
+    p.foliage.max_leaves = 10;
     let e = generate(&p).unwrap_err();
     assert!(matches!(e, SylvaError::Budget { ref param, .. } if param == "max_leaves"), "{e:?}");
     assert!(e.message().contains("max_leaves budget of 10"), "{}", e.message());
@@ -110,10 +111,11 @@ fn foliage_is_deterministic_and_seeded_and_counts() {
     assert_eq!(a.foliage.matrices, b.foliage.matrices);
     assert_eq!(a.foliage.colors, b.foliage.colors);
     assert_eq!(a.hash, b.hash);
-    let c = generate(&TreeParams { seed: 7, ..p.clone() }).unwrap();
+    let c = generate(&TreeParams { skeleton: SkeletonParams { seed: 7, ..p.skeleton.clone() }, ..p.clone() }).unwrap();
     assert_ne!(a.foliage.matrices, c.foliage.matrices);
     // Leaves change the tree hash; a bare tree has none.
-    let bare = generate(&TreeParams { leaves: 0, ..p.clone() }).unwrap();
+    let bare =
+        generate(&TreeParams { foliage: FoliageParams { leaves: 0, ..p.foliage.clone() }, ..p.clone() }).unwrap();
     assert_eq!(bare.foliage.count(), 0);
     assert_ne!(bare.hash, a.hash);
     // Leaves never change the bark's geometry, only its shade: the crown darkens the bark inside it.
@@ -123,14 +125,23 @@ fn foliage_is_deterministic_and_seeded_and_counts() {
     let darkest = a.mesh.shade.iter().min().copied();
     assert!(darkest.is_some_and(|s| s < 230), "the crown shades some bark: darkest {darkest:?}");
     // Twigs of three: three leaves per site.
-    let three = generate(&TreeParams { foliage_twigs3: true, ..p.clone() }).unwrap();
+    let three =
+        generate(&TreeParams { foliage: FoliageParams { foliage_twigs3: true, ..p.foliage.clone() }, ..p.clone() })
+            .unwrap();
     assert_eq!(three.foliage.count(), 3 * a.foliage.count());
     // Leaf Mesh: the card is two triangles, the blade is the leaf's LOD0, Auto keeps the
     // foliage under its triangle budget.
-    let cards = generate(&TreeParams { foliage_lod: LeafLod::Card, ..p.clone() }).unwrap();
+    let cards =
+        generate(&TreeParams { leaf: LeafParams { foliage_lod: LeafLod::Card, ..p.leaf.clone() }, ..p.clone() })
+            .unwrap();
     assert_eq!(cards.foliage.mesh.triangle_count(), 2);
-    let blade = generate(&TreeParams { foliage_lod: LeafLod::Blade, ..p }).unwrap();
-    assert_eq!(blade.foliage.mesh, sylva_core::leaf::generate(&TreeParams::default()).unwrap().mesh);
+    let blade = generate(&TreeParams { leaf: LeafParams { foliage_lod: LeafLod::Blade, ..p.leaf }, ..p }).unwrap();
+    assert_eq!(
+        blade.foliage.mesh,
+        sylva_core::leaf::generate(&TreeParams::default().leaf, TreeParams::default().foliage.leaf_petiole)
+            .unwrap()
+            .mesh
+    );
     let auto = generate(&TreeParams::default()).unwrap();
     let tris = auto.foliage.mesh.triangle_count() as u64 * auto.foliage.count() as u64;
     assert!(tris <= foliage::AUTO_TRIANGLES, "{tris}");
@@ -138,13 +149,16 @@ fn foliage_is_deterministic_and_seeded_and_counts() {
 
 #[test]
 fn grown_trees_get_leaves_on_their_outermost_internodes() {
-    let p = TreeParams { growth_mode: GrowthMode::SpaceColonization, markers: 300, ..TreeParams::default() };
+    let p = TreeParams {
+        skeleton: SkeletonParams { growth_mode: GrowthMode::SpaceColonization, markers: 300, ..Default::default() },
+        ..TreeParams::default()
+    };
     let g = generate(&p).unwrap();
     assert!(g.foliage.count() > 0);
     let tips: Vec<Vec3> = g.skeleton.stems.iter().filter(|s| s.level > 0).map(|s| s.tip()).collect();
     for i in 0..g.foliage.count() {
         let pos = frame(&g.foliage.matrices, i)[3];
         let near = tips.iter().map(|t| (*t - pos).length()).fold(f32::INFINITY, f32::min);
-        assert!(near <= 3.5 * p.internode + 1e-3, "leaf {i} is {near} m from any shoot tip");
+        assert!(near <= 3.5 * p.skeleton.internode + 1e-3, "leaf {i} is {near} m from any shoot tip");
     }
 }

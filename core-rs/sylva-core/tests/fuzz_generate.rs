@@ -110,7 +110,7 @@ fn run(values: &[(&'static str, f64)]) -> Result<(), TestCaseError> {
         Err(e) => return Err(TestCaseError::fail(format!("a valid value was refused: {e}"))),
     };
     match generate(&p) {
-        Ok(g) => check_buffers(&g, p.max_vertices),
+        Ok(g) => check_buffers(&g, p.skeleton.max_vertices),
         Err(SylvaError::Budget { param, message }) => {
             // The vertex budget, or the leaf budget (foliage).
             prop_assert!(param == "max_vertices" || param == "max_leaves", "{}", param);
@@ -119,7 +119,7 @@ fn run(values: &[(&'static str, f64)]) -> Result<(), TestCaseError> {
         }
         // A leaf the registry ranges allow but the leaf rules refuse (leaf::validate, a blade
         // of almost no area): the tree's foliage reports it, naming the leaf parameter.
-        Err(SylvaError::InvalidParam { param, .. }) if param.starts_with("leaf_") && p.leaves > 0 => Ok(()),
+        Err(SylvaError::InvalidParam { param, .. }) if param.starts_with("leaf_") && p.foliage.leaves > 0 => Ok(()),
         Err(e) => Err(TestCaseError::fail(format!("valid params refused: {e:?}"))),
     }
 }

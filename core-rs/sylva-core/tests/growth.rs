@@ -3,6 +3,7 @@
 //! environment (wall, light, age, start points) does what it says.
 
 use sylva_core::growth::{self, pipe_radii, sca::ROOT};
+use sylva_core::params::SkeletonParams;
 use sylva_core::presets::{find, PRESETS};
 use sylva_core::{generate, SylvaError, TreeParams};
 
@@ -14,8 +15,8 @@ fn grown(name: &str) -> TreeParams {
 fn every_marker_lies_in_the_crown_and_outside_shadow_and_exclusion() {
     for preset in PRESETS.iter().filter(|p| p.name.starts_with("grown_")) {
         let p = preset.params().unwrap();
-        let env = growth::environment(&p);
-        let g = growth::grow(&p).unwrap();
+        let env = growth::environment(&p.skeleton);
+        let g = growth::grow(&p.skeleton).unwrap();
         assert!(g.markers.len() > 100, "{}: too few markers", preset.name);
         for m in &g.markers {
             assert!(
@@ -35,9 +36,9 @@ fn every_marker_lies_in_the_crown_and_outside_shadow_and_exclusion() {
 #[test]
 fn no_node_or_branch_enters_the_wall() {
     let p = grown("grown_beside_wall");
-    let env = growth::environment(&p);
+    let env = growth::environment(&p.skeleton);
     assert_eq!(env.exclusion.len(), 1);
-    let g = growth::grow(&p).unwrap();
+    let g = growth::grow(&p.skeleton).unwrap();
     for n in &g.nodes {
         assert!(!env.exclusion[0].contains(n.pos), "node {} inside the wall", n.pos);
         if n.parent != ROOT {
@@ -50,9 +51,9 @@ fn no_node_or_branch_enters_the_wall() {
 #[test]
 fn the_wall_makes_the_crown_lean_away() {
     let with = grown("grown_beside_wall");
-    let without = TreeParams { wall: false, ..with.clone() };
+    let without = TreeParams { skeleton: SkeletonParams { wall: false, ..with.skeleton.clone() }, ..with.clone() };
     let mean_x = |p: &TreeParams| {
-        let g = growth::grow(p).unwrap();
+        let g = growth::grow(&p.skeleton).unwrap();
         g.nodes.iter().map(|n| n.pos.x).sum::<f32>() / g.nodes.len() as f32
     };
     // The wall stands on the -x side.
@@ -62,29 +63,35 @@ fn the_wall_makes_the_crown_lean_away() {
 #[test]
 fn growth_terminates_even_when_markers_are_out_of_reach() {
     // The crown is far above a tiny influence radius: the trunk climbs until the cap.
-    let mut p = TreeParams { growth_mode: sylva_core::params::GrowthMode::SpaceColonization, ..TreeParams::default() };
-    p.crown_base = 40.0;
-    p.influence_radius = 0.1;
-    p.iterations = 50;
-    let g = growth::grow(&p).unwrap();
+    let mut p = TreeParams {
+        skeleton: SkeletonParams {
+            growth_mode: sylva_core::params::GrowthMode::SpaceColonization,
+            ..Default::default()
+        },
+        ..TreeParams::default()
+    };
+    p.skeleton.crown_base = 40.0;
+    p.skeleton.influence_radius = 0.1;
+    p.skeleton.iterations = 50;
+    let g = growth::grow(&p.skeleton).unwrap();
     assert_eq!(g.iterations, 50);
     assert_eq!(g.nodes.len(), 51, "one trunk node per iteration");
     // Normal growth stops on its own, well before the cap.
     let p = grown("grown_broadleaf");
-    let g = growth::grow(&p).unwrap();
-    assert!(g.iterations < p.iterations, "did not stop by itself: {} iterations", g.iterations);
+    let g = growth::grow(&p.skeleton).unwrap();
+    assert!(g.iterations < p.skeleton.iterations, "did not stop by itself: {} iterations", g.iterations);
 }
 
 #[test]
 fn the_pipe_model_holds_at_every_fork_of_a_grown_tree() {
     let p = grown("grown_broadleaf");
-    let g = growth::grow(&p).unwrap();
-    let r = pipe_radii(&g.nodes, p.tip_radius, p.pipe_power);
+    let g = growth::grow(&p.skeleton).unwrap();
+    let r = pipe_radii(&g.nodes, p.skeleton.tip_radius, p.skeleton.pipe_power);
     let mut sums = vec![0.0f64; g.nodes.len()];
     let mut kids = vec![0usize; g.nodes.len()];
     for (i, n) in g.nodes.iter().enumerate() {
         if n.parent != ROOT {
-            sums[n.parent as usize] += f64::from(r[i]).powf(f64::from(p.pipe_power));
+            sums[n.parent as usize] += f64::from(r[i]).powf(f64::from(p.skeleton.pipe_power));
             kids[n.parent as usize] += 1;
         }
     }
@@ -92,14 +99,14 @@ fn the_pipe_model_holds_at_every_fork_of_a_grown_tree() {
     assert!(forks > 20, "only {forks} forks");
     for i in 0..g.nodes.len() {
         if kids[i] == 0 {
-            assert_eq!(r[i], p.tip_radius);
+            assert_eq!(r[i], p.skeleton.tip_radius);
         } else {
-            let lhs = f64::from(r[i]).powf(f64::from(p.pipe_power));
+            let lhs = f64::from(r[i]).powf(f64::from(p.skeleton.pipe_power));
             assert!((lhs - sums[i]).abs() <= 1e-4 * sums[i], "node {i}: {lhs} vs {}", sums[i]);
         }
     }
     // And the stems handed to the mesher never thicken toward their tips.
-    let s = growth::skeleton(&p, &g);
+    let s = growth::skeleton(&p.skeleton, &g);
     for st in &s.stems {
         let radii = st.radii.as_ref().unwrap();
         assert!(radii.windows(2).all(|w| w[1] <= w[0] + 1e-6), "a stem thickens toward its tip");
@@ -111,20 +118,31 @@ fn age_replays_growth_and_start_points_make_a_hedgerow() {
     let full = grown("grown_broadleaf");
     let mut counts = Vec::new();
     for age in [0.25f32, 0.5, 0.75, 1.0] {
-        let g = generate(&TreeParams { growth_age: age, ..full.clone() }).unwrap();
+        let g = generate(&TreeParams {
+            skeleton: SkeletonParams { growth_age: age, ..full.skeleton.clone() },
+            ..full.clone()
+        })
+        .unwrap();
         counts.push(g.stats.vertices);
     }
     assert!(counts.windows(2).all(|w| w[0] < w[1]), "age is not monotonic: {counts:?}");
     let hedge = grown("grown_hedgerow");
-    let g = growth::grow(&hedge).unwrap();
+    let g = growth::grow(&hedge.skeleton).unwrap();
     assert_eq!(g.nodes.iter().filter(|n| n.parent == ROOT).count(), 7);
 }
 
 #[test]
 fn light_competition_thins_the_shaded_interior() {
     let p = grown("grown_broadleaf");
-    let lit = growth::grow(&TreeParams { light_competition: true, shade_depth: 2.0, ..p.clone() }).unwrap();
-    let free = growth::grow(&p).unwrap();
+    let lit = growth::grow(
+        &TreeParams {
+            skeleton: SkeletonParams { light_competition: true, shade_depth: 2.0, ..p.skeleton.clone() },
+            ..p.clone()
+        }
+        .skeleton,
+    )
+    .unwrap();
+    let free = growth::grow(&p.skeleton).unwrap();
     assert!(lit.nodes.len() < free.nodes.len(), "{} vs {}", lit.nodes.len(), free.nodes.len());
 }
 
@@ -132,12 +150,20 @@ fn light_competition_thins_the_shaded_interior() {
 fn growth_is_deterministic_and_bounded_by_the_budget() {
     let p = grown("grown_bushy");
     assert_eq!(generate(&p).unwrap().hash, generate(&p).unwrap().hash);
-    let e = generate(&TreeParams { max_vertices: 2_000, ..grown("grown_broadleaf") }).unwrap_err();
+    let e = generate(&TreeParams {
+        skeleton: SkeletonParams { max_vertices: 2_000, ..grown("grown_broadleaf").skeleton },
+        ..grown("grown_broadleaf")
+    })
+    .unwrap_err();
     assert!(matches!(e, SylvaError::Budget { .. }), "{e:?}");
     assert!(e.message().contains("growth stopped at 500 nodes"), "{e}");
     // Past the node budget, the vertex budget's advice names growth's parameters, not Weber &
     // Penn's Levels and Branches (which a grown tree does not have).
-    let e = generate(&TreeParams { max_vertices: 12_000, ..grown("grown_broadleaf") }).unwrap_err();
+    let e = generate(&TreeParams {
+        skeleton: SkeletonParams { max_vertices: 12_000, ..grown("grown_broadleaf").skeleton },
+        ..grown("grown_broadleaf")
+    })
+    .unwrap_err();
     assert!(e.message().contains("max_vertices budget of 12000"), "{e}");
     assert!(e.message().contains("lower Markers") && !e.message().contains("Levels"), "{e}");
 }
@@ -147,9 +173,16 @@ fn regression_the_bushy_reference_reads_the_add_ons_units() {
     // The SCA add-on gives Kill Distance and Influence Range in internode lengths; the preset
     // once took "kill distance 2.5" as metres (twice the add-on's) and grew 50 bare stems.
     let p = grown("grown_bushy");
-    assert_eq!((p.internode, p.markers, p.extra_markers, p.iterations), (0.5, 400, 3000, 1000));
-    assert!((p.kill_distance / p.internode - 2.5).abs() < 1e-6, "{}", p.kill_distance);
-    assert!((p.influence_radius / p.internode - 15.0).abs() < 1e-6, "{}", p.influence_radius);
+    assert_eq!(
+        (p.skeleton.internode, p.skeleton.markers, p.skeleton.extra_markers, p.skeleton.iterations),
+        (0.5, 400, 3000, 1000)
+    );
+    assert!((p.skeleton.kill_distance / p.skeleton.internode - 2.5).abs() < 1e-6, "{}", p.skeleton.kill_distance);
+    assert!(
+        (p.skeleton.influence_radius / p.skeleton.internode - 15.0).abs() < 1e-6,
+        "{}",
+        p.skeleton.influence_radius
+    );
     let g = generate(&p).unwrap();
     assert!(g.skeleton.stems.len() > 80, "{} stems", g.skeleton.stems.len());
 }

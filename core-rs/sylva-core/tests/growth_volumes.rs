@@ -3,6 +3,7 @@
 
 use glam::Vec3;
 use sylva_core::growth::{self, sca::ROOT};
+use sylva_core::params::SkeletonParams;
 use sylva_core::params::{CrownVolumeKind, GrowthMode, Primitive, VolumeGroup, VolumePrimitive};
 use sylva_core::{generate, generate_with_progress, SylvaError, TreeParams};
 
@@ -18,9 +19,9 @@ fn with_volumes() -> TreeParams {
 #[test]
 fn markers_fill_the_crown_union_minus_shadow_and_exclusion() {
     let p = with_volumes();
-    assert_eq!(p.crown_volume, CrownVolumeKind::Primitives);
-    let g = growth::grow(&p).unwrap();
-    let v = &p.volumes;
+    assert_eq!(p.skeleton.crown_volume, CrownVolumeKind::Primitives);
+    let g = growth::grow(&p.skeleton).unwrap();
+    let v = &p.skeleton.volumes;
     assert!(g.markers.len() > 1000, "{}", g.markers.len());
     let (mut in_box, mut in_sphere) = (0, 0);
     for m in &g.markers {
@@ -35,9 +36,9 @@ fn markers_fill_the_crown_union_minus_shadow_and_exclusion() {
 #[test]
 fn no_node_or_branch_enters_an_exclusion_primitive() {
     let p = with_volumes();
-    let env = growth::environment(&p);
-    let ex = p.volumes[3].shape;
-    let g = growth::grow(&p).unwrap();
+    let env = growth::environment(&p.skeleton);
+    let ex = p.skeleton.volumes[3].shape;
+    let g = growth::grow(&p.skeleton).unwrap();
     assert!(g.nodes.len() > 50);
     for n in &g.nodes {
         assert!(!ex.contains(n.pos), "node {} inside the exclusion sphere", n.pos);
@@ -53,12 +54,18 @@ fn moving_a_primitive_changes_the_tree_and_the_same_input_gives_the_same_hash() 
     let a = generate(&p).unwrap();
     assert_eq!(a.hash, generate(&p.clone()).unwrap().hash);
     let mut moved = p.clone();
-    moved.volumes[0].shape = Primitive::Sphere { centre: Vec3::new(1.0, 6.0, 0.0), radius: 3.0 };
+    moved.skeleton.volumes[0].shape = Primitive::Sphere { centre: Vec3::new(1.0, 6.0, 0.0), radius: 3.0 };
     assert_ne!(a.hash, generate(&moved).unwrap().hash);
     // Crown primitives only shape the crown when Crown Volume is Primitives.
-    let ellipsoid = TreeParams { crown_volume: CrownVolumeKind::Ellipsoid, volumes: vec![], ..p.clone() };
+    let ellipsoid = TreeParams {
+        skeleton: SkeletonParams { crown_volume: CrownVolumeKind::Ellipsoid, volumes: vec![], ..p.skeleton.clone() },
+        ..p.clone()
+    };
     let ignored = TreeParams {
-        volumes: vec![VolumePrimitive { group: VolumeGroup::Crown, ..p.volumes[0] }],
+        skeleton: SkeletonParams {
+            volumes: vec![VolumePrimitive { group: VolumeGroup::Crown, ..p.skeleton.volumes[0] }],
+            ..ellipsoid.skeleton.clone()
+        },
         ..ellipsoid.clone()
     };
     assert_eq!(generate(&ellipsoid).unwrap().hash, generate(&ignored).unwrap().hash);
@@ -67,9 +74,12 @@ fn moving_a_primitive_changes_the_tree_and_the_same_input_gives_the_same_hash() 
 #[test]
 fn progress_is_reported_in_order_and_does_not_change_the_tree() {
     let p = TreeParams {
-        growth_mode: GrowthMode::SpaceColonization,
-        iterations: 200,
-        extra_markers: 500,
+        skeleton: SkeletonParams {
+            growth_mode: GrowthMode::SpaceColonization,
+            iterations: 200,
+            extra_markers: 500,
+            ..Default::default()
+        },
         ..TreeParams::default()
     };
     let mut seen: Vec<f32> = Vec::new();
@@ -89,8 +99,8 @@ fn invalid_volumes_are_errors_naming_the_field() {
     assert!(matches!(&e, SylvaError::InvalidParam { param, .. } if param == "volumes[0].radius"), "{e:?}");
     // Fields are public: a struct built in code is validated by generate too.
     let mut p = with_volumes();
-    p.volumes[1].shape = Primitive::Box { centre: Vec3::new(0.0, f32::NAN, 0.0), size: Vec3::ONE };
+    p.skeleton.volumes[1].shape = Primitive::Box { centre: Vec3::new(0.0, f32::NAN, 0.0), size: Vec3::ONE };
     assert!(generate(&p).unwrap_err().message().starts_with("volumes[1].centre.y"));
-    p.volumes = vec![p.volumes[0]; 33];
+    p.skeleton.volumes = vec![p.skeleton.volumes[0]; 33];
     assert!(generate(&p).unwrap_err().message().contains("at most 32"));
 }

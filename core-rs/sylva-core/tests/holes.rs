@@ -9,11 +9,16 @@ use sylva_core::mesh::holes::{candidates, cut, Source};
 use sylva_core::mesh::topology::topology;
 use sylva_core::mesh::tube::build_blocks;
 use sylva_core::mesh::{TreeMesh, WIND_STRIDE};
+use sylva_core::params::{MeshParams, SkeletonParams};
 use sylva_core::{generate, skeleton, TreeParams};
 
 /// A thick, lobed trunk with big branches: room for holes.
 fn thick(count: u32) -> TreeParams {
-    TreeParams { hole_count: count, ratio: 0.035, hole_min_radius: 0.1, ..TreeParams::default() }
+    TreeParams {
+        skeleton: SkeletonParams { ratio: 0.035, ..Default::default() },
+        mesh: MeshParams { hole_count: count, hole_min_radius: 0.1, ..Default::default() },
+        ..TreeParams::default()
+    }
 }
 
 fn pos(m: &TreeMesh, v: usize) -> Vec3 {
@@ -22,10 +27,10 @@ fn pos(m: &TreeMesh, v: usize) -> Vec3 {
 
 /// The mesh without holes, the same mesh with them cut, and the holes (same densified plan).
 fn before_after(p: &TreeParams) -> (TreeMesh, TreeMesh, Vec<sylva_core::mesh::holes::Hole>) {
-    let sk = skeleton::build(p).unwrap();
-    let (before, blocks) = build_blocks(&sk, p).unwrap();
+    let sk = skeleton::build(&p.skeleton).unwrap();
+    let (before, blocks) = build_blocks(&sk, &p.mesh).unwrap();
     let mut after = before.clone();
-    let holes = cut(&mut after, &blocks, &sk, p);
+    let holes = cut(&mut after, &blocks, &sk, &p.mesh);
     (before, after, holes)
 }
 
@@ -40,7 +45,7 @@ fn holes_are_cut_when_asked_and_reach_their_depth() {
     assert_mesh_invariants(&g, "holes");
     assert_ne!(before, after);
     for h in &holes {
-        assert!((h.depth - p.hole_depth * h.radius / p.hole_size).abs() <= 0.35 * h.depth, "{h:?}");
+        assert!((h.depth - p.mesh.hole_depth * h.radius / p.mesh.hole_size).abs() <= 0.35 * h.depth, "{h:?}");
         // The cavity's vertices (moved or new) near this hole reach about `depth` inward.
         let moved = |v: usize| {
             v >= before.vertex_count() || before.positions[v * 3..v * 3 + 3] != after.positions[v * 3..v * 3 + 3]
@@ -68,7 +73,11 @@ fn no_holes_at_count_zero() {
     let g = generate(&p).unwrap();
     assert_eq!(g.stats.holes, 0);
     // Count 0 is the plain tree: no densified rings, nothing else changed.
-    let plain = generate(&TreeParams { ratio: 0.035, ..TreeParams::default() }).unwrap();
+    let plain = generate(&TreeParams {
+        skeleton: SkeletonParams { ratio: 0.035, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap();
     assert_eq!(g.hash, plain.hash);
 }
 
@@ -76,11 +85,11 @@ fn no_holes_at_count_zero() {
 fn cutting_keeps_the_surface_closed_and_manifold() {
     for (name, p) in [
         ("thick", thick(6)),
-        ("fluted", TreeParams { refine_curves: 5, lobes: 0, ..thick(6) }),
-        ("roots", TreeParams { root_count: 5, ..thick(6) }),
-        ("wide", TreeParams { hole_size: 0.9, hole_depth: 0.9, ..thick(4) }),
-        ("tiny", TreeParams { hole_size: 0.05, ..thick(4) }),
-        ("quality", TreeParams { mesh_quality: 2.5, ..thick(5) }),
+        ("fluted", TreeParams { mesh: MeshParams { refine_curves: 5, lobes: 0, ..thick(6).mesh }, ..thick(6) }),
+        ("roots", TreeParams { skeleton: SkeletonParams { root_count: 5, ..thick(6).skeleton }, ..thick(6) }),
+        ("wide", TreeParams { mesh: MeshParams { hole_size: 0.9, hole_depth: 0.9, ..thick(4).mesh }, ..thick(4) }),
+        ("tiny", TreeParams { mesh: MeshParams { hole_size: 0.05, ..thick(4).mesh }, ..thick(4) }),
+        ("quality", TreeParams { mesh: MeshParams { mesh_quality: 2.5, ..thick(5).mesh }, ..thick(5) }),
     ] {
         let (before, after, holes) = before_after(&p);
         assert!(!holes.is_empty(), "{name}: no hole cut");
@@ -100,7 +109,7 @@ fn holes_are_deterministic_and_follow_their_seed() {
     let a = generate(&thick(2)).unwrap();
     let b = generate(&thick(2)).unwrap();
     assert_eq!(a.hash, b.hash);
-    let c = generate(&TreeParams { hole_seed: 7, ..thick(2) }).unwrap();
+    let c = generate(&TreeParams { mesh: MeshParams { hole_seed: 7, ..thick(2).mesh }, ..thick(2) }).unwrap();
     assert_ne!(a.hash, c.hash, "another hole seed picks other places");
     assert_eq!(c.stats.holes, 2);
     // The hole seed moves holes only: the tree's stems stay.
@@ -109,16 +118,20 @@ fn holes_are_deterministic_and_follow_their_seed() {
 
 #[test]
 fn holes_respect_the_minimum_radius() {
-    let g = generate(&TreeParams { hole_min_radius: 5.0, ..thick(3) }).unwrap();
+    let g = generate(&TreeParams { mesh: MeshParams { hole_min_radius: 5.0, ..thick(3).mesh }, ..thick(3) }).unwrap();
     assert_eq!(g.stats.holes, 0);
 }
 
 #[test]
 fn surface_candidates_come_from_concave_clusters_on_a_fluted_trunk() {
-    let p = TreeParams { refine_curves: 6, lobes: 0, flare: 0.0, ..thick(1) };
-    let sk = skeleton::build(&p).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &p).unwrap();
-    let cands = candidates(&mesh, &blocks, &sk, &p);
+    let p = TreeParams {
+        skeleton: SkeletonParams { flare: 0.0, ..thick(1).skeleton },
+        mesh: MeshParams { refine_curves: 6, lobes: 0, ..thick(1).mesh },
+        ..thick(1)
+    };
+    let sk = skeleton::build(&p.skeleton).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
+    let cands = candidates(&mesh, &blocks, &sk, &p.mesh);
     let surface: Vec<_> = cands.iter().filter(|c| c.source == Source::Surface && c.stem == 0).collect();
     assert!(surface.len() >= 6, "six flutes give concave valleys: {}", surface.len());
     // Each is concave: its neighbours lie, on average, above its tangent plane (computed here
@@ -151,18 +164,23 @@ fn surface_candidates_come_from_concave_clusters_on_a_fluted_trunk() {
     assert!(2 * in_crease >= surface.len(), "{in_crease} of {} in creases", surface.len());
     // A plain round trunk has no concave clusters (bent level-1 branches may: the inside of a
     // bend is concave along the stem).
-    let round = TreeParams { lobes: 0, flare: 0.0, ..thick(1) };
-    let sk = skeleton::build(&round).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &round).unwrap();
-    assert!(candidates(&mesh, &blocks, &sk, &round).iter().all(|c| c.source != Source::Surface || c.stem != 0));
+    let round = TreeParams {
+        skeleton: SkeletonParams { flare: 0.0, ..thick(1).skeleton },
+        mesh: MeshParams { lobes: 0, ..thick(1).mesh },
+        ..thick(1)
+    };
+    let sk = skeleton::build(&round.skeleton).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &round.mesh).unwrap();
+    assert!(candidates(&mesh, &blocks, &sk, &round.mesh).iter().all(|c| c.source != Source::Surface || c.stem != 0));
 }
 
 #[test]
 fn structural_candidates_sit_below_big_junctions_and_between_roots() {
-    let p = TreeParams { root_count: 4, root_spread: 0.0, ..thick(1) };
-    let sk = skeleton::build(&p).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &p).unwrap();
-    let cands = candidates(&mesh, &blocks, &sk, &p);
+    let p =
+        TreeParams { skeleton: SkeletonParams { root_count: 4, root_spread: 0.0, ..thick(1).skeleton }, ..thick(1) };
+    let sk = skeleton::build(&p.skeleton).unwrap();
+    let (mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
+    let cands = candidates(&mesh, &blocks, &sk, &p.mesh);
     let junctions: Vec<_> = cands.iter().filter(|c| c.source == Source::Junction).collect();
     let roots: Vec<_> = cands.iter().filter(|c| c.source == Source::Root).collect();
     assert!(!junctions.is_empty(), "no junction candidates");
@@ -195,13 +213,13 @@ fn structural_candidates_sit_below_big_junctions_and_between_roots() {
 #[test]
 fn new_vertices_get_wind_from_the_rim() {
     let p = thick(2);
-    let sk = skeleton::build(&p).unwrap();
-    let (mut mesh, blocks) = build_blocks(&sk, &p).unwrap();
+    let sk = skeleton::build(&p.skeleton).unwrap();
+    let (mut mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
     // Fake wind data: each vertex's own index in every float, so copies are traceable.
     let n = mesh.vertex_count();
     mesh.wind = (0..n).flat_map(|v| [v as f32; WIND_STRIDE]).collect();
     let before = mesh.clone();
-    let holes = cut(&mut mesh, &blocks, &sk, &p);
+    let holes = cut(&mut mesh, &blocks, &sk, &p.mesh);
     assert_eq!(holes.len(), 2);
     assert_eq!(mesh.wind.len(), mesh.vertex_count() * WIND_STRIDE);
     // Every vertex whose wind changed copied the entry of an untouched vertex used by the cut
@@ -229,17 +247,23 @@ fn new_vertices_get_wind_from_the_rim() {
 #[test]
 fn holes_never_take_the_mesh_past_the_vertex_budget() {
     // Without welding the tube's count is exact, so the budget can sit right above it.
-    let p = TreeParams { weld: false, ..thick(8) };
+    let p = TreeParams { mesh: MeshParams { weld: false, ..thick(8).mesh }, ..thick(8) };
     let (before, after, all) = before_after(&p);
     assert!(all.len() >= 2, "{all:?}");
     let added = after.vertex_count() - before.vertex_count();
     // Room for about one hole: the tube fits, the first cavity fits, the rest don't.
-    let tight = TreeParams { max_vertices: (before.vertex_count() + added / all.len()) as u32, ..p.clone() };
+    let tight = TreeParams {
+        skeleton: SkeletonParams {
+            max_vertices: (before.vertex_count() + added / all.len()) as u32,
+            ..p.skeleton.clone()
+        },
+        ..p.clone()
+    };
     let (_, cut_tight, some) = before_after(&tight);
-    assert!(cut_tight.vertex_count() <= tight.max_vertices as usize);
+    assert!(cut_tight.vertex_count() <= tight.skeleton.max_vertices as usize);
     assert!(!some.is_empty() && some.len() < all.len(), "{} of {}", some.len(), all.len());
     let g = generate(&tight).unwrap();
-    assert!(g.stats.vertices <= tight.max_vertices as usize);
+    assert!(g.stats.vertices <= tight.skeleton.max_vertices as usize);
     assert_eq!(g.stats.holes, some.len());
 }
 
@@ -390,9 +414,14 @@ fn a_weld_fallback_on_a_densified_stem_stays_within_the_budget() {
         ("max_vertices", 33603.0),
     ];
     let p = TreeParams::from_values(CASE.iter().copied()).unwrap();
-    assert_eq!((p.hole_count, p.weld), (1, true));
+    assert_eq!((p.mesh.hole_count, p.mesh.weld), (1, true));
     match generate(&p) {
-        Ok(g) => assert!(g.stats.vertices <= p.max_vertices as usize, "{} > {}", g.stats.vertices, p.max_vertices),
+        Ok(g) => assert!(
+            g.stats.vertices <= p.skeleton.max_vertices as usize,
+            "{} > {}",
+            g.stats.vertices,
+            p.skeleton.max_vertices
+        ),
         Err(sylva_core::SylvaError::Budget { param, .. }) => assert_eq!(param, "max_vertices"),
         Err(e) => panic!("{e:?}"),
     }
@@ -404,7 +433,7 @@ fn a_weld_fallback_on_a_densified_stem_stays_within_the_budget() {
 #[test]
 fn holes_read_as_holes_dark_inside_with_a_rolled_rim() {
     for (size, depth) in [(0.7, 0.8), (0.35, 0.5)] {
-        let p = TreeParams { hole_size: size, hole_depth: depth, ..thick(3) };
+        let p = TreeParams { mesh: MeshParams { hole_size: size, hole_depth: depth, ..thick(3).mesh }, ..thick(3) };
         let g = generate(&p).unwrap();
         assert!(!g.holes.is_empty(), "{size} {depth}: no hole");
         assert_mesh_invariants(&g, "holes read as holes");

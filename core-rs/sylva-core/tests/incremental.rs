@@ -4,7 +4,7 @@
 
 use sylva_core::clock::NoClock;
 use sylva_core::params::{registry, ParamKind, ParamSpec, Stage};
-use sylva_core::session::{first_stage, Quality, Session};
+use sylva_core::session::{Quality, Session};
 use sylva_core::{generate, TreeParams};
 
 /// A valid value of `spec` different from `v` (a small step up, or down at the top).
@@ -120,21 +120,48 @@ fn later_stage_edits_keep_the_earlier_results() {
 }
 
 #[test]
-fn first_stage_is_the_earliest_changed_parameter() {
+fn first_difference_is_the_earliest_changed_stage_struct() {
     let a = TreeParams::default();
     let mut b = a.clone();
-    assert_eq!(first_stage(&a, &b), Stage::Viewer);
+    assert_eq!(a.first_difference(&b), Stage::Viewer);
     b.set("leaf_teeth", 3.0).unwrap();
-    assert_eq!(first_stage(&a, &b), Stage::Leaf);
+    assert_eq!(a.first_difference(&b), Stage::Leaf);
     b.set("foliage_angle", 3.0).unwrap();
-    assert_eq!(first_stage(&a, &b), Stage::Foliage);
+    assert_eq!(a.first_difference(&b), Stage::Foliage);
     b.set("lobes", 3.0).unwrap();
-    assert_eq!(first_stage(&a, &b), Stage::Mesh);
+    assert_eq!(a.first_difference(&b), Stage::Mesh);
     b.set("l2_length", 0.3).unwrap();
-    assert_eq!(first_stage(&a, &b), Stage::Skeleton);
+    assert_eq!(a.first_difference(&b), Stage::Skeleton);
     let mut c = a.clone();
     c.set("show_markers", 1.0).unwrap();
-    assert_eq!(first_stage(&a, &c), Stage::Viewer);
+    assert_eq!(a.first_difference(&c), Stage::Viewer);
+    assert_ne!(a.viewer, c.viewer);
+    // The growth volumes are skeleton data.
+    let mut d = a.clone();
+    d.skeleton.volumes =
+        sylva_core::params::volumes::from_json(r#"[{"kind":"sphere","group":"crown","centre":[0,6,0],"radius":3}]"#)
+            .unwrap();
+    assert_eq!(a.first_difference(&d), Stage::Skeleton);
+}
+
+/// Every parameter lives in the struct of the stage the registry declares for it: setting it
+/// changes that struct and no other, so the session compares each parameter exactly once.
+#[test]
+fn every_parameter_lives_in_its_declared_stage_struct() {
+    let a = TreeParams::default();
+    for spec in registry() {
+        let mut b = a.clone();
+        b.set(&spec.id, edited(spec, a.get(&spec.id).unwrap())).unwrap();
+        let changed = [
+            (Stage::Skeleton, a.skeleton != b.skeleton),
+            (Stage::Mesh, a.mesh != b.mesh),
+            (Stage::Foliage, a.foliage != b.foliage),
+            (Stage::Leaf, a.leaf != b.leaf),
+            (Stage::Viewer, a.viewer != b.viewer),
+        ];
+        let stages: Vec<Stage> = changed.iter().filter(|c| c.1).map(|c| c.0).collect();
+        assert_eq!(stages, [spec.stage], "{}", spec.id);
+    }
 }
 
 #[test]
@@ -173,15 +200,15 @@ fn an_error_keeps_the_previous_tree() {
     session.update(&p, Quality::Full, &NoClock, None).unwrap();
     let hash = session.hash();
     let mut bad = p.clone();
-    bad.max_leaves = 10; // the budget error comes from the foliage stage, after a new bark
-    bad.mesh_quality = 2.0;
+    bad.foliage.max_leaves = 10; // the budget error comes from the foliage stage, after a new bark
+    bad.mesh.mesh_quality = 2.0;
     let e = session.update(&bad, Quality::Full, &NoClock, None).unwrap_err();
     assert!(e.to_string().contains("max_leaves"), "{e}");
     assert_eq!(session.hash(), hash);
     assert_eq!(session.current().unwrap().params, p);
     // And the next edit is still incremental against the kept tree.
     let mut q = p.clone();
-    q.foliage_angle = 10.0;
+    q.foliage.foliage_angle = 10.0;
     let cur = session.update(&q, Quality::Full, &NoClock, None).unwrap();
     assert!(!cur.changes.bark);
     assert_eq!(session.hash(), Some(generate(&q).unwrap().hash));
@@ -237,7 +264,7 @@ fn a_drag_places_every_other_leaf_lit_by_the_previous_field_and_the_release_plac
     for (i, m) in preview.matrices.chunks_exact(16).enumerate().step_by(97) {
         let f = &full[i * thin * 16..(i * thin + 1) * 16];
         // Where the petiole meets the stem (the translation minus the petiole along the leaf's y).
-        let attach = |c: &[f32]| [0, 1, 2].map(|a| c[12 + a] - c[4 + a] * p.leaf_petiole);
+        let attach = |c: &[f32]| [0, 1, 2].map(|a| c[12 + a] - c[4 + a] * p.foliage.leaf_petiole);
         let (a, b) = (attach(m), attach(f));
         assert!((0..3).all(|k| (a[k] - b[k]).abs() < 1e-5), "preview leaf {i} sits where full leaf {} does", i * thin);
         let len = |c: &[f32]| (c[4] * c[4] + c[5] * c[5] + c[6] * c[6]).sqrt();

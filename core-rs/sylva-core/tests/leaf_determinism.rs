@@ -2,8 +2,14 @@
 //! veins, auxins, meshes, textures), pinned like the tree presets'. The wasm build must give the
 //! same hashes (`npm run bench` compares them).
 
-use sylva_core::leaf::generate;
 use sylva_core::leaf::presets::LEAF_PRESETS;
+use sylva_core::leaf::Leaf;
+use sylva_core::TreeParams;
+
+/// The leaf of tree parameters `p`: its leaf parameters and Petiole Length.
+fn generate(p: &TreeParams) -> Result<Leaf, sylva_core::SylvaError> {
+    sylva_core::leaf::generate(&p.leaf, p.foliage.leaf_petiole)
+}
 
 const GOLDEN: &[(&str, &str)] = &[
     ("oak", "92fba69a8a7575d9"),
@@ -41,14 +47,14 @@ fn same_parameters_same_leaf_and_seeds_matter() {
     assert_eq!(a.mesh, b.mesh);
     assert_eq!(a.veins, b.veins);
     let mut q = p.clone();
-    q.leaf_vein_seed += 1;
+    q.leaf.leaf_vein_seed += 1;
     assert_ne!(generate(&q).unwrap().hash, a.hash, "the vein seed moves the auxins");
     let mut q = p.clone();
-    q.leaf_asymmetry_seed = 9;
+    q.leaf.leaf_asymmetry_seed = 9;
     assert_ne!(generate(&q).unwrap().hash, a.hash, "the asymmetry seed changes the outline");
     // The tree's own seed and parameters do not touch the leaf.
     let mut q = p.clone();
-    q.seed = 12345;
-    q.scale = 30.0;
+    q.skeleton.seed = 12345;
+    q.skeleton.scale = 30.0;
     assert_eq!(generate(&q).unwrap().hash, a.hash);
 }

@@ -14,21 +14,21 @@ use sylva_core::rng::Rng;
 use sylva_core::TreeParams;
 
 fn outline_of(p: &TreeParams) -> Outline {
-    margin::build(p, &outline::build(p)).unwrap()
+    margin::build(&p.leaf, &outline::build(&p.leaf)).unwrap()
 }
 
 /// The outline, or `None` for parameters refused for a blade without area.
 fn try_outline(p: &TreeParams) -> Option<Outline> {
-    margin::build(p, &outline::build(p)).ok()
+    margin::build(&p.leaf, &outline::build(&p.leaf)).ok()
 }
 
 /// A round blade (the superformula with m = 4, a = b = 1, n1 = n2 = n3 = 2 is a circle).
 fn circle(margin: LeafMargin, teeth: u32, depth: f32) -> TreeParams {
     let mut p = TreeParams::default();
-    p.leaf_outline = LeafOutline::Superformula;
-    (p.leaf_m, p.leaf_a, p.leaf_b, p.leaf_n1, p.leaf_n2, p.leaf_n3, p.leaf_aspect) =
+    p.leaf.leaf_outline = LeafOutline::Superformula;
+    (p.leaf.leaf_m, p.leaf.leaf_a, p.leaf.leaf_b, p.leaf.leaf_n1, p.leaf.leaf_n2, p.leaf.leaf_n3, p.leaf.leaf_aspect) =
         (4.0, 1.0, 1.0, 2.0, 2.0, 2.0, 1.0);
-    (p.leaf_margin, p.leaf_teeth, p.leaf_tooth_depth) = (margin, teeth, depth);
+    (p.leaf.leaf_margin, p.leaf.leaf_teeth, p.leaf.leaf_tooth_depth) = (margin, teeth, depth);
     p
 }
 
@@ -83,7 +83,7 @@ fn the_tooth_count_is_visible_in_the_outline() {
 fn serrate_teeth_lean_toward_the_tip() {
     let o = outline_of(&{
         let mut p = circle(LeafMargin::Serrate, 16, 0.2);
-        p.leaf_tooth_sharpness = 0.8;
+        p.leaf.leaf_tooth_sharpness = 0.8;
         p
     });
     // Along the left half from the tip: angle from the tip around the centre, and radius.
@@ -122,7 +122,7 @@ fn asymmetry_seed_zero_is_exactly_mirror_symmetric() {
     // Every preset without an Asymmetry Seed (the oak has one: irregular lobes, halves apart).
     for preset in LEAF_PRESETS {
         let p = preset.params().unwrap();
-        if p.leaf_asymmetry_seed == 0 {
+        if p.leaf.leaf_asymmetry_seed == 0 {
             assert_mirrored(&outline_of(&p), preset.name);
         }
     }
@@ -130,13 +130,13 @@ fn asymmetry_seed_zero_is_exactly_mirror_symmetric() {
     let mut asymmetric = 0;
     for case in 0..60 {
         let mut p = random_leaf_params(&mut rng);
-        p.leaf_asymmetry_seed = 0;
+        p.leaf.leaf_asymmetry_seed = 0;
         let Some(o) = try_outline(&p) else {
             asymmetric += 1;
             continue;
         };
         assert_mirrored(&o, &format!("case {case}"));
-        p.leaf_asymmetry_seed = 1 + case;
+        p.leaf.leaf_asymmetry_seed = 1 + case;
         let Some(o) = try_outline(&p) else {
             asymmetric += 1;
             continue;
@@ -162,13 +162,13 @@ fn the_leaf_frame_base_at_origin_tip_up_counter_clockwise() {
         assert!(o.points[1..o.base_index].iter().all(|q| q.x <= 0.0), "case {case}: left half at x <= 0");
         assert!(o.points[o.base_index + 1..].iter().all(|q| q.x >= 0.0), "case {case}: right half at x >= 0");
         assert!(o.points.iter().all(|q| q.is_finite()));
-        if p.leaf_outline == LeafOutline::Superformula && p.leaf_asymmetry_seed == 0 {
+        if p.leaf.leaf_outline == LeafOutline::Superformula && p.leaf.leaf_asymmetry_seed == 0 {
             let (lo, hi) = sylva_core::leaf::geom::bounds(&o.points);
             let aspect = (hi.x - lo.x) / (hi.y - lo.y);
             assert!(
-                (aspect / p.leaf_aspect - 1.0).abs() < 0.05,
+                (aspect / p.leaf.leaf_aspect - 1.0).abs() < 0.05,
                 "case {case}: width/height {aspect} for aspect {}",
-                p.leaf_aspect
+                p.leaf.leaf_aspect
             );
         }
     }

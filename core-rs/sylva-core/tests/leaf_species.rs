@@ -6,16 +6,21 @@ use glam::Vec2;
 use sylva_core::leaf::geom::point_in_polygon;
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::veins::{VeinGraph, NONE};
-use sylva_core::leaf::{generate, margin, outline, Leaf, Outline};
+use sylva_core::leaf::{margin, outline, Leaf, Outline};
 use sylva_core::params::{LeafOutline, LeafPrimaries};
 use sylva_core::TreeParams;
+
+/// The leaf of tree parameters `p`: its leaf parameters and Petiole Length.
+fn generate(p: &TreeParams) -> Result<Leaf, sylva_core::SylvaError> {
+    sylva_core::leaf::generate(&p.leaf, p.foliage.leaf_petiole)
+}
 
 fn preset(name: &str) -> TreeParams {
     find(name).unwrap_or_else(|| panic!("leaf preset {name}")).params().unwrap()
 }
 
 fn outline_of(p: &TreeParams) -> Outline {
-    margin::build(p, &outline::build(p)).unwrap()
+    margin::build(&p.leaf, &outline::build(&p.leaf)).unwrap()
 }
 
 /// Local maxima of the half-width `|x|` along the left half (tip to base) that stand at least
@@ -53,12 +58,12 @@ fn children(g: &VeinGraph, node: u32) -> Vec<u32> {
 #[test]
 fn oak_lobes_sit_along_the_midrib_with_sinuses_halfway_in() {
     let p = preset("oak");
-    assert_eq!(p.leaf_outline, LeafOutline::Pinnate);
+    assert_eq!(p.leaf.leaf_outline, LeafOutline::Pinnate);
     let o = outline_of(&p);
     let lobes = lobes_along_the_midrib(&o, 0.015);
     // Five lateral lobes per side plus the terminal lobe, at distinct heights along the midrib
     // (a radial superformula puts its points around one centre instead).
-    assert_eq!(lobes.len(), p.leaf_lobes as usize + 1, "{lobes:?}");
+    assert_eq!(lobes.len(), p.leaf.leaf_lobes as usize + 1, "{lobes:?}");
     let ys: Vec<f32> = lobes.iter().map(|l| l.0).collect();
     assert!(ys.windows(2).all(|w| w[0] - w[1] > 0.08), "lobes spread from the tip to the base: {ys:?}");
     assert!(*ys.last().unwrap() < 0.35 && ys[1] > 0.6, "{ys:?}");
@@ -76,7 +81,7 @@ fn oak_lobes_sit_along_the_midrib_with_sinuses_halfway_in() {
     // A new lobe count places that many lobes (the lowest, by the narrow base, are small).
     for n in [3, 7, 9] {
         let mut q = p.clone();
-        q.leaf_lobes = n;
+        q.leaf.leaf_lobes = n;
         assert_eq!(lobes_along_the_midrib(&outline_of(&q), 0.008).len(), n as usize + 1, "{n} lobes");
     }
 }
@@ -102,22 +107,22 @@ fn oak_has_one_secondary_vein_per_lobe_ending_in_it() {
     }
     // Among the primaries, exactly one secondary per lobe and side leaves the midrib (x = 0).
     let mask = sylva_core::leaf::raster::Mask::new(&o.points, 256);
-    let primaries = sylva_core::leaf::veins::primary::build(&p, o, &mask);
+    let primaries = sylva_core::leaf::veins::primary::build(&p.leaf, o, &mask);
     let off_midrib = primaries
         .nodes
         .iter()
         .filter(|n| n.parent != NONE && primaries.nodes[n.parent as usize].pos.x == 0.0 && n.pos.x != 0.0)
         .count();
-    assert_eq!(off_midrib, 2 * p.leaf_lobes as usize, "one secondary per lobe");
+    assert_eq!(off_midrib, 2 * p.leaf.leaf_lobes as usize, "one secondary per lobe");
 }
 
 #[test]
 fn maple_has_five_primary_veins_from_the_petiole_junction() {
     let p = preset("maple");
-    assert_eq!((p.leaf_outline, p.leaf_primary_veins), (LeafOutline::Palmate, LeafPrimaries::Palmate));
+    assert_eq!((p.leaf.leaf_outline, p.leaf.leaf_primary_veins), (LeafOutline::Palmate, LeafPrimaries::Palmate));
     let l = generate(&p).unwrap();
     let mask = sylva_core::leaf::raster::Mask::new(&l.outline.points, 256);
-    let g = &sylva_core::leaf::veins::primary::build(&p, &l.outline, &mask);
+    let g = &sylva_core::leaf::veins::primary::build(&p.leaf, &l.outline, &mask);
     // The petiole's vein runs up to the junction, where the five primaries part.
     let junction = (0..g.nodes.len() as u32).find(|&i| children(g, i).len() > 1).unwrap();
     assert!((g.nodes[junction as usize].pos - l.outline.center).length() < 0.02, "the junction is the centre");
@@ -158,7 +163,7 @@ fn maple_has_five_primary_veins_from_the_petiole_junction() {
 #[test]
 fn ginkgo_veins_fork_in_two_again_and_again() {
     let p = preset("ginkgo");
-    assert_eq!(p.leaf_primary_veins, LeafPrimaries::Dichotomous);
+    assert_eq!(p.leaf.leaf_primary_veins, LeafPrimaries::Dichotomous);
     let l = generate(&p).unwrap();
     let g = &l.veins.graph;
     assert_eq!(children(g, 0).len(), 2, "two veins enter the blade from the petiole");
@@ -204,7 +209,7 @@ fn primaries_stay_inside_the_blade_and_colonization_starts_from_them() {
         }
         // Replay order: the primaries are born first; colonization's nodes after them.
         let primaries = sylva_core::leaf::veins::primary::build(
-            &p,
+            &p.leaf,
             &l.outline,
             &sylva_core::leaf::raster::Mask::new(&l.outline.points, 256),
         );
@@ -230,8 +235,8 @@ fn check_mesh(name: &str, l: &Leaf) {
 fn pine_needles_come_in_fascicles_of_round_needles() {
     for n in 2..=5u32 {
         let mut p = preset("pine");
-        p.leaf_fascicle = n;
-        p.leaf_shoot = 0; // one fascicle (the shoot of them is tested below)
+        p.leaf.leaf_fascicle = n;
+        p.leaf.leaf_shoot = 0; // one fascicle (the shoot of them is tested below)
         let l = generate(&p).unwrap();
         check_mesh("pine", &l);
         let pos: Vec<glam::Vec3> =
@@ -246,7 +251,7 @@ fn pine_needles_come_in_fascicles_of_round_needles() {
         }
         // Round, not a flat blade: the needles have depth (z) as well as width (x).
         let zs = pos.iter().map(|q| q.z.abs()).fold(0.0f32, f32::max);
-        assert!(zs > 0.3 * p.leaf_aspect, "fascicle depth {zs}");
+        assert!(zs > 0.3 * p.leaf.leaf_aspect, "fascicle depth {zs}");
         // Faces wind outward: each face's normal points away from the fascicle's axis.
         let outward = l
             .mesh
@@ -269,7 +274,11 @@ fn the_petiole_is_drawn_and_flat_for_aspen() {
         let l = generate(&p).unwrap();
         check_mesh(name, &l);
         let lowest = l.mesh.positions.chunks_exact(3).map(|c| c[1]).fold(f32::MAX, f32::min);
-        assert!((lowest + p.leaf_petiole).abs() < 1e-6, "{name}: the petiole reaches y = -{}", p.leaf_petiole);
+        assert!(
+            (lowest + p.foliage.leaf_petiole).abs() < 1e-6,
+            "{name}: the petiole reaches y = -{}",
+            p.foliage.leaf_petiole
+        );
         // The petiole is the mesh's last quad.
         let stalk: Vec<&[f32]> = l.mesh.positions.chunks_exact(3).rev().take(4).collect();
         let spread = |k: usize| {
@@ -281,12 +290,12 @@ fn the_petiole_is_drawn_and_flat_for_aspen() {
             assert!(spread(0) > 0.02 && spread(2) < 1e-6, "{name}: in the blade's plane");
         }
         assert!(
-            l.petiole == p.leaf_petiole
+            l.petiole == p.foliage.leaf_petiole
                 && sylva_core::leaf::svg::render(&l, &Default::default()).contains("stroke-linecap=\"round\"")
         );
     }
     let oak = preset("oak");
-    assert!(oak.leaf_petiole < 0.1 && preset("maple").leaf_petiole > 0.5, "oak short, maple long");
+    assert!(oak.foliage.leaf_petiole < 0.1 && preset("maple").foliage.leaf_petiole > 0.5, "oak short, maple long");
 }
 
 #[test]
@@ -356,7 +365,7 @@ fn regression_every_leaf_parameter_at_its_bounds_on_every_species() {
             for v in [s.min, s.max] {
                 let mut p = base.clone();
                 p.set(&s.id, v).unwrap();
-                let r = std::panic::catch_unwind(|| sylva_core::leaf::generate(&p).map(|_| ()));
+                let r = std::panic::catch_unwind(|| generate(&p).map(|_| ()));
                 assert!(r.is_ok(), "{}: {} = {v} panicked", leaf.name, s.id);
             }
         }
@@ -380,8 +389,8 @@ fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
     check_mesh("fir shoot", &fir);
     assert_eq!(fir.shoot.len(), 56);
     let mut single = p.clone();
-    single.leaf_shoot = 0;
-    single.leaf_petiole = 0.0;
+    single.leaf.leaf_shoot = 0;
+    single.foliage.leaf_petiole = 0.0;
     let needle = generate(&single).unwrap();
     // Every needle is the single needle's blade, plus the twig's and the stalk's quads.
     assert_eq!(fir.mesh.triangle_count(), 56 * needle.mesh.triangle_count() + 2 + 2);
@@ -391,7 +400,7 @@ fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
     }
     let fir_pos = positions(&fir);
     let depth = |pos: &[glam::Vec3]| pos.iter().map(|q| q.z.abs()).fold(0.0f32, f32::max);
-    assert!(depth(&fir_pos) < 0.5 * p.leaf_shoot_needle, "flat: {}", depth(&fir_pos));
+    assert!(depth(&fir_pos) < 0.5 * p.leaf.leaf_shoot_needle, "flat: {}", depth(&fir_pos));
     // Needles reach from the base to past the tip, along the whole twig.
     let ys: Vec<f32> = fir.shoot.iter().map(|n| centroid(n).y).collect();
     assert!(ys.iter().copied().fold(f32::MAX, f32::min) < 0.15 && ys.iter().copied().fold(0.0, f32::max) > 0.9);
@@ -403,7 +412,7 @@ fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
     check_mesh("pine shoot", &pine);
     assert_eq!(pine.shoot.len(), 30 * 2, "two outlines per fascicle");
     let pos = positions(&pine);
-    let reach = p.leaf_shoot_needle * p.leaf_shoot_angle.to_radians().sin();
+    let reach = p.leaf.leaf_shoot_needle * p.leaf.leaf_shoot_angle.to_radians().sin();
     let front = pos.iter().map(|q| q.z).fold(f32::MIN, f32::max);
     let back = pos.iter().map(|q| q.z).fold(f32::MAX, f32::min);
     assert!(front > 0.6 * reach && back < -0.6 * reach, "all around: z {back}..{front}, reach {reach}");
@@ -418,7 +427,7 @@ fn conifer_shoots_carry_their_needles_in_ranks_or_all_around() {
             let k = 4 * (j.min(t.height as usize - 1) * t.width as usize + i.min(t.width as usize - 1));
             [t.color[k], t.color[k + 1], t.color[k + 2], t.color[k + 3]]
         };
-        let twig = texel(0.0, -0.5 * p.leaf_petiole.max(0.02));
+        let twig = texel(0.0, -0.5 * p.foliage.leaf_petiole.max(0.02));
         assert!(twig[3] == 255 && twig[0] > twig[1], "{name}: brown twig {twig:?}");
         let inside = t.color.chunks_exact(4).filter(|c| c[3] == 255).collect::<Vec<_>>();
         let green = inside.iter().filter(|c| c[1] > c[0] && c[1] > c[2]).count();
@@ -433,8 +442,8 @@ fn a_fir_carries_the_needles_of_a_real_conifer() {
     // With one needle per leaf the fir had 131,600 needles (17 m² of needle area) and looked bare
     // from a distance; as shoots its 26,320 leaves carry 1,473,920 needles.
     let p = sylva_core::presets::find("fir").unwrap().params().unwrap();
-    let skeleton = sylva_core::skeleton::build(&p).unwrap();
-    let foliage = sylva_core::foliage::build(&skeleton, &p).unwrap();
+    let skeleton = sylva_core::skeleton::build(&p.skeleton).unwrap();
+    let foliage = sylva_core::foliage::build(&skeleton, &p.foliage, &p.leaf).unwrap();
     let per_shoot = foliage.leaf.as_ref().unwrap().shoot.len();
     assert_eq!(per_shoot, 56);
     let needles = foliage.count() * per_shoot;
@@ -449,14 +458,14 @@ fn oak_lobes_are_irregular_like_a_real_leaf() {
     // the regular layout. The outline stays continuous (no jump at a period's end).
     let lobes = |seed: u32| {
         let mut p = preset("oak");
-        p.leaf_asymmetry_seed = seed;
-        let shape = sylva_core::leaf::lobes::Pinnate::from_params(&p);
+        p.leaf.leaf_asymmetry_seed = seed;
+        let shape = sylva_core::leaf::lobes::Pinnate::from_params(&p.leaf);
         let step = (0..=20_000).map(|i| shape.lobe(f64::from(i) / 20_000.0));
         let jump = step.clone().zip(step.skip(1)).map(|(a, b)| (b - a).abs()).fold(0.0, f64::max);
         assert!(jump < 0.01, "seed {seed}: the lobe profile jumps by {jump}");
         lobes_along_the_midrib(&outline_of(&p), 0.01)
     };
-    let oak = preset("oak").leaf_asymmetry_seed;
+    let oak = preset("oak").leaf.leaf_asymmetry_seed;
     assert!(oak != 0);
     let (regular, irregular) = (lobes(0), lobes(oak));
     assert_eq!(regular.len(), irregular.len(), "the same lobes, drawn differently");

@@ -6,11 +6,16 @@ mod leaf_common;
 use leaf_common::random_leaf_params;
 use sylva_core::leaf::deform;
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
-use sylva_core::leaf::{generate, Leaf};
+use sylva_core::leaf::Leaf;
 use sylva_core::mesh::Material;
 use sylva_core::params::LeafPrimaries;
 use sylva_core::rng::Rng;
 use sylva_core::TreeParams;
+
+/// The leaf of tree parameters `p`: its leaf parameters and Petiole Length.
+fn generate(p: &TreeParams) -> Result<Leaf, sylva_core::SylvaError> {
+    sylva_core::leaf::generate(&p.leaf, p.foliage.leaf_petiole)
+}
 
 fn vertices(l: &Leaf) -> impl Iterator<Item = &[f32]> {
     l.mesh.positions.chunks_exact(3)
@@ -22,13 +27,13 @@ fn deformation_is_bounded_and_moves_only_along_z() {
     let mut cases = 0;
     while cases < 40 {
         let mut p = random_leaf_params(&mut rng);
-        p.leaf_venation = sylva_core::params::LeafVenation::Spline;
-        p.leaf_fascicle = 1; // a blade (needles are tested in leaf_species.rs)
-        p.leaf_shoot = 0; // one blade, not a conifer shoot
+        p.leaf.leaf_venation = sylva_core::params::LeafVenation::Spline;
+        p.leaf.leaf_fascicle = 1; // a blade (needles are tested in leaf_species.rs)
+        p.leaf.leaf_shoot = 0; // one blade, not a conifer shoot
         let Ok(l) = generate(&p) else { continue };
         cases += 1;
         let (w, y) = deform::extents(&l.outline.points);
-        let bound = deform::bound(&p, y, w);
+        let bound = deform::bound(&p.leaf, y, w);
         for (q, flat) in vertices(&l).zip(&l.triangulation.vertices) {
             assert_eq!((q[0], q[1]), (flat.x, flat.y), "x and y stay in the leaf plane");
             assert!(q[2].is_finite() && q[2].abs() <= bound + 1e-5, "|z| = {} over the bound {bound}", q[2]);
@@ -41,11 +46,11 @@ fn deformation_is_bounded_and_moves_only_along_z() {
     // Each term does what it says: the tip lifts with the midrib curvature, the edges with the
     // cross curvature, the veins raise ridges.
     let mut p = find("superformula_birch").unwrap().params().unwrap();
-    (p.leaf_midrib_curvature, p.leaf_cross_curvature, p.leaf_edge_curl, p.leaf_vein_displacement) =
+    (p.leaf.leaf_midrib_curvature, p.leaf.leaf_cross_curvature, p.leaf.leaf_edge_curl, p.leaf.leaf_vein_displacement) =
         (0.5, 0.0, 0.0, 0.0);
     let l = generate(&p).unwrap();
     assert!((l.mesh.positions[2] - 0.25).abs() < 1e-6, "the tip (vertex 0) rises by midrib / 2");
-    (p.leaf_midrib_curvature, p.leaf_vein_displacement) = (0.0, 0.02);
+    (p.leaf.leaf_midrib_curvature, p.leaf.leaf_vein_displacement) = (0.0, 0.02);
     let l = generate(&p).unwrap();
     let zs: Vec<f32> = vertices(&l).map(|q| q[2]).collect();
     assert!(zs.iter().all(|&z| (0.0..=0.02).contains(&z)), "vein ridges only rise, at most by the displacement");
@@ -105,7 +110,7 @@ fn textures_are_power_of_two_rgba8_with_visible_veins() {
         let l = generate(&p).unwrap();
         let t = &l.texture;
         assert!(t.width.is_power_of_two() && t.height.is_power_of_two(), "{}", preset.name);
-        assert_eq!(t.height, 1 << p.leaf_texture_level);
+        assert_eq!(t.height, 1 << p.leaf.leaf_texture_level);
         assert_eq!(t.color.len(), (t.width * t.height * 4) as usize);
         assert_eq!(t.normal.len(), t.color.len());
         // Alpha covers the blade: the inside fraction matches the outline's share of the box.
@@ -134,7 +139,7 @@ fn textures_are_power_of_two_rgba8_with_visible_veins() {
         let blade = t.color.chunks_exact(4).filter(|c| c[3] == 255).map(|c| u32::from(c[1])).min().unwrap();
         let vein = t.color.chunks_exact(4).map(|c| u32::from(c[1])).max().unwrap();
         assert!(vein > blade + 40, "{}: veins visible in the colour map", preset.name);
-        let one_midrib = !matches!(p.leaf_primary_veins, LeafPrimaries::Palmate | LeafPrimaries::Dichotomous);
+        let one_midrib = !matches!(p.leaf.leaf_primary_veins, LeafPrimaries::Palmate | LeafPrimaries::Dichotomous);
         assert!(!one_midrib || t.normal.chunks_exact(4).any(|n| n[3] >= 200), "{}: the midrib crest", preset.name);
         let tilted = t.normal.chunks_exact(4).filter(|n| n[0] != 128 || n[1] != 128).count();
         assert!(tilted > 100, "{}: the vein ridges tilt the normals ({tilted} texels)", preset.name);
@@ -144,7 +149,7 @@ fn textures_are_power_of_two_rgba8_with_visible_veins() {
 #[test]
 fn lod_card_billboards_and_impostor_views() {
     let mut p: TreeParams = find("superformula_oak").unwrap().params().unwrap();
-    p.leaf_impostor_grid = 6;
+    p.leaf.leaf_impostor_grid = 6;
     let l = generate(&p).unwrap();
     let card = &l.lod.card;
     assert_eq!((card.vertex_count(), card.triangle_count()), (4, 2));

@@ -3,7 +3,13 @@
 
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::svg::{render, SvgOptions};
-use sylva_core::leaf::{generate, Leaf};
+use sylva_core::leaf::Leaf;
+use sylva_core::TreeParams;
+
+/// The leaf of tree parameters `p`: its leaf parameters and Petiole Length.
+fn generate(p: &TreeParams) -> Result<Leaf, sylva_core::SylvaError> {
+    sylva_core::leaf::generate(&p.leaf, p.foliage.leaf_petiole)
+}
 
 /// A strict little XML check: balanced tags, quoted attributes, escaped text, finite numbers.
 /// Returns the element names in document order.

@@ -18,9 +18,9 @@ fn every_preset_triangulates_validly_with_both_methods() {
         if preset.name.starts_with("superformula_") {
             assert_eq!(tri.method, Method::Rings, "{}: the superformula presets are star-shaped", preset.name);
         }
-        let robust = cdt::build(&outline.points, p.leaf_rings);
+        let robust = cdt::build(&outline.points, p.leaf.leaf_rings);
         triangulate::validate(&outline.points, &robust).unwrap_or_else(|e| panic!("{} (robust): {e}", preset.name));
-        if p.leaf_aspect >= 0.1 {
+        if p.leaf.leaf_aspect >= 0.1 {
             assert!(robust.vertices.len() > outline.points.len(), "{}: interior points", preset.name);
         }
     }
@@ -57,10 +57,10 @@ fn random_parameters_always_triangulate_validly() {
 #[test]
 fn deep_lobes_on_a_waisted_spline_fall_back_to_the_robust_method() {
     let mut p = sylva_core::TreeParams::default();
-    p.leaf_outline = sylva_core::params::LeafOutline::Spline;
-    (p.leaf_angle1, p.leaf_l1, p.leaf_angle2, p.leaf_l2) = (90.0, 1.0, 10.0, 0.2);
-    p.leaf_margin = sylva_core::params::LeafMargin::Lobed;
-    (p.leaf_teeth, p.leaf_tooth_depth) = (9, 1.0);
+    p.leaf.leaf_outline = sylva_core::params::LeafOutline::Spline;
+    (p.leaf.leaf_angle1, p.leaf.leaf_l1, p.leaf.leaf_angle2, p.leaf.leaf_l2) = (90.0, 1.0, 10.0, 0.2);
+    p.leaf.leaf_margin = sylva_core::params::LeafMargin::Lobed;
+    (p.leaf.leaf_teeth, p.leaf.leaf_tooth_depth) = (9, 1.0);
     let (outline, tri) = stages(&p);
     assert_eq!(tri.method, Method::Cdt);
     triangulate::validate(&outline.points, &tri).unwrap();

@@ -7,9 +7,14 @@ use sylva_core::leaf::geom::dist_to_polygon;
 use sylva_core::leaf::geom::point_in_polygon;
 use sylva_core::leaf::presets::{find, LEAF_PRESETS};
 use sylva_core::leaf::veins::{MAX_AUXINS, NONE};
-use sylva_core::leaf::{generate, Leaf};
+use sylva_core::leaf::Leaf;
 use sylva_core::params::{LeafPrimaries, LeafVenation};
 use sylva_core::TreeParams;
+
+/// The leaf of tree parameters `p`: its leaf parameters and Petiole Length.
+fn generate(p: &TreeParams) -> Result<Leaf, sylva_core::SylvaError> {
+    sylva_core::leaf::generate(&p.leaf, p.foliage.leaf_petiole)
+}
 
 fn preset(name: &str) -> TreeParams {
     find(name).unwrap().params().unwrap()
@@ -36,7 +41,7 @@ fn open_venation_is_a_tree_closed_venation_has_loops() {
     // Each link closes a loop between different veins: its ends are far apart along the tree.
     for k in &g.links {
         let (a, b) = (g.nodes[k.a as usize].pos, g.nodes[k.b as usize].pos);
-        assert!((a - b).length() <= 2.0 * maple.leaf_kill + 1e-4, "a link joins veins that met at one source");
+        assert!((a - b).length() <= 2.0 * maple.leaf.leaf_kill + 1e-4, "a link joins veins that met at one source");
         assert_ne!(g.nodes[k.a as usize].parent, k.b);
         assert_ne!(g.nodes[k.b as usize].parent, k.a);
     }
@@ -49,20 +54,20 @@ fn widths_follow_the_pipe_model_and_never_grow_toward_the_tips() {
         let l = leaf(&p);
         let g = &l.veins.graph;
         if g.nodes.is_empty() {
-            assert_eq!(p.leaf_venation, LeafVenation::None, "{}", preset_def.name);
+            assert_eq!(p.leaf.leaf_venation, LeafVenation::None, "{}", preset_def.name);
             continue;
         }
         let root = g.nodes[0];
-        assert_eq!(root.width, p.leaf_vein_width, "{}: the midrib base has the full width", preset_def.name);
+        assert_eq!(root.width, p.leaf.leaf_vein_width, "{}: the midrib base has the full width", preset_def.name);
         for (i, n) in g.nodes.iter().enumerate().skip(1) {
             let parent = g.nodes[n.parent as usize];
             assert!(n.width <= parent.width, "{}: node {i} is wider than its parent", preset_def.name);
-            let want = p.leaf_vein_width * (n.tips as f32 / root.tips as f32).sqrt();
-            assert!((n.width - want).abs() <= 1e-6 * p.leaf_vein_width, "{}: node {i} width", preset_def.name);
+            let want = p.leaf.leaf_vein_width * (n.tips as f32 / root.tips as f32).sqrt();
+            assert!((n.width - want).abs() <= 1e-6 * p.leaf.leaf_vein_width, "{}: node {i} width", preset_def.name);
         }
         // The midrib is the thickest vein at every height: its first segment carries the most tips
         // (palmate and dichotomous leaves share the flow between several primaries instead).
-        if matches!(p.leaf_primary_veins, LeafPrimaries::Palmate | LeafPrimaries::Dichotomous) {
+        if matches!(p.leaf.leaf_primary_veins, LeafPrimaries::Palmate | LeafPrimaries::Dichotomous) {
             continue;
         }
         let midrib = g.midrib();
@@ -91,8 +96,8 @@ fn the_midrib_reaches_the_tip_even_with_sparse_sources() {
         for density in [0.0, 10.0, 40.0, 150.0] {
             for seed in [1, 2, 3] {
                 let mut q = p.clone();
-                q.leaf_vein_density = density;
-                q.leaf_vein_seed = seed;
+                q.leaf.leaf_vein_density = density;
+                q.leaf.leaf_vein_seed = seed;
                 let l = leaf(&q);
                 assert_midrib_reaches_tip(&l, &format!("{name} density {density} seed {seed}"));
                 // Every source is reached: sparse sources are fetched from any distance.
@@ -105,14 +110,14 @@ fn the_midrib_reaches_the_tip_even_with_sparse_sources() {
         }
     }
     let mut p = preset("superformula_oak");
-    p.leaf_venation = LeafVenation::Spline;
+    p.leaf.leaf_venation = LeafVenation::Spline;
     assert_midrib_reaches_tip(&leaf(&p), "spline veins");
 }
 
 #[test]
 fn sparse_sources_use_the_fallback_and_still_branch() {
     let mut p = preset("superformula_willow");
-    (p.leaf_vein_density, p.leaf_attraction, p.leaf_kill) = (40.0, 0.03, 0.01);
+    (p.leaf.leaf_vein_density, p.leaf.leaf_attraction, p.leaf.leaf_kill) = (40.0, 0.03, 0.01);
     let l = leaf(&p);
     let g = &l.veins.graph;
     assert!(g.fallback, "sources beyond the attraction distance are fetched by the fallback");
@@ -126,12 +131,12 @@ fn auxin_count_is_density_times_area_up_to_5000() {
     let mut p = preset("superformula_oak");
     let area = sylva_core::leaf::geom::polygon_area(&leaf(&p).outline.points);
     for density in [200.0f32, 1000.0] {
-        p.leaf_vein_density = density;
+        p.leaf.leaf_vein_density = density;
         let l = leaf(&p);
         let want = (f64::from(density) * area).round() as usize;
         assert_eq!(l.veins.auxins.len(), want + 1, "density {density} (plus the apex source)");
     }
-    p.leaf_vein_density = 20_000.0;
+    p.leaf.leaf_vein_density = 20_000.0;
     assert_eq!(leaf(&p).veins.auxins.len(), MAX_AUXINS + 1);
 }
 
@@ -159,7 +164,7 @@ fn veins_stay_inside_the_blade() {
     for name in ["superformula_oak", "superformula_maple", "superformula_birch", "superformula_willow"] {
         for venation in [LeafVenation::Open, LeafVenation::Closed, LeafVenation::Spline] {
             let mut p = preset(name);
-            p.leaf_venation = venation;
+            p.leaf.leaf_venation = venation;
             let l = leaf(&p);
             let poly = &l.outline.points;
             for (i, n) in l.veins.graph.nodes.iter().enumerate().skip(1) {
@@ -176,9 +181,9 @@ fn veins_stay_inside_the_blade() {
 #[test]
 fn spline_venation_has_the_requested_lateral_veins() {
     let mut p = preset("superformula_birch");
-    p.leaf_venation = LeafVenation::Spline;
+    p.leaf.leaf_venation = LeafVenation::Spline;
     for count in [3, 7, 12] {
-        p.leaf_vein_count = count;
+        p.leaf.leaf_vein_count = count;
         let l = leaf(&p);
         let g = &l.veins.graph;
         assert!(!g.has_cycle());

@@ -128,7 +128,7 @@ fn cloud_quads_are_finite_orthogonal_and_tinted() {
 #[test]
 fn bare_tree_has_no_cloud_and_still_falls() {
     let mut p = TreeParams::default();
-    p.leaves = 0;
+    p.foliage.leaves = 0;
     let l = generate_lods(&p).unwrap();
     assert_eq!(l.lod0.foliage.count(), 0);
     assert!(l.lod2.cloud.is_empty());

@@ -5,6 +5,7 @@ mod common;
 use common::{assert_mesh_invariants, edge_uses};
 use sylva_core::mesh::tube::sides_for;
 use sylva_core::mesh::twig;
+use sylva_core::params::{MeshParams, SkeletonParams};
 use sylva_core::{generate, presets::PRESETS, TreeParams};
 
 #[test]
@@ -18,7 +19,7 @@ fn every_preset_satisfies_the_invariants() {
 #[test]
 fn many_seeds_satisfy_the_invariants() {
     for seed in 0..12 {
-        let p = TreeParams { seed, ..TreeParams::default() };
+        let p = TreeParams { skeleton: SkeletonParams { seed, ..Default::default() }, ..TreeParams::default() };
         assert_mesh_invariants(&generate(&p).unwrap(), &format!("seed {seed}"));
     }
 }
@@ -42,10 +43,18 @@ fn uv_v_is_continuous_and_increasing_along_stems() {
 
 #[test]
 fn quality_changes_resolution_and_budget_stops_runaways() {
-    let lo = generate(&TreeParams { mesh_quality: 0.5, ..TreeParams::default() }).unwrap();
-    let hi = generate(&TreeParams { mesh_quality: 2.0, ..TreeParams::default() }).unwrap();
+    let lo =
+        generate(&TreeParams { mesh: MeshParams { mesh_quality: 0.5, ..Default::default() }, ..TreeParams::default() })
+            .unwrap();
+    let hi =
+        generate(&TreeParams { mesh: MeshParams { mesh_quality: 2.0, ..Default::default() }, ..TreeParams::default() })
+            .unwrap();
     assert!(hi.stats.vertices > lo.stats.vertices * 2);
-    let e = generate(&TreeParams { max_vertices: 10_000, ..TreeParams::default() }).unwrap_err();
+    let e = generate(&TreeParams {
+        skeleton: SkeletonParams { max_vertices: 10_000, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap_err();
     assert_eq!(e.to_json().split('"').nth(3), Some("budget"), "{e:?}");
     assert!(e.message().contains("max_vertices budget of 10000"), "{e}");
 }
@@ -55,7 +64,11 @@ fn quality_changes_resolution_and_budget_stops_runaways() {
 #[test]
 fn regression_trunk_cap_faces_down_under_strong_flare() {
     // The base fan once reused the flared ring's up-tilted side normals: wound against them.
-    let g = generate(&TreeParams { flare: 5.0, ..TreeParams::default() }).unwrap();
+    let g = generate(&TreeParams {
+        skeleton: SkeletonParams { flare: 5.0, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap();
     assert_mesh_invariants(&g, "flare 5");
 }
 
@@ -63,10 +76,11 @@ fn regression_trunk_cap_faces_down_under_strong_flare() {
 fn regression_split_clones_never_coincide_with_their_original() {
     // With the split angle clamped to 0 and strong downward attraction, clones once landed
     // exactly on top of their originals (edges shared by four triangles).
-    let mut p = TreeParams { attraction_up: -10.0, ..TreeParams::default() };
-    p.level[1].seg_splits = 0.5;
-    p.level[2].seg_splits = 0.5;
-    p.level[2].curve_v = 0.0;
+    let mut p =
+        TreeParams { skeleton: SkeletonParams { attraction_up: -10.0, ..Default::default() }, ..TreeParams::default() };
+    p.skeleton.level[1].seg_splits = 0.5;
+    p.skeleton.level[2].seg_splits = 0.5;
+    p.skeleton.level[2].curve_v = 0.0;
     let g = generate(&p).unwrap();
     assert!(edge_uses(&g.mesh).values().all(|&u| u <= 2));
     assert_mesh_invariants(&g, "clones");
@@ -75,22 +89,32 @@ fn regression_split_clones_never_coincide_with_their_original() {
 #[test]
 fn regression_stems_pruned_to_nothing_are_dropped() {
     // Pruning with a tiny envelope once left zero-length stems whose rings collapsed.
-    let g = generate(&TreeParams { prune_ratio: 1.0, prune_width: 0.02, ..TreeParams::default() }).unwrap();
+    let g = generate(&TreeParams {
+        skeleton: SkeletonParams { prune_ratio: 1.0, prune_width: 0.02, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap();
     assert_mesh_invariants(&g, "pruned");
     assert!(g.skeleton.stems.iter().all(|s| s.length > 0.0));
 }
 
 #[test]
 fn complex_trunk_is_fluted_and_still_a_valid_surface() {
-    let p = TreeParams { refine_curves: 6, lobes: 0, base_ripple: 0.0, flare: 0.0, ..TreeParams::default() };
+    let p = TreeParams {
+        skeleton: SkeletonParams { flare: 0.0, ..Default::default() },
+        mesh: MeshParams { refine_curves: 6, lobes: 0, base_ripple: 0.0, ..Default::default() },
+        ..TreeParams::default()
+    };
     let g = generate(&p).unwrap();
     assert_mesh_invariants(&g, "refined trunk");
     // Ring 0 of the trunk (the first stem's first vertices) lies on the union of the main circle
     // and the refinement circles: never inside the main circle, never beyond the largest reach.
     let trunk = &g.skeleton.stems[0];
-    let sides = sides_for(trunk.radius, p.mesh_quality, 0) as usize;
+    let sides = sides_for(trunk.radius, p.mesh.mesh_quality, 0) as usize;
     let r0 = trunk.radius_at(0.0);
-    let reach = r0 * (p.refine_offset * (1.0 + p.refine_variation) + p.refine_radius * (1.0 + p.refine_variation));
+    let reach = r0
+        * (p.mesh.refine_offset * (1.0 + p.mesh.refine_variation)
+            + p.mesh.refine_radius * (1.0 + p.mesh.refine_variation));
     let dist: Vec<f32> = (0..sides)
         .map(|j| {
             let v = &g.mesh.positions[j * 3..j * 3 + 3];
@@ -101,15 +125,27 @@ fn complex_trunk_is_fluted_and_still_a_valid_surface() {
     assert!(lo >= r0 * 0.999 && hi <= reach * 1.001, "ring 0 radii {lo}..{hi}, main {r0}, reach {reach}");
     assert!(hi / lo > 1.15, "the outline is not fluted: {lo}..{hi}");
     // The base ripple alone makes a 7-fold ribbed base.
-    let rippled = generate(&TreeParams { base_ripple: 0.2, lobes: 0, ..TreeParams::default() }).unwrap();
+    let rippled = generate(&TreeParams {
+        mesh: MeshParams { base_ripple: 0.2, lobes: 0, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap();
     assert_mesh_invariants(&rippled, "base ripple");
-    assert_ne!(rippled.hash, generate(&TreeParams { lobes: 0, ..TreeParams::default() }).unwrap().hash);
+    assert_ne!(
+        rippled.hash,
+        generate(&TreeParams { mesh: MeshParams { lobes: 0, ..Default::default() }, ..TreeParams::default() })
+            .unwrap()
+            .hash
+    );
 }
 
 #[test]
 fn surface_roots_spread_from_the_trunk_base_into_the_ground() {
     let none = generate(&TreeParams::default()).unwrap();
-    let p = TreeParams { root_count: 6, root_depth: 1.0, ..TreeParams::default() };
+    let p = TreeParams {
+        skeleton: SkeletonParams { root_count: 6, root_depth: 1.0, ..Default::default() },
+        ..TreeParams::default()
+    };
     let g = generate(&p).unwrap();
     assert_mesh_invariants(&g, "roots");
     let roots: Vec<_> = g.skeleton.stems.iter().filter(|s| s.parent == Some(0) && s.down_angle == 90.0).collect();
@@ -130,7 +166,11 @@ fn surface_roots_spread_from_the_trunk_base_into_the_ground() {
 #[test]
 fn the_guide_curve_moves_trunk_points_sideways_within_the_limit() {
     let straight = generate(&TreeParams::default()).unwrap();
-    let g = generate(&TreeParams { guide_xy: 0.3, ..TreeParams::default() }).unwrap();
+    let g = generate(&TreeParams {
+        skeleton: SkeletonParams { guide_xy: 0.3, ..Default::default() },
+        ..TreeParams::default()
+    })
+    .unwrap();
     assert_mesh_invariants(&g, "guide curve");
     let (a, b) = (&straight.skeleton.stems[0].points, &g.skeleton.stems[0].points);
     assert_eq!(b[0], a[0], "the guide curve starts at the origin");
@@ -148,7 +188,10 @@ fn wind_attributes_follow_the_stems() {
     for name in ["default", "ca_black_oak", "grown_broadleaf"] {
         // Without holes: a cavity's vertices copy their rim's records (tests/holes.rs checks
         // that), so `v` and distance need not agree inside one.
-        let p = TreeParams { hole_count: 0, ..sylva_core::presets::find(name).unwrap().params().unwrap() };
+        let p = TreeParams {
+            mesh: MeshParams { hole_count: 0, ..sylva_core::presets::find(name).unwrap().params().unwrap().mesh },
+            ..sylva_core::presets::find(name).unwrap().params().unwrap()
+        };
         let g = generate(&p).unwrap();
         let (m, stems) = (&g.mesh, &g.skeleton.stems);
         assert_eq!(m.wind.len(), WIND_STRIDE * m.vertex_count(), "{name}: wind length");
@@ -209,27 +252,30 @@ fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
     let mut sides_seen = Vec::new();
     for i in 0..4 {
         // Unwelded, every simple deepest-level stem is a twig (welded ones are swept as tubes).
-        let p = TreeParams { twig_detail: TwigDetail::from_index(i), weld: false, ..TreeParams::default() };
+        let p = TreeParams {
+            mesh: MeshParams { twig_detail: TwigDetail::from_index(i), weld: false, ..Default::default() },
+            ..TreeParams::default()
+        };
         let g = generate(&p).unwrap();
         assert_mesh_invariants(&g, &format!("twig detail {i}"));
-        let twigs = twig::mask(&g.skeleton, &p);
+        let twigs = twig::mask(&g.skeleton);
         let count = twigs.iter().filter(|&&t| t).count();
         assert!(count > 20, "the default tree has Bezier twigs: {count}");
         // Twigs are closed at their tips and capped at their bases: no open edge anywhere.
         let open = edge_uses(&g.mesh).values().filter(|&&u| u == 1).count();
         assert_eq!(open, 0, "detail {i}: open edges");
         let first = g.skeleton.stems.iter().zip(&twigs).find(|(_, &t)| t).unwrap().0;
-        sides_seen.push(twig::sides(first.radius, p.mesh_quality, p.twig_detail));
+        sides_seen.push(twig::sides(first.radius, p.mesh.mesh_quality, p.mesh.twig_detail));
         if i == 2 {
-            assert_eq!(sides_seen[2], sides_for(first.radius, p.mesh_quality, 0), "step 4 = the tube's sides");
+            assert_eq!(sides_seen[2], sides_for(first.radius, p.mesh.mesh_quality, 0), "step 4 = the tube's sides");
         }
     }
     assert!(sides_seen.windows(2).all(|w| w[0] > w[1]), "finer steps, more sides: {sides_seen:?}");
     // One level deeper, the deepest stems are straight (one segment): all of them are twigs.
-    let p = TreeParams { levels: 4, ..TreeParams::default() };
+    let p = TreeParams { skeleton: SkeletonParams { levels: 4, ..Default::default() }, ..TreeParams::default() };
     let g = generate(&p).unwrap();
     assert_mesh_invariants(&g, "levels 4");
-    let twigs = twig::mask(&g.skeleton, &p);
+    let twigs = twig::mask(&g.skeleton);
     let deepest = g.skeleton.stems.iter().filter(|s| s.level == 3).count();
     assert!(deepest > 1000);
     assert_eq!(twigs.iter().filter(|&&t| t).count(), deepest);
@@ -238,9 +284,9 @@ fn bezier_twigs_are_closed_and_their_detail_sets_the_sides() {
 #[test]
 fn twig_rings_follow_the_bezier_span_and_its_radii() {
     use sylva_core::mesh::twig::{middle_radius, Span};
-    let p = TreeParams { weld: false, ..TreeParams::default() };
+    let p = TreeParams { mesh: MeshParams { weld: false, ..Default::default() }, ..TreeParams::default() };
     let g = generate(&p).unwrap();
-    let twigs = twig::mask(&g.skeleton, &p);
+    let twigs = twig::mask(&g.skeleton);
     let (i, stem) = g.skeleton.stems.iter().enumerate().find(|(i, _)| twigs[*i]).unwrap();
     let span = Span::fit(stem);
     let l0 = (span.p[1] - span.p[0]).length();
@@ -251,8 +297,8 @@ fn twig_rings_follow_the_bezier_span_and_its_radii() {
     assert_eq!(span.point(0.0), stem.base());
     assert!((span.point(1.0) - stem.tip()).length() < 1e-5);
     // The twig's first ring is the control circle R0 around the base, across the first leg.
-    let (mesh, blocks) = sylva_core::mesh::tube::build_blocks(&g.skeleton, &p).unwrap();
-    let sides = twig::sides(stem.radius, p.mesh_quality, p.twig_detail) as usize;
+    let (mesh, blocks) = sylva_core::mesh::tube::build_blocks(&g.skeleton, &p.mesh).unwrap();
+    let sides = twig::sides(stem.radius, p.mesh.mesh_quality, p.mesh.twig_detail) as usize;
     let d0 = (span.p[1] - span.p[0]).normalize();
     for v in blocks[i].start as usize..blocks[i].start as usize + sides + 1 {
         let x = glam::Vec3::from_slice(&mesh.positions[v * 3..v * 3 + 3]);

@@ -6,6 +6,7 @@ mod common;
 use common::{assert_mesh_invariants, edge_uses};
 use std::collections::HashMap;
 use sylva_core::mesh::WIND_STRIDE;
+use sylva_core::params::{MeshParams, SkeletonParams};
 use sylva_core::{generate, presets::PRESETS, Generated, TreeParams};
 
 /// Welded vertex id per vertex: the first vertex with a bit-identical position.
@@ -118,7 +119,7 @@ fn split_clones_weld_into_a_y() {
     };
     let winds = sylva_core::mesh::tube::stem_winds(
         &g.skeleton,
-        sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap().seed,
+        sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap().skeleton.seed,
     );
     let stems = &g.skeleton.stems;
     let joined = (0..stems.len())
@@ -135,7 +136,7 @@ fn split_clones_weld_into_a_y() {
 fn welding_off_gives_closed_separate_tubes() {
     for name in ["default", "weeping_willow", "grown_broadleaf"] {
         let mut p = sylva_core::presets::find(name).unwrap().params().unwrap();
-        p.weld = false;
+        p.mesh.weld = false;
         let g = generate(&p).unwrap();
         assert_mesh_invariants(&g, name);
         assert_closed(&g, name);
@@ -169,7 +170,8 @@ fn welded_children_share_the_trunks_surface() {
         .count();
     assert!(mixed > 50 * 6, "only {mixed} bridge triangles between the trunk and its branches");
     // Without welding the trunk's piece holds only trunk triangles.
-    let off = generate(&TreeParams { weld: false, ..TreeParams::default() }).unwrap();
+    let off = generate(&TreeParams { mesh: MeshParams { weld: false, ..Default::default() }, ..TreeParams::default() })
+        .unwrap();
     let piece = pieces(&off, &weld_ids(&off));
     let levels: std::collections::BTreeSet<u32> = off
         .mesh
@@ -207,11 +209,17 @@ fn the_collar_flares_from_the_parent_into_the_child() {
 #[test]
 fn collar_size_changes_the_mesh_and_stays_closed() {
     for collar in [0.0, 2.5] {
-        let g = generate(&TreeParams { weld_collar: collar, ..TreeParams::default() }).unwrap();
+        let g = generate(&TreeParams {
+            mesh: MeshParams { weld_collar: collar, ..Default::default() },
+            ..TreeParams::default()
+        })
+        .unwrap();
         assert_mesh_invariants(&g, "collar");
         assert_closed(&g, "collar");
     }
-    let a = generate(&TreeParams { weld_collar: 0.0, ..TreeParams::default() }).unwrap();
+    let a =
+        generate(&TreeParams { mesh: MeshParams { weld_collar: 0.0, ..Default::default() }, ..TreeParams::default() })
+            .unwrap();
     let b = generate(&TreeParams::default()).unwrap();
     assert_ne!(a.hash, b.hash);
 }
@@ -220,7 +228,12 @@ fn collar_size_changes_the_mesh_and_stays_closed() {
 fn many_seeds_and_qualities_stay_closed() {
     for seed in 0..6 {
         for q in [0.5, 1.0, 2.0] {
-            let g = generate(&TreeParams { seed, mesh_quality: q, ..TreeParams::default() }).unwrap();
+            let g = generate(&TreeParams {
+                skeleton: SkeletonParams { seed, ..Default::default() },
+                mesh: MeshParams { mesh_quality: q, ..Default::default() },
+                ..TreeParams::default()
+            })
+            .unwrap();
             assert_mesh_invariants(&g, &format!("seed {seed} q {q}"));
             assert_closed(&g, &format!("seed {seed} q {q}"));
         }
@@ -233,10 +246,17 @@ fn the_budget_counts_junctions_conservatively_but_not_wastefully() {
         let p = sylva_core::presets::find(name).unwrap().params().unwrap();
         let n = generate(&p).unwrap().stats.vertices as u32;
         // The check runs before allocating, on a bound that covers every junction falling back...
-        let e = generate(&TreeParams { max_vertices: n - 1, ..p.clone() }).unwrap_err();
+        let e = generate(&TreeParams {
+            skeleton: SkeletonParams { max_vertices: n - 1, ..p.skeleton.clone() },
+            ..p.clone()
+        })
+        .unwrap_err();
         assert!(e.message().contains("max_vertices"), "{name}: {e}");
         // ...and stays within 10% of what the tree really needs.
-        assert!(generate(&TreeParams { max_vertices: n + n / 10, ..p }).is_ok(), "{name}: bound too loose");
+        assert!(
+            generate(&TreeParams { skeleton: SkeletonParams { max_vertices: n + n / 10, ..p.skeleton }, ..p }).is_ok(),
+            "{name}: bound too loose"
+        );
     }
 }
 
@@ -247,7 +267,9 @@ fn the_budget_counts_junctions_conservatively_but_not_wastefully() {
 #[test]
 fn welding_adds_few_vertices_and_most_junctions_weld() {
     let welded = generate(&TreeParams::default()).unwrap();
-    let plain = generate(&TreeParams { weld: false, ..TreeParams::default() }).unwrap();
+    let plain =
+        generate(&TreeParams { mesh: MeshParams { weld: false, ..Default::default() }, ..TreeParams::default() })
+            .unwrap();
     let (a, b) = (welded.stats.vertices as f64, plain.stats.vertices as f64);
     assert!(a < 1.75 * b, "welded {a} vs plain {b} vertices");
     assert!(welded.stats.welds.welds > 4 * welded.stats.welds.weld_fallbacks, "{:?}", welded.stats.welds);
@@ -258,7 +280,7 @@ fn shallow_splits_fork_into_a_smooth_y() {
     // CA Black Oak's trunk splits at 3° to 14°: too shallow for a footprint on the original's
     // side, so each such clone forks its original instead (one tube splitting in two).
     let mut p = sylva_core::presets::find("ca_black_oak").unwrap().params().unwrap();
-    p.levels = 1;
+    p.skeleton.levels = 1;
     let g = generate(&p).unwrap();
     assert_mesh_invariants(&g, "ca_black_oak, trunk only");
     assert_closed(&g, "ca_black_oak, trunk only");
@@ -293,7 +315,7 @@ fn shallow_splits_fork_into_a_smooth_y() {
     let clones = pieces_where(&|k| k.0 == split_y && k != trunk_key);
     assert!(clones.is_superset(&trunk) && clones.len() == 2, "one clone welded into the trunk, one apart: {clones:?}");
     // Off: the clones sit in their originals as separate closed tubes.
-    p.weld = false;
+    p.mesh.weld = false;
     let g = generate(&p).unwrap();
     assert_eq!(g.stats.welds.forks, 0);
     assert_eq!(count_components(&g), stems.len());

@@ -258,8 +258,8 @@ pub fn generate_with_progress(params_json: &str, progress: &ProgressFn) -> Resul
 #[wasm_bindgen]
 pub fn leaf_json(params_json: &str) -> Result<String, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
-    let leaf =
-        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf = sylva_core::leaf::generate_with_clock(&params.leaf, params.foliage.leaf_petiole, &PerfClock)
+        .map_err(|e| JsValue::from_str(&e.to_json()))?;
     Ok(sylva_core::leaf::json::to_json(&leaf))
 }
 
@@ -268,8 +268,8 @@ pub fn leaf_json(params_json: &str) -> Result<String, JsValue> {
 #[wasm_bindgen]
 pub fn leaf_svg(params_json: &str, step: i32) -> Result<String, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
-    let leaf =
-        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf = sylva_core::leaf::generate_with_clock(&params.leaf, params.foliage.leaf_petiole, &PerfClock)
+        .map_err(|e| JsValue::from_str(&e.to_json()))?;
     let opts = sylva_core::leaf::svg::SvgOptions {
         triangulation: true,
         step: u32::try_from(step).ok(),
@@ -284,8 +284,8 @@ pub fn leaf_svg(params_json: &str, step: i32) -> Result<String, JsValue> {
 #[wasm_bindgen]
 pub fn leaf_inspect(params_json: &str, step: i32, triangulation: bool) -> Result<String, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
-    let leaf =
-        sylva_core::leaf::generate_with_clock(&params, &PerfClock).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let leaf = sylva_core::leaf::generate_with_clock(&params.leaf, params.foliage.leaf_petiole, &PerfClock)
+        .map_err(|e| JsValue::from_str(&e.to_json()))?;
     let step = u32::try_from(step).ok();
     let opts =
         sylva_core::leaf::svg::SvgOptions { triangulation, step, ..sylva_core::leaf::svg::SvgOptions::default() };
@@ -369,7 +369,7 @@ impl GeneratedLods {
 pub fn generate_lods(params_json: &str) -> Result<GeneratedLods, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
     sylva_core::generate_with_clock(&params, &PerfClock)
-        .and_then(|g| sylva_core::lod::lods_of(g, &params))
+        .and_then(|g| sylva_core::lod::lods_of(g, &params.mesh))
         .map(GeneratedLods)
         .map_err(|e| JsValue::from_str(&e.to_json()))
 }

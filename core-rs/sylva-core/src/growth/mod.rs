@@ -11,7 +11,7 @@ pub mod sca;
 pub mod volume;
 
 use crate::error::SylvaError;
-use crate::params::{CrownVolumeKind, GrowthMode, TreeParams, VolumeGroup};
+use crate::params::{CrownVolumeKind, GrowthMode, SkeletonParams, VolumeGroup};
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
@@ -30,7 +30,7 @@ pub fn node_budget_error(max: usize) -> SylvaError {
 }
 
 /// The environment described by the parameters: crown (one copy per start point), the wall.
-pub fn environment(p: &TreeParams) -> Environment {
+pub fn environment(p: &SkeletonParams) -> Environment {
     let crown = match p.crown_volume {
         CrownVolumeKind::Ellipsoid | CrownVolumeKind::Primitives => {
             CrownVolume::Ellipsoid { base: p.crown_base, height: p.crown_height, radius: p.crown_radius }
@@ -71,13 +71,13 @@ pub fn environment(p: &TreeParams) -> Environment {
 }
 
 /// Start points: `Start Points` trunks in a row along x (a hedgerow), centred on the origin.
-pub fn starts(p: &TreeParams) -> Vec<Vec3> {
+pub fn starts(p: &SkeletonParams) -> Vec<Vec3> {
     let n = p.start_points.max(1);
     (0..n).map(|i| Vec3::new((i as f32 - 0.5 * (n - 1) as f32) * p.start_spacing, 0.0, 0.0)).collect()
 }
 
 /// The growth settings described by the parameters.
-pub fn config(p: &TreeParams) -> GrowthConfig {
+pub fn config(p: &SkeletonParams) -> GrowthConfig {
     GrowthConfig {
         markers: p.markers as usize,
         surface_bias: p.marker_surface_bias,
@@ -97,13 +97,13 @@ pub fn config(p: &TreeParams) -> GrowthConfig {
 }
 
 /// Grow the tree of `p` (its nodes and markers, before thickness and meshing).
-pub fn grow(p: &TreeParams) -> Result<Growth, SylvaError> {
+pub fn grow(p: &SkeletonParams) -> Result<Growth, SylvaError> {
     grow_with_progress(p, None)
 }
 
 /// [`grow`] reporting progress (the fraction of the iteration cap run so far, 0..1) to
 /// `progress` every [`sca::PROGRESS_EVERY`] iterations; the result is the same.
-pub fn grow_with_progress(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<Growth, SylvaError> {
+pub fn grow_with_progress(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<Growth, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "growth");
     sca::grow_with_progress(&environment(p), &config(p), &mut rng, progress)
 }
@@ -124,7 +124,7 @@ pub fn pipe_radii(nodes: &[Node], tip: f32, delta: f32) -> Vec<f32> {
 
 /// Build the skeleton of a grown tree as seen at `age` (fraction 0..1 of its growth: nodes born
 /// later are left out, and thickness is recomputed for the younger tree).
-pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
+pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
     let last = (p.growth_age * growth.iterations as f32).round() as u32;
     // Keep nodes born by `last` (parents are always older than their children).
     let mut remap = vec![ROOT; growth.nodes.len()];
@@ -230,7 +230,15 @@ pub fn skeleton(p: &TreeParams, growth: &Growth) -> Skeleton {
         });
     }
     let crown_base = p.crown_base;
-    Skeleton { mode: GrowthMode::SpaceColonization, stems, scale: p.crown_base + p.crown_height, crown_base }
+    Skeleton {
+        mode: GrowthMode::SpaceColonization,
+        stems,
+        scale: p.crown_base + p.crown_height,
+        crown_base,
+        seed: p.seed,
+        levels: p.levels,
+        max_vertices: p.max_vertices,
+    }
 }
 
 #[cfg(test)]

@@ -13,11 +13,11 @@
 
 use crate::leaf::field::VeinField;
 use crate::leaf::geom::dist_to_segment;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use glam::{Vec2, Vec3};
 
 /// The largest `|z|` the deformation can produce for these parameters and blade extents.
-pub fn bound(p: &TreeParams, max_abs_y: f32, half_width: f32) -> f32 {
+pub fn bound(p: &LeafParams, max_abs_y: f32, half_width: f32) -> f32 {
     0.5 * p.leaf_midrib_curvature.abs() * max_abs_y * max_abs_y
         + 0.5 * (p.leaf_cross_curvature.abs() + p.leaf_edge_curl.abs()) * half_width
         + p.leaf_vein_displacement
@@ -60,7 +60,7 @@ pub fn edge_weights(vertices: &[Vec2], outline: &[Vec2], rings: Option<u32>) -> 
 }
 
 /// Stage 6: 3D positions of the blade's vertices (`edge` from [`edge_weights`]).
-pub fn displace(p: &TreeParams, vertices: &[Vec2], outline: &[Vec2], edge: &[f32], field: &VeinField) -> Vec<Vec3> {
+pub fn displace(p: &LeafParams, vertices: &[Vec2], outline: &[Vec2], edge: &[f32], field: &VeinField) -> Vec<Vec3> {
     let (w, _) = extents(outline);
     vertices
         .iter()

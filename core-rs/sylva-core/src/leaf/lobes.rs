@@ -37,7 +37,7 @@
 //!   sinuses stay entire as on a Norway maple.
 
 use crate::leaf::geom::DVec2;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 
 const PI: f64 = std::f64::consts::PI;
 /// Where the lowest pinnate lobe starts along the midrib.
@@ -99,7 +99,7 @@ fn pw(x: f64, e: f64) -> f64 {
 
 impl Pinnate {
     /// The blade of the `leaf_*` parameters.
-    pub fn from_params(p: &TreeParams) -> Pinnate {
+    pub fn from_params(p: &LeafParams) -> Pinnate {
         let (bp, bq) = (f64::from(p.leaf_base_shape), f64::from(p.leaf_tip_shape));
         let ys = bp / (bp + bq);
         Pinnate {
@@ -246,7 +246,7 @@ pub struct Palmate {
 
 impl Palmate {
     /// The blade of the `leaf_*` parameters.
-    pub fn from_params(p: &TreeParams) -> Palmate {
+    pub fn from_params(p: &LeafParams) -> Palmate {
         let n = p.leaf_lobes.max(1);
         let spread = f64::from(p.leaf_lobe_spread) * PI / 180.0;
         let (angles, h): (Vec<f64>, f64) = if n == 1 {
@@ -367,7 +367,7 @@ mod tests {
 
     #[test]
     fn pinnate_envelope_is_widest_at_base_over_base_plus_tip() {
-        let mut p = TreeParams::default();
+        let mut p = LeafParams::default();
         (p.leaf_base_shape, p.leaf_tip_shape, p.leaf_aspect, p.leaf_lobes) = (1.5, 0.5, 0.6, 0);
         let b = Pinnate::from_params(&p);
         let ys = 0.75;
@@ -379,7 +379,7 @@ mod tests {
 
     #[test]
     fn palmate_odd_lobes_put_one_at_the_tip_and_even_a_notch() {
-        let mut p = TreeParams::default();
+        let mut p = LeafParams::default();
         (p.leaf_lobes, p.leaf_lobe_depth, p.leaf_lobe_spread) = (5, 0.5, 120.0);
         let five = Palmate::from_params(&p);
         assert_eq!(five.lobe_tips().len(), 3);

@@ -36,7 +36,7 @@ use crate::error::SylvaError;
 use crate::leaf::geom;
 use crate::leaf::geom::DVec2;
 use crate::leaf::outline::{self, BaseOutline, Shape};
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use crate::params::{LeafMargin, LeafOutline};
 use crate::rng::Rng;
 use glam::Vec2;
@@ -109,7 +109,7 @@ fn arc_tables(shape: &Shape) -> (Vec<f64>, Vec<f64>) {
 impl MarginProfile {
     /// The profile chosen by the parameters (`leaf_margin`, `leaf_teeth`, `leaf_tooth_depth`,
     /// `leaf_tooth_sharpness`, `leaf_asymmetry_seed`).
-    pub fn from_params(p: &TreeParams, shape: &Shape) -> MarginProfile {
+    pub fn from_params(p: &LeafParams, shape: &Shape) -> MarginProfile {
         let kind = if p.leaf_teeth == 0 { LeafMargin::Entire } else { p.leaf_margin };
         let teeth = f64::from(p.leaf_teeth);
         let peak = (0.5 * (1.0 - f64::from(p.leaf_tooth_sharpness))).clamp(0.03, 0.5);
@@ -255,7 +255,7 @@ impl Outline {
 /// outline adaptively. Refuses parameters whose blade has almost no area (extreme superformula
 /// exponents draw needle-thin spikes around an empty centre): less than 0.1% of its bounding
 /// box, or fewer than six outline points.
-pub fn build(p: &TreeParams, base: &BaseOutline) -> Result<Outline, SylvaError> {
+pub fn build(p: &LeafParams, base: &BaseOutline) -> Result<Outline, SylvaError> {
     let shape = &base.shape;
     let profile = MarginProfile::from_params(p, shape);
     let radial = shape.is_radial();
@@ -319,7 +319,7 @@ pub fn build(p: &TreeParams, base: &BaseOutline) -> Result<Outline, SylvaError> 
 
 /// The frame: base to the origin, tip to `(0, 1)`, and for the superformula the width scaled to
 /// `aspect ×` the height (measured on a coarse pre-scan of both halves).
-fn frame(p: &TreeParams, shape: &Shape, profile: &MarginProfile) -> Frame {
+fn frame(p: &LeafParams, shape: &Shape, profile: &MarginProfile) -> Frame {
     if !shape.is_radial() {
         return Frame { y0: 0.0, ylen: 1.0, sx: 1.0 };
     }

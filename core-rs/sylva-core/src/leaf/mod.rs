@@ -53,7 +53,7 @@ pub mod veins;
 use crate::clock::{self, Clock};
 use crate::error::SylvaError;
 use crate::mesh::{Material, MeshBuilder, TreeMesh};
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 pub use margin::Outline;
 pub use triangulate::Triangulation;
 pub use veins::{Auxin, VeinGraph, Veins};
@@ -106,9 +106,11 @@ impl Leaf {
     }
 }
 
-/// Checks the parameters, including the leaf rules the registry ranges cannot express.
-pub fn validate(p: &TreeParams) -> Result<(), SylvaError> {
+/// Checks the leaf parameters and the petiole's length (Petiole Length, `leaf_petiole`),
+/// including the leaf rules the registry ranges cannot express.
+pub fn validate(p: &LeafParams, petiole: f32) -> Result<(), SylvaError> {
     p.validate()?;
+    crate::params::spec("leaf_petiole").expect("a registry parameter").check(f64::from(petiole))?;
     if p.leaf_kill >= p.leaf_attraction {
         return Err(SylvaError::InvalidParam {
             param: "leaf_attraction".into(),
@@ -121,14 +123,15 @@ pub fn validate(p: &TreeParams) -> Result<(), SylvaError> {
     Ok(())
 }
 
-/// Generates the leaf described by the `leaf_*` parameters.
-pub fn generate(p: &TreeParams) -> Result<Leaf, SylvaError> {
-    generate_with_clock(p, clock::default_clock().as_ref())
+/// Generates the leaf described by the leaf parameters, its petiole `petiole` leaf lengths long
+/// (Petiole Length, a foliage parameter: the placements hang the blade that far from its stem).
+pub fn generate(p: &LeafParams, petiole: f32) -> Result<Leaf, SylvaError> {
+    generate_with_clock(p, petiole, clock::default_clock().as_ref())
 }
 
 /// [`generate`] with an explicit clock for the stage timings.
-pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, SylvaError> {
-    validate(p)?;
+pub fn generate_with_clock(p: &LeafParams, petiole: f32, clock: &dyn Clock) -> Result<Leaf, SylvaError> {
+    validate(p, petiole)?;
     let mut stage_ms = Vec::with_capacity(9);
     let t_start = clock.now_ms();
     let mut t = t_start;
@@ -164,7 +167,7 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
     let shoot = (p.leaf_shoot > 0).then(|| {
         let placed = shoot::placements(p);
         let outlines = shoot::projected(&placed, &outline.points, p.leaf_fascicle);
-        let frame = shoot::frame(&outlines, p.leaf_petiole);
+        let frame = shoot::frame(&outlines, petiole);
         (placed, outlines, frame)
     });
     let (surface, uv_frame) = match &shoot {
@@ -179,13 +182,13 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
     for tri in &surface.triangles {
         b.triangle(tri[0], tri[1], tri[2]);
     }
-    needles::petiole(p, &uv_frame, &mut b);
+    needles::petiole(p, petiole, &uv_frame, &mut b);
     let mesh = b.finish();
     let positions = surface.positions;
     lap("deformation", &mut stage_ms);
     let texture = match &shoot {
         Some((placed, outlines, frame)) => {
-            shoot::bake(placed, outlines, p.leaf_fascicle, p.leaf_petiole, frame, p.leaf_texture_level)
+            shoot::bake(placed, outlines, p.leaf_fascicle, petiole, frame, p.leaf_texture_level)
         }
         None => texture::bake(&field, &outline.points, p.leaf_vein_displacement),
     };
@@ -200,7 +203,7 @@ pub fn generate_with_clock(p: &TreeParams, clock: &dyn Clock) -> Result<Leaf, Sy
         mesh,
         texture,
         lod,
-        petiole: p.leaf_petiole,
+        petiole,
         shoot: shoot.map(|(_, outlines, _)| outlines).unwrap_or_default(),
         stats: LeafStats::default(),
         hash: 0,

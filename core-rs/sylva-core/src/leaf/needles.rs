@@ -17,7 +17,7 @@
 
 use crate::leaf::uv::UvFrame;
 use crate::mesh::MeshBuilder;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use glam::{Vec2, Vec3};
 
 /// Angle (radians) between a needle and the fascicle's axis at the sheath.
@@ -57,7 +57,7 @@ fn section(i: usize, n: usize) -> Vec<Vec2> {
 }
 
 /// The fascicle of `leaf_fascicle` needles (see the module docs).
-pub fn fascicle(p: &TreeParams, frame: &UvFrame) -> Surface {
+pub fn fascicle(p: &LeafParams, frame: &UvFrame) -> Surface {
     let n = p.leaf_fascicle.max(1) as usize;
     let r0 = 0.5 * p.leaf_aspect;
     let uv = frame.uv(Vec2::new(0.0, 0.5));
@@ -108,9 +108,8 @@ pub fn fascicle(p: &TreeParams, frame: &UvFrame) -> Surface {
     s
 }
 
-/// Appends the petiole quad (nothing for Petiole Length 0).
-pub fn petiole(p: &TreeParams, frame: &UvFrame, b: &mut MeshBuilder) {
-    let len = p.leaf_petiole;
+/// Appends the petiole quad of length `len` (nothing for Petiole Length 0).
+pub fn petiole(p: &LeafParams, len: f32, frame: &UvFrame, b: &mut MeshBuilder) {
     if len <= 0.0 {
         return;
     }

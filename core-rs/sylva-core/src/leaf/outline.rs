@@ -21,7 +21,7 @@
 use crate::leaf::geom::DVec2;
 use crate::leaf::lobes;
 use crate::params::LeafOutline;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 
 const PI: f64 = std::f64::consts::PI;
 
@@ -64,7 +64,7 @@ const ARC_SAMPLES: usize = 256;
 
 impl Shape {
     /// The curve chosen by `leaf_outline` with its parameters.
-    pub fn from_params(p: &TreeParams) -> Shape {
+    pub fn from_params(p: &LeafParams) -> Shape {
         match p.leaf_outline {
             LeafOutline::Superformula => {
                 let mut s = Shape::Superformula {
@@ -275,7 +275,7 @@ pub struct BaseOutline {
 
 /// Stage 1: prepare the curve chosen by the parameters and sample one half adaptively.
 /// `detail` scales the sampling density (`leaf_detail`).
-pub fn build(p: &TreeParams) -> BaseOutline {
+pub fn build(p: &LeafParams) -> BaseOutline {
     let shape = Shape::from_params(p);
     let detail = f64::from(p.leaf_detail);
     let eval = |t: f64| shape.raw(t, 0.0, 1.0);
@@ -295,7 +295,7 @@ mod tests {
 
     #[test]
     fn circle_superformula_has_unit_radius_and_tip_up() {
-        let mut p = TreeParams::default();
+        let mut p = LeafParams::default();
         p.leaf_outline = LeafOutline::Superformula;
         (p.leaf_m, p.leaf_a, p.leaf_b, p.leaf_n1, p.leaf_n2, p.leaf_n3) = (4.0, 1.0, 1.0, 2.0, 2.0, 2.0);
         let s = Shape::from_params(&p);
@@ -308,7 +308,7 @@ mod tests {
 
     #[test]
     fn spline_half_is_monotone_along_the_midrib() {
-        let mut p = TreeParams::default();
+        let mut p = LeafParams::default();
         p.leaf_outline = LeafOutline::Spline;
         (p.leaf_angle1, p.leaf_l1, p.leaf_angle2, p.leaf_l2) = (10.0, 1.0, 10.0, 1.0);
         let s = Shape::from_params(&p);

@@ -28,7 +28,7 @@ use crate::leaf::raster::fill_rows;
 use crate::leaf::texture::{self, byte, LeafTexture};
 use crate::leaf::uv::UvFrame;
 use crate::math;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use crate::rng::Rng;
 use glam::{Vec2, Vec3};
 
@@ -79,7 +79,7 @@ impl Placement {
 }
 
 /// The needles of the shoot (see the module docs).
-pub fn placements(p: &TreeParams) -> Vec<Placement> {
+pub fn placements(p: &LeafParams) -> Vec<Placement> {
     let n = p.leaf_shoot as usize;
     let mut rng = Rng::new(0, "shoot");
     let theta = math::rad(p.leaf_shoot_angle);

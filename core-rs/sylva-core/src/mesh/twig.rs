@@ -29,7 +29,7 @@ use super::tube::sides_for;
 use super::tube::{Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
-use crate::params::{GrowthMode, TreeParams, TwigDetail};
+use crate::params::{GrowthMode, MeshParams, TwigDetail};
 use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
 
@@ -96,12 +96,12 @@ fn bernstein(u: f32) -> [f32; 3] {
 }
 
 /// Which stems of `skeleton` are meshed as Bezier twigs (the rule in the module docs).
-pub fn mask(skeleton: &Skeleton, p: &TreeParams) -> Vec<bool> {
+pub fn mask(skeleton: &Skeleton) -> Vec<bool> {
     let n = skeleton.stems.len();
-    if p.levels < 2 || skeleton.mode != GrowthMode::Parametric {
+    if skeleton.levels < 2 || skeleton.mode != GrowthMode::Parametric {
         return vec![false; n];
     }
-    let deepest = (p.levels - 1) as u8;
+    let deepest = (skeleton.levels - 1) as u8;
     let mut parent_of_something = vec![false; n];
     for s in &skeleton.stems {
         if let Some(i) = s.parent {
@@ -138,7 +138,7 @@ fn faithful(stem: &Stem) -> bool {
 }
 
 /// Ring parameters (Bezier `u`, 0..1) of a twig appended to `out`; returns its number of sides.
-pub(crate) fn plan(stem: &Stem, p: &TreeParams, out: &mut Vec<f32>) -> u32 {
+pub(crate) fn plan(stem: &Stem, p: &MeshParams, out: &mut Vec<f32>) -> u32 {
     let span = Span::fit(stem);
     let (_, _, theta) = span.legs();
     // The tube's rule: about one ring per 12° of bend on thick stems, more tolerance on thin ones.

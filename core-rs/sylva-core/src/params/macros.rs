@@ -1,44 +1,140 @@
 //! The two declaration macros of the registry.
 //!
-//! - `define_params!` turns the table of `params/registry.rs` into `TreeParams`, its `Default`,
-//!   `LevelParams`, the registry's specs and the typed `get` / `set_unchecked` by id.
+//! - `define_params!` turns the table of `params/registry.rs` into one parameter struct per
+//!   pipeline stage (`SkeletonParams`, ..., `ViewerParams`, with `LevelParams`), their `Default`
+//!   and bitwise `PartialEq`, the registry's specs and the typed get / set by id.
 //! - `param_enum!` declares one enum parameter (variants, indices, labels) for `params/enums.rs`.
 
 /// Declares the parameters (used once, in `params/registry.rs`). Tree-level entries read
 /// `id: Type = default; [min, max, step] "unit", "Group", "Label", Stage, "description";`
-/// where `Stage` is the first pipeline [`Stage`] the parameter affects,
-/// and per-level entries (Weber & Penn's `n*`, one value per level 0..3)
+/// where `Stage` is the pipeline [`Stage`] whose parameter struct holds the field (the first
+/// stage it affects), and per-level entries (Weber & Penn's `n*`, one value per level 0..3)
 /// `id: Type = [d0, d1, d2, d3]; [min, max, step] "unit", "Label", "description", trunk: bool;`
 /// where `trunk: false` means level 0 (the trunk) has no such parameter. Per-level parameters
-/// all shape the stems: their stage is [`Stage::Skeleton`].
+/// all shape the stems: they live in [`SkeletonParams::level`].
+///
+/// The entries are sorted into one struct per stage ([`SkeletonParams`], [`MeshParams`],
+/// [`FoliageParams`], [`LeafParams`], [`ViewerParams`]) by a recursive walk (`@split`); the
+/// registry keeps the table's order.
 macro_rules! define_params {
-    (
-        tree {
-            $( $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
-               $tunit:literal, $tgroup:literal, $tlabel:literal, $tstage:ident, $tdesc:literal ; )*
-        }
-        level {
-            $( $lf:ident : $lt:ty = [$d0:expr, $d1:expr, $d2:expr, $d3:expr] ; [$lmin:expr, $lmax:expr, $lstep:expr]
-               $lunit:literal, $llabel:literal, $ldesc:literal, trunk: $ltrunk:literal ; )*
-        }
-    ) => {
-        /// Every parameter of a tree. Build with `TreeParams::default()` and change fields, or
-        /// from wire values with [`TreeParams::from_values`]; [`TreeParams::validate`] checks all.
-        #[derive(Clone, Debug, PartialEq)]
-        pub struct TreeParams {
+    (tree { $($tree:tt)* } level { $($level:tt)* }) => {
+        define_params!(@split [] [] [] [] [] $($tree)*);
+        define_params!(@level $($level)*);
+        define_params!(@registry { $($tree)* } { $($level)* });
+    };
+
+    // One entry goes to the accumulator of its stage.
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]
+        $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+        $tunit:literal, $tgroup:literal, $tlabel:literal, Skeleton, $tdesc:literal ; $($rest:tt)*) => {
+        define_params!(@split [$($s)* ($tf, $tt, $td, $tmin, $tmax, $tunit, $tdesc)] [$($m)*] [$($f)*] [$($l)*] [$($v)*] $($rest)*);
+    };
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]
+        $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+        $tunit:literal, $tgroup:literal, $tlabel:literal, Mesh, $tdesc:literal ; $($rest:tt)*) => {
+        define_params!(@split [$($s)*] [$($m)* ($tf, $tt, $td, $tmin, $tmax, $tunit, $tdesc)] [$($f)*] [$($l)*] [$($v)*] $($rest)*);
+    };
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]
+        $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+        $tunit:literal, $tgroup:literal, $tlabel:literal, Foliage, $tdesc:literal ; $($rest:tt)*) => {
+        define_params!(@split [$($s)*] [$($m)*] [$($f)* ($tf, $tt, $td, $tmin, $tmax, $tunit, $tdesc)] [$($l)*] [$($v)*] $($rest)*);
+    };
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]
+        $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+        $tunit:literal, $tgroup:literal, $tlabel:literal, Leaf, $tdesc:literal ; $($rest:tt)*) => {
+        define_params!(@split [$($s)*] [$($m)*] [$($f)*] [$($l)* ($tf, $tt, $td, $tmin, $tmax, $tunit, $tdesc)] [$($v)*] $($rest)*);
+    };
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]
+        $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+        $tunit:literal, $tgroup:literal, $tlabel:literal, Viewer, $tdesc:literal ; $($rest:tt)*) => {
+        define_params!(@split [$($s)*] [$($m)*] [$($f)*] [$($l)*] [$($v)* ($tf, $tt, $td, $tmin, $tmax, $tunit, $tdesc)] $($rest)*);
+    };
+    (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]) => {
+        define_params!(@stage SkeletonParams, Skeleton,
+            "The skeleton stage's parameters: the stems (Weber & Penn or space colonization), the crown \
+             envelope, the per-level parameters and the growth volumes. What later stages need of them \
+             travels on the [`crate::skeleton::Skeleton`].",
+            [$($s)*]
+            {
+                /// Per-level parameters; index 0 is the trunk.
+                pub level: [LevelParams; 4],
+                /// Growth mode: the user's volume primitives (crown, shadow and exclusion groups);
+                /// structured data beside the registry, JSON key `"volumes"` (see [`crate::params::volumes`]).
+                pub volumes: Vec<$crate::params::VolumePrimitive>,
+            }
+            { level: [0, 1, 2, 3].map(LevelParams::of_level), volumes: Vec::new(), }
+            (|a: &Self, b: &Self| a.level == b.level && a.volumes == b.volumes));
+        define_params!(@stage MeshParams, Mesh,
+            "The mesh stage's parameters: how the bark is swept, welded, fluted and cut.",
+            [$($m)*] {} {} (|_: &Self, _: &Self| true));
+        define_params!(@stage FoliageParams, Foliage,
+            "The foliage stage's parameters: where the leaves sit, how large and how tinted.",
+            [$($f)*] {} {} (|_: &Self, _: &Self| true));
+        define_params!(@stage LeafParams, Leaf,
+            "The leaf stage's parameters: the leaf's outline, veins and surface, and the mesh drawn per leaf.",
+            [$($l)*] {} {} (|_: &Self, _: &Self| true));
+        define_params!(@stage ViewerParams, Viewer,
+            "Viewer-only parameters: they regenerate nothing.",
+            [$($v)*] {} {} (|_: &Self, _: &Self| true));
+    };
+
+    // One stage's struct: its fields, `Default`, the bitwise `PartialEq` the session compares
+    // with, and the typed get / set by id.
+    (@stage $name:ident, $stage:ident, $doc:literal,
+        [$( ($tf:ident, $tt:ty, $td:expr, $tmin:expr, $tmax:expr, $tunit:literal, $tdesc:literal) )*]
+        { $($extra:tt)* } { $($extra_default:tt)* } ($extra_eq:expr)) => {
+        #[doc = $doc]
+        #[derive(Clone, Debug)]
+        pub struct $name {
             $(
                 #[doc = concat!($tdesc, " Default `", stringify!($td), "`, range ", stringify!($tmin), " to ", stringify!($tmax), " ", $tunit, ".")]
                 pub $tf: $tt,
             )*
-            /// Per-level parameters; index 0 is the trunk.
-            pub level: [LevelParams; 4],
-            /// Growth mode: the user's volume primitives (crown, shadow and exclusion groups);
-            /// structured data beside the registry, JSON key `"volumes"` (see [`crate::params::volumes`]).
-            pub volumes: Vec<$crate::params::VolumePrimitive>,
+            $($extra)*
         }
 
+        impl Default for $name {
+            fn default() -> Self {
+                $name { $( $tf: $td, )* $($extra_default)* }
+            }
+        }
+
+        /// Equal when every value has the same wire bits (what a rerun would read), so
+        /// `old != new` says exactly whether the stage must run again.
+        impl PartialEq for $name {
+            fn eq(&self, other: &Self) -> bool {
+                $( ParamValue::to_wire(self.$tf).to_bits() == ParamValue::to_wire(other.$tf).to_bits() && )*
+                ($extra_eq)(self, other)
+            }
+        }
+
+        impl $name {
+            /// The pipeline stage these parameters belong to.
+            pub const STAGE: Stage = Stage::$stage;
+
+            /// The wire value of this struct's own (not per-level) parameter `id`.
+            pub(super) fn get_field(&self, id: &str) -> Option<f64> {
+                match id {
+                    $( stringify!($tf) => Some(ParamValue::to_wire(self.$tf)), )*
+                    _ => None,
+                }
+            }
+
+            /// Sets this struct's own parameter `id` (unchecked); false for an id it does not hold.
+            pub(super) fn set_field(&mut self, id: &str, v: f64) -> bool {
+                match id {
+                    $( stringify!($tf) => self.$tf = ParamValue::from_wire(v), )*
+                    _ => return false,
+                }
+                true
+            }
+        }
+    };
+
+    (@level $( $lf:ident : $lt:ty = [$d0:expr, $d1:expr, $d2:expr, $d3:expr] ; [$lmin:expr, $lmax:expr, $lstep:expr]
+               $lunit:literal, $llabel:literal, $ldesc:literal, trunk: $ltrunk:literal ; )*) => {
         /// Weber & Penn's per-level parameters (`nLength`, `nDownAngle`, ...).
-        #[derive(Clone, Debug, PartialEq)]
+        #[derive(Clone, Debug)]
         pub struct LevelParams {
             $(
                 #[doc = concat!($ldesc, " Defaults per level `", stringify!([$d0, $d1, $d2, $d3]), "`, range ", stringify!($lmin), " to ", stringify!($lmax), " ", $lunit, ".")]
@@ -46,13 +142,45 @@ macro_rules! define_params {
             )*
         }
 
-        impl Default for TreeParams {
-            fn default() -> Self {
-                let level = |n: usize| LevelParams { $( $lf: [$d0, $d1, $d2, $d3][n], )* };
-                TreeParams { $( $tf: $td, )* level: [level(0), level(1), level(2), level(3)], volumes: Vec::new() }
+        /// Equal when every value has the same wire bits.
+        impl PartialEq for LevelParams {
+            fn eq(&self, other: &Self) -> bool {
+                $( ParamValue::to_wire(self.$lf).to_bits() == ParamValue::to_wire(other.$lf).to_bits() && )* true
             }
         }
 
+        impl LevelParams {
+            /// The defaults of level `n` (0 = the trunk).
+            fn of_level(n: usize) -> LevelParams {
+                LevelParams { $( $lf: [$d0, $d1, $d2, $d3][n], )* }
+            }
+
+            /// The wire value of per-level parameter `name` (the id without `l{n}_`).
+            pub(super) fn get(&self, name: &str) -> Option<f64> {
+                match name {
+                    $( stringify!($lf) => Some(ParamValue::to_wire(self.$lf)), )*
+                    _ => None,
+                }
+            }
+
+            /// Sets per-level parameter `name` (unchecked); false for an unknown name.
+            pub(super) fn set(&mut self, name: &str, v: f64) -> bool {
+                match name {
+                    $( stringify!($lf) => self.$lf = ParamValue::from_wire(v), )*
+                    _ => return false,
+                }
+                true
+            }
+        }
+    };
+
+    (@registry {
+            $( $tf:ident : $tt:ty = $td:expr ; [$tmin:expr, $tmax:expr, $tstep:expr]
+               $tunit:literal, $tgroup:literal, $tlabel:literal, $tstage:ident, $tdesc:literal ; )*
+        } {
+            $( $lf:ident : $lt:ty = [$d0:expr, $d1:expr, $d2:expr, $d3:expr] ; [$lmin:expr, $lmax:expr, $lstep:expr]
+               $lunit:literal, $llabel:literal, $ldesc:literal, trunk: $ltrunk:literal ; )*
+        }) => {
         pub(super) fn build_registry() -> Vec<ParamSpec> {
             let mut specs = vec![$(
                 ParamSpec {
@@ -93,37 +221,6 @@ macro_rules! define_params {
             }
             specs.sort_by_key(|s| GROUPS.iter().position(|g| *g == s.group).unwrap_or(GROUPS.len()));
             specs
-        }
-
-        impl TreeParams {
-            /// The wire value of parameter `id`, or `None` for an unknown id.
-            pub fn get(&self, id: &str) -> Option<f64> {
-                match id {
-                    $( stringify!($tf) => return Some(ParamValue::to_wire(self.$tf)), )*
-                    _ => {}
-                }
-                let (n, name) = split_level_id(id)?;
-                let l = &self.level[n];
-                match name {
-                    $( stringify!($lf) => Some(ParamValue::to_wire(l.$lf)), )*
-                    _ => None,
-                }
-            }
-
-            /// Set parameter `id` to the wire value `v` without checking it ([`TreeParams::set`] checks).
-            pub(super) fn set_unchecked(&mut self, id: &str, v: f64) {
-                match id {
-                    $( stringify!($tf) => { self.$tf = ParamValue::from_wire(v); return; } )*
-                    _ => {}
-                }
-                if let Some((n, name)) = split_level_id(id) {
-                    let l = &mut self.level[n];
-                    match name {
-                        $( stringify!($lf) => l.$lf = ParamValue::from_wire(v), )*
-                        _ => {}
-                    }
-                }
-            }
         }
     };
 }

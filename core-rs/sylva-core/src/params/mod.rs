@@ -11,6 +11,7 @@
 //! | `enums.rs` | the enum parameters ([`CrownShape`], [`GrowthMode`], the leaf's options, ...) |
 //! | `volumes.rs` | the growth volume primitives, structured data beside the table |
 //! | `spec.rs` | what the registry says of one parameter ([`ParamSpec`]) and the pipeline [`Stage`]s |
+//! | `stages.rs` | [`TreeParams`]: one struct per stage ([`SkeletonParams`], ...), the flat get / set by id |
 //!
 //! ## Wire values
 //!
@@ -26,14 +27,16 @@ mod enums;
 mod macros;
 mod registry;
 mod spec;
+mod stages;
 pub mod volumes;
 
 pub use enums::{
     BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPrimaries, LeafVenation,
     TwigDetail,
 };
-pub use registry::{LevelParams, TreeParams};
+pub use registry::{FoliageParams, LeafParams, LevelParams, MeshParams, SkeletonParams, ViewerParams};
 pub use spec::{ParamKind, ParamSpec, ParamValue, Stage, GROUPS};
+pub use stages::TreeParams;
 pub use volumes::{Primitive, VolumeGroup, VolumePrimitive};
 
 /// Lower-case ASCII letters and digits only: enum labels compare without case or separators.
@@ -104,7 +107,7 @@ impl TreeParams {
         let mut p = TreeParams::default();
         for (id, value) in &map {
             if id == "volumes" {
-                p.volumes = volumes::from_json_value(value)?;
+                p.skeleton.volumes = volumes::from_json_value(value)?;
                 continue;
             }
             let v = match value {
@@ -129,23 +132,25 @@ impl TreeParams {
             let v = self.get(&spec.id).expect("every registry id is gettable");
             spec.check(v)?;
         }
-        volumes::validate(&self.volumes)
+        volumes::validate(&self.skeleton.volumes)
     }
 
-    /// The values that differ from the defaults, by id in registry order.
+    /// The values that differ from the defaults, by id in registry order. Compared by their
+    /// bits, as the stage structs compare (so `-0` where the default is `0` is listed, and
+    /// [`TreeParams::from_values`] of the list rebuilds equal parameters).
     pub fn non_defaults(&self) -> Vec<(&'static str, f64)> {
         registry()
             .iter()
             .filter_map(|s| {
                 let v = self.get(&s.id)?;
-                (v != s.default).then_some((s.id.as_str(), v))
+                (v.to_bits() != s.default.to_bits()).then_some((s.id.as_str(), v))
             })
             .collect()
     }
 
     /// The crown shape as an enum.
     pub fn crown(&self) -> CrownShape {
-        self.shape
+        self.skeleton.shape
     }
 }
 

@@ -2,7 +2,9 @@
 //!
 //! Tree-level entries read
 //! `id: Type = default; [min, max, step] "unit", "Group", "Label", Stage, "description";`
-//! (`Stage`: the first pipeline stage the parameter affects), per-level entries (Weber & Penn's
+//! (`Stage`: the first pipeline stage the parameter affects, and the stage struct that holds
+//! it: `SkeletonParams`, `MeshParams`, `FoliageParams`, `LeafParams` or `ViewerParams`),
+//! per-level entries (Weber & Penn's
 //! `n*`, one value per level 0..3)
 //! `id: Type = [d0, d1, d2, d3]; [min, max, step] "unit", "Label", "description", trunk: bool;`.
 //! The macro is `define_params!` (`params/macros.rs`).
@@ -12,7 +14,7 @@ use super::enums::{
     TwigDetail,
 };
 use super::macros::define_params;
-use super::{split_level_id, ParamSpec, ParamValue, Stage, GROUPS};
+use super::{ParamSpec, ParamValue, Stage, GROUPS};
 
 define_params! {
     tree {

@@ -61,7 +61,7 @@ fn unknown_and_malformed_json() {
     let e = TreeParams::from_json(r#"{"scale": "big"}"#).unwrap_err();
     assert_eq!(e.message(), r#"scale (Scale) must be a number, got "big""#);
     let p = TreeParams::from_json(r#"{"scale": 20, "seed": 9}"#).unwrap();
-    assert_eq!((p.scale, p.seed), (20.0, 9));
+    assert_eq!((p.skeleton.scale, p.skeleton.seed), (20.0, 9));
     // The trunk has no down angle: l0_down_angle is not a parameter.
     assert!(matches!(TreeParams::from_json(r#"{"l0_down_angle": 1}"#), Err(SylvaError::UnknownParam { .. })));
 }
@@ -69,6 +69,6 @@ fn unknown_and_malformed_json() {
 #[test]
 fn direct_struct_edits_are_validated() {
     let mut p = TreeParams::default();
-    p.level[2].curve_res = 0;
+    p.skeleton.level[2].curve_res = 0;
     assert!(p.validate().unwrap_err().message().starts_with("l2_curve_res"));
 }

@@ -2,7 +2,7 @@
 //! upright cylinders in the **crown** group (their union holds the markers when Crown Volume is
 //! *Primitives*), the **shadow** group (no markers) or the **exclusion** group (no markers, and
 //! branches stop at their surface). They travel beside the scalar parameters as
-//! `TreeParams::volumes`, in JSON as `"volumes": [{"kind": "sphere", "group": "crown",
+//! `SkeletonParams::volumes`, in JSON as `"volumes": [{"kind": "sphere", "group": "crown",
 //! "centre": [x, y, z], "radius": r}, {"kind": "box", ..., "size": [w, h, d]},
 //! {"kind": "cylinder", ..., "radius": r, "height": h}]`.
 

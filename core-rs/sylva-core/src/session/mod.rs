@@ -1,7 +1,8 @@
 //! # Session: staged, incremental regeneration
 //!
 //! A [`Session`] keeps the last result of every pipeline [`Stage`] and reruns only from the
-//! first stage an edit touches (the registry declares it per parameter, [`crate::params::ParamSpec::stage`]):
+//! first stage whose parameter struct an edit changed ([`TreeParams::first_difference`]: the
+//! [`TreeParams`] holds one struct per stage, `old.mesh != new.mesh`):
 //!
 //! | stage      | what it makes                                   | reused by a later-stage edit |
 //! |------------|-------------------------------------------------|------------------------------|
@@ -11,8 +12,10 @@
 //! | `leaf`     | the leaf and the mesh drawn per leaf            | —                            |
 //! | `viewer`   | nothing                                         | everything                   |
 //!
-//! Stages run in that order and each reads only parameters of its own or an earlier stage, so a
-//! rerun from stage S gives the same bytes as a cold generation (tested for every parameter in
+//! Stages run in that order and each takes only its own parameter struct and what the earlier
+//! stages made (the [`Skeleton`] carries the Seed, Levels and Max Vertices the later stages
+//! need; the leaf gets the Petiole Length the leaves were placed with), so a rerun from stage S
+//! gives the same bytes as a cold generation (tested for every parameter in
 //! `tests/incremental.rs`).
 //!
 //! **Preview.** While a slider is dragged the caller may allow a [`Quality::Preview`]: when the
@@ -35,7 +38,7 @@ use crate::foliage::{self, Foliage};
 use crate::mesh::holes::Hole;
 use crate::mesh::tube::WeldStats;
 use crate::mesh::{self, Bounds, TreeMesh};
-use crate::params::{registry, Stage, TreeParams};
+use crate::params::{LeafParams, Stage, TreeParams};
 use crate::skeleton::Skeleton;
 use crate::{Generated, Stats};
 
@@ -180,7 +183,7 @@ impl Current {
         meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });
         meta["total_ms"] = serde_json::json!(t.skeleton + t.mesh + t.foliage);
         meta["preview"] = serde_json::json!(self.is_preview());
-        meta["bark_type"] = serde_json::json!(self.params.bark_type as u8);
+        meta["bark_type"] = serde_json::json!(self.params.mesh.bark_type as u8);
         meta["from"] = serde_json::json!(self.from);
         meta["changes"] = serde_json::json!({
             "skeleton": c.skeleton, "bark": c.bark, "placements": c.placements, "leaf_mesh": c.leaf_mesh, "leaf": c.leaf,
@@ -206,22 +209,13 @@ pub struct Session {
     last_leaf_ms: Option<f64>,
 }
 
-/// The first stage whose parameters differ between `a` and `b` (`Viewer` when only viewer
-/// parameters differ or none do). Volumes belong to the skeleton (growth).
-pub fn first_stage(a: &TreeParams, b: &TreeParams) -> Stage {
-    if a.volumes != b.volumes {
-        return Stage::Skeleton;
-    }
-    let mut first = Stage::Viewer;
-    for spec in registry() {
-        if spec.stage < first {
-            let (x, y) = (a.get(&spec.id), b.get(&spec.id));
-            if x.map(f64::to_bits) != y.map(f64::to_bits) {
-                first = spec.stage;
-            }
-        }
-    }
-    first
+/// What the leaf stage reads: its parameters, the Petiole Length the leaves were placed with
+/// (a foliage parameter), how many leaves there are, and whether its inputs changed.
+struct LeafJob<'a> {
+    params: &'a LeafParams,
+    petiole: f32,
+    count: usize,
+    stale: bool,
 }
 
 impl Session {
@@ -255,7 +249,7 @@ impl Session {
     ) -> Result<&Current, SylvaError> {
         params.validate()?;
         let prev = self.current.take();
-        match self.compute(prev.as_ref(), params, quality, clock, progress) {
+        match self.compute(prev.as_ref(), params.clone(), quality, clock, progress) {
             Ok(fresh) => self.current = Some(fresh.assemble(prev)),
             Err(e) => {
                 self.current = prev;
@@ -265,16 +259,18 @@ impl Session {
         Ok(self.current.as_ref().expect("just set"))
     }
 
-    /// Runs the stages `p` needs on top of `prev`, borrowing what it reuses.
+    /// Runs the stages `params` needs on top of `prev`, borrowing what it reuses; each stage
+    /// gets its own parameter struct.
     fn compute(
         &mut self,
         prev: Option<&Current>,
-        p: &TreeParams,
+        params: TreeParams,
         quality: Quality,
         clock: &dyn Clock,
         progress: Option<&mut dyn FnMut(f32)>,
     ) -> Result<Fresh, SylvaError> {
-        let from = prev.map_or(Stage::Skeleton, |c| first_stage(&c.params, p));
+        let p = &params;
+        let from = prev.map_or(Stage::Skeleton, |c| c.params.first_difference(p));
         let want_preview = match quality {
             Quality::Full => false,
             Quality::Preview { budget_ms } => self.last_full_mesh_ms.is_some_and(|ms| ms > budget_ms),
@@ -282,7 +278,7 @@ impl Session {
         let mut times = StageTimes::default();
 
         let t0 = clock.now_ms();
-        let skeleton = (from <= Stage::Skeleton).then(|| build_skeleton(p, progress)).transpose()?;
+        let skeleton = (from <= Stage::Skeleton).then(|| build_skeleton(&p.skeleton, progress)).transpose()?;
         let skel = skeleton.as_ref().or(prev.map(|c| &c.skeleton)).expect("a first update builds the skeleton");
         let t1 = clock.now_ms();
         times.skeleton = t1 - t0;
@@ -292,8 +288,8 @@ impl Session {
         let bark_stale = from <= Stage::Mesh || prev.is_some_and(|c| c.bark.preview && !want_preview);
         let bark = match (bark_stale, want_preview) {
             (false, _) => None,
-            (true, true) => Some(preview_bark(&skel.skeleton, p)?),
-            (true, false) => Some(full_bark(&skel.skeleton, p)?),
+            (true, true) => Some(preview_bark(&skel.skeleton, &p.mesh)?),
+            (true, false) => Some(full_bark(&skel.skeleton, &p.mesh)?),
         };
         let t2 = clock.now_ms();
         times.mesh = t2 - t1;
@@ -310,7 +306,7 @@ impl Session {
             let t = clock.now_ms();
             // A drag's placement is a preview: every other leaf site (or fewer, for a dense
             // crown), lit by the previous field.
-            let placed = foliage::place_lit_by(&skel.skeleton, p, by_previous, by_previous.is_some())?;
+            let placed = foliage::place_lit_by(&skel.skeleton, &p.foliage, by_previous, by_previous.is_some())?;
             if by_previous.is_none() {
                 self.last_place_ms = Some(clock.now_ms() - t);
             }
@@ -327,8 +323,13 @@ impl Session {
             (None, Some(c)) => (&c.foliage, c.light.as_ref()),
             (None, None) => unreachable!("a first update places the leaves"),
         };
-        let (leaf, leaf_preview) =
-            self.dress(prev, p, placed.count(), from <= Stage::Leaf || placements.is_some(), quality, clock)?;
+        let job = LeafJob {
+            params: &p.leaf,
+            petiole: p.foliage.leaf_petiole,
+            count: placed.count(),
+            stale: from <= Stage::Leaf || placements.is_some(),
+        };
+        let (leaf, leaf_preview) = self.dress(prev, &job, quality, clock)?;
         // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
         // A preview bark goes without it; a drag of the leaves keeps the old one meanwhile
         // (a preview) when computing it would take over half the budget.
@@ -342,7 +343,7 @@ impl Session {
             None
         } else {
             let t = clock.now_ms();
-            let shade = mesh::shade::occlusion_with(&b.mesh, &b.holes, light, p.hole_size);
+            let shade = mesh::shade::occlusion_with(&b.mesh, &b.holes, light, p.mesh.hole_size);
             self.last_shade_ms = Some(clock.now_ms() - t);
             Some(shade)
         };
@@ -363,7 +364,7 @@ impl Session {
             },
         };
         Ok(Fresh {
-            params: p.clone(),
+            params,
             skeleton,
             bark,
             placements,
@@ -378,32 +379,32 @@ impl Session {
         })
     }
 
-    /// The leaf stage: the mesh drawn per leaf for `count` leaves, dressed again when `stale`
-    /// (new leaf parameters or new placements; the leaf itself is cached). A drag of the leaf's
+    /// The leaf stage: the mesh drawn per leaf for `job.count` leaves, dressed again when
+    /// `job.stale` (new leaf parameters or new placements; the leaf itself is cached). A drag of the leaf's
     /// shape whose last leaf took over half the budget gets a preview leaf, its texture one size
     /// down (a quarter of the texels to vein, raster and bake). Returns the mesh (`None`: keep
     /// the previous one) and whether the leaf is a preview.
     fn dress(
         &mut self,
         prev: Option<&Current>,
-        p: &TreeParams,
-        count: usize,
-        stale: bool,
+        job: &LeafJob,
         quality: Quality,
         clock: &dyn Clock,
     ) -> Result<(Option<LeafMesh>, bool), SylvaError> {
         let over = quality.over_half_budget(self.last_leaf_ms);
         let was_preview = prev.is_some_and(|c| c.leaf_preview);
-        let shape_changed = prev.is_none_or(|c| !foliage::same_leaf(&c.params, p));
+        let key = foliage::LeafKey::of(job.params, job.petiole);
+        let shape_changed =
+            prev.is_none_or(|c| foliage::LeafKey::of(&c.params.leaf, c.params.foliage.leaf_petiole) != key);
         let preview = over && (shape_changed || was_preview);
-        if !stale && was_preview == preview {
+        if !job.stale && was_preview == preview {
             return Ok((None, preview));
         }
         if preview {
-            return Ok((Some(foliage::leaf_mesh(count, &preview_leaf_params(p))?), true));
+            return Ok((Some(foliage::leaf_mesh(job.count, &preview_leaf_params(job.params), job.petiole)?), true));
         }
         let t = clock.now_ms();
-        let dressed = foliage::leaf_mesh(count, p)?;
+        let dressed = foliage::leaf_mesh(job.count, job.params, job.petiole)?;
         if shape_changed || was_preview {
             self.last_leaf_ms = Some(clock.now_ms() - t);
         }
@@ -419,7 +420,7 @@ impl Session {
             return None;
         }
         let bark = *c.bark.hash.get_or_insert_with(|| c.bark.mesh.content_hash());
-        Some(mesh::bark::hash_into(c.params.bark_type, c.foliage.hash_into(bark)))
+        Some(mesh::bark::hash_into(c.params.mesh.bark_type, c.foliage.hash_into(bark)))
     }
 
     /// Moves the current full tree out as a [`Generated`] without copying its buffers.
@@ -448,7 +449,7 @@ impl Session {
             markers: c.skeleton.markers,
             foliage: c.foliage,
             holes: c.bark.holes,
-            bark: c.params.bark_type,
+            bark: c.params.mesh.bark_type,
         })
     }
 }

@@ -7,7 +7,7 @@ use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
 use crate::mesh::{self, TreeMesh};
-use crate::params::{GrowthMode, Stage, TreeParams};
+use crate::params::{GrowthMode, LeafParams, MeshParams, SkeletonParams, Stage, TreeParams};
 use crate::skeleton::{self, Skeleton};
 use crate::{growth, ENVELOPE_SAMPLES};
 
@@ -73,7 +73,7 @@ impl Fresh {
 
 /// The leaf parameters of a preview leaf: the texture one Texture Size level down (not below
 /// the parameter's minimum).
-pub(super) fn preview_leaf_params(p: &TreeParams) -> TreeParams {
+pub(super) fn preview_leaf_params(p: &LeafParams) -> LeafParams {
     let mut q = p.clone();
     q.leaf_texture_level = p.leaf_texture_level.saturating_sub(1).max(PREVIEW_MIN_TEXTURE_LEVEL);
     q
@@ -83,7 +83,10 @@ pub(super) fn preview_leaf_params(p: &TreeParams) -> TreeParams {
 const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
 
 /// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
-pub(super) fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<SkeletonOut, SylvaError> {
+pub(super) fn build_skeleton(
+    p: &SkeletonParams,
+    progress: Option<&mut dyn FnMut(f32)>,
+) -> Result<SkeletonOut, SylvaError> {
     let (skeleton, markers) = match p.growth_mode {
         GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
         GrowthMode::SpaceColonization => {
@@ -96,7 +99,7 @@ pub(super) fn build_skeleton(p: &TreeParams, progress: Option<&mut dyn FnMut(f32
 }
 
 /// The mesh stage at full quality: sweep and weld, then cut the holes.
-pub(super) fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+pub(super) fn full_bark(skeleton: &Skeleton, p: &MeshParams) -> Result<Bark, SylvaError> {
     let built = mesh::tube::build_with_stats(skeleton, p)?;
     let mut mesh = built.mesh;
     let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
@@ -105,7 +108,7 @@ pub(super) fn full_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, Syl
 }
 
 /// A preview bark: [`PREVIEW_QUALITY`] times the Mesh Quality, separate tubes, no holes.
-pub(super) fn preview_bark(skeleton: &Skeleton, p: &TreeParams) -> Result<Bark, SylvaError> {
+pub(super) fn preview_bark(skeleton: &Skeleton, p: &MeshParams) -> Result<Bark, SylvaError> {
     let mut q = p.clone();
     q.mesh_quality = (p.mesh_quality * PREVIEW_QUALITY).max(0.25);
     q.weld = false;

@@ -3,7 +3,7 @@
 //! ([`crate::crown`]).
 
 use super::Skeleton;
-use crate::params::TreeParams;
+use crate::params::SkeletonParams;
 
 /// The crown envelope of a generated tree for the viewer's Show Preview: pairs
 /// `[height, radius]` (m, bottom to top) of a solid of revolution around the vertical axis that
@@ -12,7 +12,7 @@ use crate::params::TreeParams;
 /// ShapeRatio(shape, r)`, the very function the generator uses; the branch reaches at most a
 /// sphere of that radius around its attachment point, and the profile is the outline of the
 /// union of those spheres.
-pub fn preview_profile(skeleton: &Skeleton, p: &TreeParams, samples: usize) -> Vec<[f32; 2]> {
+pub fn preview_profile(skeleton: &Skeleton, p: &SkeletonParams, samples: usize) -> Vec<[f32; 2]> {
     let l1 = &p.level[1];
     let max_len = l1.length + l1.length_v;
     // (centre, reach) of the attachment spheres.

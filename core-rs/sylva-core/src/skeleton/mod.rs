@@ -20,7 +20,7 @@ use trunk::{add_roots, guide_curve};
 
 use crate::error::SylvaError;
 use crate::math::{pow, rad, unit_or, HwSqrt};
-use crate::params::{CrownShape, GrowthMode, TreeParams};
+use crate::params::{CrownShape, GrowthMode, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
@@ -35,6 +35,12 @@ pub struct Skeleton {
     pub scale: f32,
     /// Height above the ground where the crown starts (m).
     pub crown_base: f32,
+    /// The tree's Seed: the later stages' random streams start from it.
+    pub seed: u32,
+    /// Levels (stem levels including the trunk) the stems were built with.
+    pub levels: u32,
+    /// Max Vertices: the vertex budget the mesh stage checks too.
+    pub max_vertices: u32,
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
@@ -51,14 +57,13 @@ pub fn min_vertices(curve_res: u32) -> u64 {
 
 /// The vertex budget error, shared by the skeleton and mesh stages: the advice names the
 /// parameters that make the tree (Weber & Penn's, or growth's).
-pub fn budget_error(p: &TreeParams, what: &str, need: u64) -> SylvaError {
-    let lower = match p.growth_mode {
+pub fn budget_error(mode: GrowthMode, max: u32, what: &str, need: u64) -> SylvaError {
+    let lower = match mode {
         crate::params::GrowthMode::Parametric => "lower Levels or Branches",
         crate::params::GrowthMode::SpaceColonization => {
             "lower Markers or Extra Markers, raise Internode or Kill Distance"
         }
     };
-    let max = p.max_vertices;
     SylvaError::Budget {
         param: "max_vertices".into(),
         message: format!(
@@ -69,7 +74,7 @@ pub fn budget_error(p: &TreeParams, what: &str, need: u64) -> SylvaError {
 }
 
 struct Builder<'a> {
-    p: &'a TreeParams,
+    p: &'a SkeletonParams,
     stems: Vec<Stem>,
     /// Error-diffusion remainders of fractional branch counts, per level.
     carry: [f32; 4],
@@ -102,7 +107,7 @@ struct StemStart {
 }
 
 /// Build the skeleton. Fails only on the vertex budget (parameters are validated before).
-pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
+pub fn build(p: &SkeletonParams) -> Result<Skeleton, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "skeleton");
     let scale = (p.scale + rng.var(p.scale_v)).max(0.1);
     let l0 = &p.level[0];
@@ -131,7 +136,15 @@ pub fn build(p: &TreeParams) -> Result<Skeleton, SylvaError> {
         rng,
     })?;
     add_roots(p, &mut b.stems);
-    Ok(Skeleton { mode: GrowthMode::Parametric, stems: b.stems, scale, crown_base: b.crown_base })
+    Ok(Skeleton {
+        mode: GrowthMode::Parametric,
+        stems: b.stems,
+        scale,
+        crown_base: b.crown_base,
+        seed: p.seed,
+        levels: p.levels,
+        max_vertices: p.max_vertices,
+    })
 }
 
 impl Skeleton {
@@ -150,7 +163,7 @@ impl Builder<'_> {
         let lp = &p.level[s.level];
         self.vertex_floor += min_vertices(lp.curve_res);
         if self.vertex_floor > u64::from(p.max_vertices) {
-            return Err(budget_error(p, "at least ", self.vertex_floor));
+            return Err(budget_error(p.growth_mode, p.max_vertices, "at least ", self.vertex_floor));
         }
         let mut rng = s.rng.clone();
         let mut length = s.length;
@@ -282,7 +295,7 @@ impl Builder<'_> {
             let crown_span = stem_len - self.crown_base;
             let crown_r = if crown_span > 0.0 { (stem_len - along) / crown_span } else { 0.0 };
             let length = if child == 1 {
-                stem_len * (cp.length + crng.var(cp.length_v)) * p.crown().ratio(crown_r)
+                stem_len * (cp.length + crng.var(cp.length_v)) * p.shape.ratio(crown_r)
             } else {
                 (cp.length + crng.var(cp.length_v)) * (stem_len - 0.6 * along)
             };
@@ -352,7 +365,7 @@ mod tests {
         // foliage's cheap readers) must give the very bits of `Stem::sample`, forward, backward
         // and jumping between segments: the forks and leaves, so the golden hashes, depend on them.
         let p = crate::presets::find("weeping_willow").unwrap().params().unwrap();
-        let sk = build(&p).unwrap();
+        let sk = build(&p.skeleton).unwrap();
         for stem in sk.stems.iter().step_by(97) {
             let mut cursor = stem.points();
             for k in (0..=300).chain((0..=300).rev()).chain([0, 300, 7, 290, 150]) {
@@ -374,7 +387,7 @@ mod tests {
 
     #[test]
     fn trunk_first_children_inside_crown() {
-        let p = TreeParams::default();
+        let p = SkeletonParams::default();
         let s = build(&p).unwrap();
         assert_eq!(s.stems[0].level, 0);
         assert_eq!(s.stems.iter().filter(|st| st.level == 1).count(), 50);
@@ -393,8 +406,8 @@ mod tests {
     #[test]
     fn every_stem_records_its_kind() {
         let mut p = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
-        p.root_count = 5;
-        let sk = build(&p).unwrap();
+        p.skeleton.root_count = 5;
+        let sk = build(&p.skeleton).unwrap();
         let kinds = |k: StemKind| sk.stems.iter().filter(|s| s.kind == k).count();
         assert_eq!(sk.mode, GrowthMode::Parametric);
         assert_eq!(sk.stems[0].kind, StemKind::Trunk);
@@ -415,8 +428,8 @@ mod tests {
 
     #[test]
     fn editing_a_deeper_level_keeps_the_upper_levels() {
-        let a = build(&TreeParams::default()).unwrap();
-        let mut p = TreeParams::default();
+        let a = build(&SkeletonParams::default()).unwrap();
+        let mut p = SkeletonParams::default();
         p.level[2].curve_v = 10.0;
         let b = build(&p).unwrap();
         let level1 = |s: &Skeleton| s.stems.iter().filter(|st| st.level <= 1).map(|st| st.tip()).collect::<Vec<_>>();
@@ -425,7 +438,7 @@ mod tests {
 
     #[test]
     fn runaway_tree_hits_the_budget_early() {
-        let mut p = TreeParams::default();
+        let mut p = SkeletonParams::default();
         p.levels = 4;
         p.level[1].branches = 500;
         p.level[2].branches = 500;

@@ -7,7 +7,7 @@
 
 use super::StemStart;
 use crate::math::{acos, rad, HwSqrt, PI, TAU};
-use crate::params::{LevelParams, TreeParams};
+use crate::params::{LevelParams, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
@@ -18,7 +18,7 @@ use glam::{Quat, Vec3};
 /// the original direction over their remaining segments. Each point, base first, goes to
 /// `visit`; tracing stops early when it returns false. Returns the clones.
 pub(super) fn trace(
-    p: &TreeParams,
+    p: &SkeletonParams,
     s: &StemStart,
     length: f32,
     rng: &mut Rng,
@@ -55,7 +55,7 @@ pub(super) fn trace(
 /// and where it is (the frame of the current segment, the position reached, the per-segment turn
 /// back toward the original direction after splits, in degrees).
 struct Tracer<'a> {
-    p: &'a TreeParams,
+    p: &'a SkeletonParams,
     s: &'a StemStart,
     lp: &'a LevelParams,
     /// Segments of the whole stem (`nCurveRes`).
@@ -153,7 +153,7 @@ impl Tracer<'_> {
 
 /// Weber & Penn's pruning test: inside `PruneWidth * ShapeRatio(Envelope, ratio)` where
 /// `ratio = (scale - height) / (scale (1 - BaseSize))`.
-pub(super) fn inside_prune_envelope(p: &TreeParams, scale: f32, q: Vec3) -> bool {
+pub(super) fn inside_prune_envelope(p: &SkeletonParams, scale: f32, q: Vec3) -> bool {
     let denom = (scale * (1.0 - p.base_size)).max(1e-6);
     let ratio = (scale - q.y) / denom;
     let width =

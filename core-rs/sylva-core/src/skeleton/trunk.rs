@@ -2,14 +2,14 @@
 
 use super::{Points, Stem, StemKind};
 use crate::math::TAU;
-use crate::params::TreeParams;
+use crate::params::SkeletonParams;
 use crate::rng::Rng;
 use glam::Vec3;
 
 /// The thesis' guide curve (§4.2.1): the trunk's points keep their heights but move by random
 /// x/z offsets within `Guide Limit` (the first point stays at the origin, the second moves at most
 /// half as far), from their own random stream.
-pub(super) fn guide_curve(p: &TreeParams, points: &mut Points) {
+pub(super) fn guide_curve(p: &SkeletonParams, points: &mut Points) {
     let mut rng = Rng::new(u64::from(p.seed), "trunk-guide");
     for (i, q) in points.iter_mut().enumerate().skip(1) {
         let limit = if i == 1 { 0.5 * p.guide_xy } else { p.guide_xy };
@@ -22,7 +22,7 @@ pub(super) fn guide_curve(p: &TreeParams, points: &mut Points) {
 /// Spread` of random variation), running outward just under the ground and diving to `Root
 /// Depth` (in root radii) below it, tapering to a point. They start inside the flared base, so
 /// they emerge from it; their own random stream keeps every other stem unchanged.
-pub(super) fn add_roots(p: &TreeParams, stems: &mut Vec<Stem>) {
+pub(super) fn add_roots(p: &SkeletonParams, stems: &mut Vec<Stem>) {
     if p.root_count == 0 || stems.is_empty() {
         return;
     }

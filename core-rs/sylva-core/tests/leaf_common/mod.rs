@@ -13,9 +13,9 @@ pub fn stages(p: &TreeParams) -> (Outline, Triangulation) {
 
 /// [`stages`], or the error of parameters whose blade has no area.
 pub fn try_stages(p: &TreeParams) -> Result<(Outline, Triangulation), sylva_core::SylvaError> {
-    let base = outline::build(p);
-    let o = margin::build(p, &base)?;
-    let t = triangulate::build(&o, p.leaf_rings);
+    let base = outline::build(&p.leaf);
+    let o = margin::build(&p.leaf, &base)?;
+    let t = triangulate::build(&o, p.leaf.leaf_rings);
     Ok((o, t))
 }
 
@@ -40,11 +40,11 @@ pub fn random_leaf_params(rng: &mut Rng) -> TreeParams {
         let v = random_value(&s.id, rng);
         p.set(&s.id, v).unwrap();
     }
-    p.leaf_vein_density = p.leaf_vein_density.min(3000.0);
-    p.leaf_growth_step = p.leaf_growth_step.max(0.008);
-    p.leaf_texture_level = p.leaf_texture_level.min(7);
-    if p.leaf_attraction <= p.leaf_kill {
-        p.leaf_attraction = (p.leaf_kill * 3.0).min(0.5);
+    p.leaf.leaf_vein_density = p.leaf.leaf_vein_density.min(3000.0);
+    p.leaf.leaf_growth_step = p.leaf.leaf_growth_step.max(0.008);
+    p.leaf.leaf_texture_level = p.leaf.leaf_texture_level.min(7);
+    if p.leaf.leaf_attraction <= p.leaf.leaf_kill {
+        p.leaf.leaf_attraction = (p.leaf.leaf_kill * 3.0).min(0.5);
     }
     p
 }

@@ -22,8 +22,8 @@ pub mod spline;
 
 use crate::leaf::margin::Outline;
 use crate::leaf::raster::Mask;
+use crate::params::LeafParams;
 use crate::params::LeafVenation;
-use crate::params::TreeParams;
 use crate::rng::Rng;
 use glam::Vec2;
 
@@ -192,7 +192,7 @@ pub struct Veins {
 }
 
 /// Stage 5: the network chosen by `leaf_venation`.
-pub fn build(p: &TreeParams, outline: &Outline, mask: &Mask) -> Veins {
+pub fn build(p: &LeafParams, outline: &Outline, mask: &Mask) -> Veins {
     let mut veins = match p.leaf_venation {
         LeafVenation::None => Veins::default(),
         LeafVenation::Open | LeafVenation::Closed => {

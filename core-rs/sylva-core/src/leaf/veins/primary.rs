@@ -22,7 +22,7 @@ use super::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::outline::Shape;
 use crate::leaf::raster::Mask;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use crate::params::{LeafOutline, LeafPrimaries};
 use glam::Vec2;
 
@@ -35,7 +35,7 @@ pub fn root() -> VeinGraph {
 }
 
 /// The primary veins chosen by `leaf_primary_veins` (the root alone for None).
-pub fn build(p: &TreeParams, outline: &Outline, mask: &Mask) -> VeinGraph {
+pub fn build(p: &LeafParams, outline: &Outline, mask: &Mask) -> VeinGraph {
     let mut g = root();
     let step = p.leaf_growth_step;
     match p.leaf_primary_veins {
@@ -92,7 +92,7 @@ fn apex_near(o: &Outline, side: usize, t: f32, window: f32, reach: impl Fn(Vec2)
 }
 
 /// Midrib and secondaries.
-fn pinnate(p: &TreeParams, o: &Outline, mask: &Mask, step: f32, g: &mut VeinGraph) {
+fn pinnate(p: &LeafParams, o: &Outline, mask: &Mask, step: f32, g: &mut VeinGraph) {
     let tip = Vec2::new(0.0, 0.985);
     path(g, 0, &[tip], mask, step);
     let midrib: Vec<u32> = (0..g.nodes.len() as u32).collect();
@@ -148,7 +148,7 @@ fn pinnate(p: &TreeParams, o: &Outline, mask: &Mask, step: f32, g: &mut VeinGrap
 
 /// Ends of the palmate primaries: the lobe apices (Palmate outline) or where rays from the
 /// junction spread over ±Lobe Spread leave the blade.
-fn palmate_targets(p: &TreeParams, o: &Outline, mask: &Mask) -> Vec<Vec2> {
+fn palmate_targets(p: &LeafParams, o: &Outline, mask: &Mask) -> Vec<Vec2> {
     let n = p.leaf_lobes.max(1) as usize;
     if p.leaf_outline == LeafOutline::Palmate {
         let shape = Shape::from_params(p);

@@ -14,7 +14,7 @@
 use super::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::raster::Mask;
-use crate::params::TreeParams;
+use crate::params::LeafParams;
 use crate::rng::Rng;
 use glam::Vec2;
 
@@ -33,7 +33,7 @@ fn along(poly: &[Vec2], frac: f32) -> Vec2 {
 }
 
 /// The spline veins of `outline`, kept inside `mask`.
-pub fn build(p: &TreeParams, outline: &Outline, mask: &Mask) -> VeinGraph {
+pub fn build(p: &LeafParams, outline: &Outline, mask: &Mask) -> VeinGraph {
     let step = p.leaf_growth_step;
     let mut nodes = vec![VeinNode { pos: Vec2::ZERO, parent: NONE, born: 0, width: 0.0, tips: 0 }];
     let steps = (0.99 / step) as u32;

@@ -37,7 +37,7 @@ use super::tube::Frame;
 use super::weld::{surface_bound, Junction, MAX_START};
 use super::MeshBuilder;
 use crate::math::PI;
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::skeleton::Stem;
 use glam::Vec3;
 
@@ -63,7 +63,7 @@ const RISES: [f32; 3] = [0.9, 0.7, 0.97];
 /// both rings sit the same distance from the split along their stems, the first distance (in
 /// quarter radii) at which their centres are [`CLEARANCE`] times their radii apart. `sides` are
 /// the stems' numbers of sides: the original's must be even.
-pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) -> Option<Junction> {
+pub(crate) fn geometry(stems: &[Stem], i: usize, p: &MeshParams, sides: &[u32]) -> Option<Junction> {
     geometry_from(stems, i, p, sides, None)
 }
 
@@ -76,7 +76,7 @@ pub(crate) fn geometry(stems: &[Stem], i: usize, p: &TreeParams, sides: &[u32]) 
 pub(crate) fn geometry_from(
     stems: &[Stem],
     i: usize,
-    p: &TreeParams,
+    p: &MeshParams,
     sides: &[u32],
     from: Option<f32>,
 ) -> Option<Junction> {
@@ -254,9 +254,9 @@ pub(crate) mod tests {
             let mut p = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
             p.set("levels", levels).unwrap();
             p.set("l0_curve_v", 0.0).unwrap();
-            let sk = crate::skeleton::build(&p).unwrap();
+            let sk = crate::skeleton::build(&p.skeleton).unwrap();
             let sides = vec![16; sk.stems.len()];
-            let plan = super::super::weld::plan(&sk, &p, &sides);
+            let plan = super::super::weld::plan(&sk, &p.mesh, &sides);
             let mut shifted = 0;
             for (i, j) in plan.iter().enumerate() {
                 let Some(j) = j.filter(|j| j.fork) else { continue };
@@ -277,7 +277,7 @@ pub(crate) mod tests {
                 for k in (0..sk.stems.len()).filter(|&k| k != i && plan[k].is_none()) {
                     let same_split =
                         sk.stems[k].parent == sk.stems[i].parent && sk.stems[k].offset == sk.stems[i].offset;
-                    if same_split && geometry_from(&sk.stems, k, &p, &sides, Some(f.t_hi)).is_none() {
+                    if same_split && geometry_from(&sk.stems, k, &p.mesh, &sides, Some(f.t_hi)).is_none() {
                         rejected += 1;
                     }
                 }

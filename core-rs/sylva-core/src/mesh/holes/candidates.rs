@@ -15,7 +15,7 @@ use super::patch::{nrm, pos, Patch};
 use super::{Candidate, Source, CONCAVE_DEG, ELONGATION, MIN_CLUSTER};
 use crate::math::{acos, atan2, cos, sin, unit_or, PI, TAU};
 use crate::mesh::TreeMesh;
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;
 
@@ -36,7 +36,7 @@ fn edge_angle(mesh: &TreeMesh, patch: &Patch, v: u32, scratch: &mut Vec<u32>) ->
     Some(180.0 - 2.0 * (sum / scratch.len() as f32).to_degrees())
 }
 
-fn surface_candidates(mesh: &TreeMesh, patch: &Patch, stem: &Stem, p: &TreeParams, out: &mut Vec<Candidate>) {
+fn surface_candidates(mesh: &TreeMesh, patch: &Patch, stem: &Stem, p: &MeshParams, out: &mut Vec<Candidate>) {
     let mut scratch = Vec::new();
     let mut low: Vec<(f32, u32)> = Vec::new();
     let mut angle = vec![f32::INFINITY; patch.block.len()];
@@ -101,7 +101,7 @@ fn structural_candidates(
     mesh: &TreeMesh,
     patch: &Patch,
     skeleton: &Skeleton,
-    p: &TreeParams,
+    p: &MeshParams,
     children: &[u32],
     roots: usize,
     out: &mut Vec<Candidate>,
@@ -176,7 +176,7 @@ pub(super) fn all_candidates(
     mesh: &TreeMesh,
     patches: &[Patch],
     skeleton: &Skeleton,
-    p: &TreeParams,
+    p: &MeshParams,
     children: &[Vec<u32>],
 ) -> Vec<Candidate> {
     let roots = skeleton.first_root();

@@ -34,7 +34,7 @@ mod patch;
 
 use super::TreeMesh;
 use crate::math::TAU;
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
 use candidates::{all_candidates, children};
@@ -106,7 +106,7 @@ pub struct Hole {
 /// thick, and level-1 stems (not roots, not Bezier twigs) at least twice that (a thinner branch
 /// would be densified along its whole length for a hole near its base only). The tube densifies these (rings about
 /// as far apart as the sides, see [`densify`]) when holes are asked for.
-pub fn eligible(skeleton: &Skeleton, p: &TreeParams, twigs: &[bool]) -> Vec<bool> {
+pub fn eligible(skeleton: &Skeleton, p: &MeshParams, twigs: &[bool]) -> Vec<bool> {
     let n = skeleton.stems.len();
     if p.hole_count == 0 {
         return Vec::new();
@@ -129,7 +129,7 @@ pub fn eligible(skeleton: &Skeleton, p: &TreeParams, twigs: &[bool]) -> Vec<bool
 /// mesh: at least enough sides for an opening to span five columns (at most 96), and rings added
 /// to its plan (`ts[start..]`, sorted, the last one next to the tip) about one side apart wherever
 /// the stem is thick enough for a hole. Returns the number of sides to use.
-pub(crate) fn densify(stem: &Stem, sides: u32, p: &TreeParams, ts: &mut Vec<f32>, start: usize) -> u32 {
+pub(crate) fn densify(stem: &Stem, sides: u32, p: &MeshParams, ts: &mut Vec<f32>, start: usize) -> u32 {
     let sides = dense_sides(sides, p);
     let Some(&last) = ts.last() else { return sides };
     let len = stem.length.max(1e-6);
@@ -155,14 +155,14 @@ pub(crate) fn densify(stem: &Stem, sides: u32, p: &TreeParams, ts: &mut Vec<f32>
 
 /// Sides of an eligible stem that would get `sides` as a plain tube: enough for a hole's opening
 /// to span five columns, at most 96.
-pub fn dense_sides(sides: u32, p: &TreeParams) -> u32 {
+pub fn dense_sides(sides: u32, p: &MeshParams) -> u32 {
     sides.max(((TAU * 2.5 / p.hole_size).ceil() as u32).min(96))
 }
 
 /// Every candidate of both methods, in a fixed order (stems in order; junctions, roots, then
 /// surface clusters), before the radius filter. For tests and tools; [`cut`](fn@cut) uses the same list.
-pub fn candidates(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &TreeParams) -> Vec<Candidate> {
-    let twigs = super::twig::mask(skeleton, p);
+pub fn candidates(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &MeshParams) -> Vec<Candidate> {
+    let twigs = super::twig::mask(skeleton);
     let eligible = eligible(skeleton, p, &twigs);
     let patches = patches(mesh, blocks, skeleton, &eligible);
     all_candidates(mesh, &patches, skeleton, p, &children(skeleton, &patches))
@@ -170,11 +170,11 @@ pub fn candidates(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p
 
 /// Cut `p.hole_count` holes into `mesh` (the bark, `blocks[i]` the vertices swept for stem `i`).
 /// Returns the holes actually cut (fewer when there are not enough valid places).
-pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &TreeParams) -> Vec<Hole> {
+pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &MeshParams) -> Vec<Hole> {
     if p.hole_count == 0 || mesh.indices.is_empty() {
         return Vec::new();
     }
-    let twigs = super::twig::mask(skeleton, p);
+    let twigs = super::twig::mask(skeleton);
     let eligible = eligible(skeleton, p, &twigs);
     let mut patches = patches(mesh, blocks, skeleton, &eligible);
     if patches.is_empty() {
@@ -184,7 +184,7 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
         .into_iter()
         .filter(|c| c.local_radius >= p.hole_min_radius && c.local_radius > 0.0)
         .collect();
-    let mut rng = Rng::new(u64::from(p.seed) ^ (u64::from(p.hole_seed) << 32), "holes");
+    let mut rng = Rng::new(u64::from(skeleton.seed) ^ (u64::from(p.hole_seed) << 32), "holes");
     for i in (1..cands.len()).rev() {
         let j = (rng.next_u32() as usize) % (i + 1);
         cands.swap(i, j);
@@ -193,7 +193,7 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
     let mut regions: Vec<(Region, Cavity)> = Vec::new();
     // Cavities add vertices: a hole that would take the mesh past the vertex budget is skipped,
     // so the budget holds with holes too (fewer holes, never a bigger mesh).
-    let mut room = (p.max_vertices as usize).saturating_sub(mesh.vertex_count());
+    let mut room = (skeleton.max_vertices as usize).saturating_sub(mesh.vertex_count());
     for c in cands {
         if regions.len() >= p.hole_count as usize {
             break;

@@ -23,7 +23,7 @@ pub use sweep::{stem_winds, StemWind};
 
 use super::{fork, fork_rows, twig, weld, Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
 use plan::Plan;
@@ -129,12 +129,12 @@ pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
 
 /// Sweep all stems into bark tubes. Fails with a budget error before allocating if the vertex
 /// count would pass `max_vertices`.
-pub fn build(skeleton: &Skeleton, p: &TreeParams) -> Result<TreeMesh, SylvaError> {
+pub fn build(skeleton: &Skeleton, p: &MeshParams) -> Result<TreeMesh, SylvaError> {
     build_with_stats(skeleton, p).map(|b| b.mesh)
 }
 
 /// [`build`] with each stem's block of vertices (skeleton order), which [`super::holes::cut`] needs.
-pub fn build_blocks(skeleton: &Skeleton, p: &TreeParams) -> Result<(TreeMesh, Vec<Range<u32>>), SylvaError> {
+pub fn build_blocks(skeleton: &Skeleton, p: &MeshParams) -> Result<(TreeMesh, Vec<Range<u32>>), SylvaError> {
     build_with_stats(skeleton, p).map(|b| (b.mesh, b.blocks))
 }
 
@@ -151,7 +151,7 @@ pub struct Built {
 /// [`build`], also counting the welded junctions and the fallbacks, and returning the stems'
 /// vertex blocks. The deepest level's simple stems become Bezier twigs ([`twig`]) unless they are
 /// welded; stems that may get tree holes are swept densely enough for them ([`super::holes::densify`]).
-pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, SylvaError> {
+pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, SylvaError> {
     let plan = Plan::new(skeleton, p)?;
     let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
     out.begin_group(Material::Bark);
@@ -160,7 +160,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &TreeParams) -> Result<Built, Sy
     for s in &plan.stems {
         tables[s.sides as usize].get_or_insert_with(|| circle(s.sides));
     }
-    let winds = stem_winds(skeleton, p.seed);
+    let winds = stem_winds(skeleton, skeleton.seed);
     let mut sweep = Sweep::new(skeleton, p, plan, out, &tables, &winds);
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
@@ -184,7 +184,7 @@ type Tables = [Option<Vec<(f32, f32, f32)>>];
 /// The sweep of a whole tree, stem by stem: what has been written so far.
 struct Sweep<'a> {
     skeleton: &'a Skeleton,
-    p: &'a TreeParams,
+    p: &'a MeshParams,
     plan: Plan,
     out: MeshBuilder,
     /// Circle tables by number of sides.
@@ -207,7 +207,7 @@ struct Sweep<'a> {
 impl<'a> Sweep<'a> {
     fn new(
         skeleton: &'a Skeleton,
-        p: &'a TreeParams,
+        p: &'a MeshParams,
         plan: Plan,
         out: MeshBuilder,
         tables: &'a Tables,
@@ -242,8 +242,8 @@ impl<'a> Sweep<'a> {
             twig::sweep(stem, &self.plan.ts[rings.clone()], rings.start, table, &winds[i], &mut self.out)
         } else {
             let lobes = (stem.lobed && p.lobes > 0 && p.lobe_depth > 0.0).then_some((p.lobes, p.lobe_depth));
-            let profile =
-                (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0)).then(|| TrunkProfile::new(p, lobes));
+            let profile = (stem.lobed && (p.refine_curves > 0 || p.base_ripple > 0.0))
+                .then(|| TrunkProfile::new(p, skeleton.seed, lobes));
             let tube = Tube { stem, table, lobes, profile, wind: &winds[i] };
             let mut m = self.tube(i, &tube);
             if m.base == Base::Open {

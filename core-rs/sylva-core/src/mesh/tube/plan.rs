@@ -8,7 +8,7 @@ use super::sides_for;
 use crate::error::SylvaError;
 use crate::math::TAU;
 use crate::mesh::{fork, fork_rows, holes, twig, weld};
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::skeleton::{budget_error, Skeleton, StemKind};
 use std::ops::Range;
 
@@ -50,9 +50,9 @@ pub(super) struct Plan {
 impl Plan {
     /// Plans every stem. Fails with a budget error when the vertex count could pass
     /// `max_vertices`.
-    pub fn new(skeleton: &Skeleton, p: &TreeParams) -> Result<Plan, SylvaError> {
+    pub fn new(skeleton: &Skeleton, p: &MeshParams) -> Result<Plan, SylvaError> {
         let n = skeleton.stems.len();
-        let twig_candidates = twig::mask(skeleton, p);
+        let twig_candidates = twig::mask(skeleton);
         let dense = holes::eligible(skeleton, p, &twig_candidates);
         let mut sides = stem_sides(skeleton, p, &dense);
         let junctions = if p.weld { weld::plan(skeleton, p, &sides) } else { vec![None; n] };
@@ -79,8 +79,8 @@ impl Plan {
             bridges: 0,
         };
         plan.plan_stems(skeleton, p);
-        if plan.vertices > u64::from(p.max_vertices) {
-            return Err(budget_error(p, "", plan.vertices));
+        if plan.vertices > u64::from(skeleton.max_vertices) {
+            return Err(budget_error(skeleton.mode, skeleton.max_vertices, "", plan.vertices));
         }
         Ok(plan)
     }
@@ -98,7 +98,7 @@ impl Plan {
     /// Appends the ring positions of tube `i` to `out`, starting at `t0` (its junction ring if
     /// it is welded, else 0): rings where it bends and around its children's footprints,
     /// densified for holes, with its forks' rows kept open.
-    pub fn tube_rings(&self, skeleton: &Skeleton, p: &TreeParams, i: usize, t0: f32, out: &mut Vec<f32>) {
+    pub fn tube_rings(&self, skeleton: &Skeleton, p: &MeshParams, i: usize, t0: f32, out: &mut Vec<f32>) {
         let (stem, sides, start) = (&skeleton.stems[i], self.sides[i], out.len());
         let feet = self.feet(i);
         plan_rings(stem, p.mesh_quality, feet, TAU / sides as f32, t0, out);
@@ -111,7 +111,7 @@ impl Plan {
     /// Every stem's rings, and the vertex and index counts: tubes, apexes, caps, the collar
     /// loops of every junction, and for each junction the rings a fallback to a buried tube
     /// would add back.
-    fn plan_stems(&mut self, skeleton: &Skeleton, p: &TreeParams) {
+    fn plan_stems(&mut self, skeleton: &Skeleton, p: &MeshParams) {
         let q = p.mesh_quality;
         let mut ts = std::mem::take(&mut self.ts);
         let mut fallback: Vec<f32> = Vec::new();
@@ -161,7 +161,7 @@ impl Plan {
 
 /// Sides per stem: by radius and quality ([`sides_for`], lobes on the trunk), more on stems
 /// densified for holes, and even on both branches of a split that may fork.
-fn stem_sides(skeleton: &Skeleton, p: &TreeParams, dense: &[bool]) -> Vec<u32> {
+fn stem_sides(skeleton: &Skeleton, p: &MeshParams, dense: &[bool]) -> Vec<u32> {
     let stems = &skeleton.stems;
     let mut sides: Vec<u32> = stems
         .iter()

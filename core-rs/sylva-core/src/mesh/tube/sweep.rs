@@ -11,7 +11,7 @@ use super::{Base, Frame, StemMesh};
 use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{MeshBuilder, VertexBlock, WIND_STRIDE};
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;
@@ -336,8 +336,9 @@ pub(super) struct TrunkProfile {
 const KEYS: usize = 9;
 
 impl TrunkProfile {
-    pub(super) fn new(p: &TreeParams, lobes: Option<(u32, f32)>) -> Self {
-        let mut rng = Rng::new(u64::from(p.seed), "trunk-profile");
+    /// The profile of the trunk of a tree of Seed `seed`.
+    pub(super) fn new(p: &MeshParams, seed: u32, lobes: Option<(u32, f32)>) -> Self {
+        let mut rng = Rng::new(u64::from(seed), "trunk-profile");
         let n = p.refine_curves as usize;
         let v = p.refine_variation;
         let keys = (0..KEYS).map(|_| (0..n).map(|_| [rng.var(v), rng.var(v)]).collect()).collect();

@@ -41,7 +41,7 @@ mod zip;
 pub(crate) use join::{join, well_wound, Join, Scratch};
 
 use crate::math::{atan2, unit_or, PI, TAU};
-use crate::params::TreeParams;
+use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem, StemKind};
 
 /// Smallest sine of the angle between a child and its parent that is welded (about 20°): below
@@ -101,7 +101,7 @@ pub(crate) fn collar_loops(quality: f32) -> usize {
 }
 
 /// How far the trunk's surface reaches beyond its nominal radius (lobes, fluting, ripple).
-pub(crate) fn surface_bound(p: &TreeParams) -> f32 {
+pub(crate) fn surface_bound(p: &MeshParams) -> f32 {
     let lobes = 1.0 + if p.lobes > 0 { p.lobe_depth } else { 0.0 };
     let refine =
         if p.refine_curves > 0 { (p.refine_offset + p.refine_radius) * (1.0 + p.refine_variation) } else { 0.0 };
@@ -115,7 +115,7 @@ fn asin(x: f32) -> f32 {
 
 /// Step 1 for one stem: its junction, the estimated azimuth of its footprint around the parent
 /// and the footprint's half-width in angle.
-fn geometry(stems: &[Stem], i: usize, p: &TreeParams) -> Option<Junction> {
+fn geometry(stems: &[Stem], i: usize, p: &MeshParams) -> Option<Junction> {
     let s = &stems[i];
     let pi = s.parent?;
     let par = &stems[pi as usize];
@@ -169,7 +169,7 @@ fn geometry(stems: &[Stem], i: usize, p: &TreeParams) -> Option<Junction> {
 }
 
 /// Step 1: the junction of every stem that can be welded (None for the others).
-pub(crate) fn plan(skeleton: &Skeleton, p: &TreeParams, sides: &[u32]) -> Vec<Option<Junction>> {
+pub(crate) fn plan(skeleton: &Skeleton, p: &MeshParams, sides: &[u32]) -> Vec<Option<Junction>> {
     let stems = &skeleton.stems;
     let n = stems.len();
     // A shallow split clone forks its original; the others open a footprint in their parent.
