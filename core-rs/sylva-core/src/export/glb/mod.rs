@@ -342,6 +342,7 @@ fn bark_ranges(bark: &TreeMesh, wind: bool, threads: usize) -> (Bounds, Option<W
 }
 
 /// Lays out the JSON and the BIN chunk and writes the GLB bytes.
+#[allow(clippy::too_many_arguments, reason = "the parts `write` built, each used once here")]
 fn assemble(
     doc: Doc<'_>,
     g: &Generated,

@@ -120,6 +120,10 @@ pub fn stem_winds(skeleton: &Skeleton, seed: u32) -> Vec<StemWind> {
     out
 }
 
+#[allow(
+    clippy::too_many_arguments,
+    reason = "separate borrows of one sweep: stem, rings, circle, wind, frames, output"
+)]
 pub(super) fn sweep(
     stem: &Stem,
     ts: &[f32],
@@ -143,6 +147,10 @@ pub(super) fn sweep(
 
 /// Sweep one stem whose ring `r`, column `j` sits at `factor(r, j)` times the ring radius.
 /// Where the factor varies around the ring, the in-plane normal follows the outline's tangent.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "separate borrows of one sweep: stem, rings, circle, wind, frames, output"
+)]
 fn sweep_with(
     stem: &Stem,
     ts: &[f32],
@@ -369,6 +377,10 @@ impl TrunkProfile {
 
 /// Sweep of the trunk record with a complex cross-section: each ring's outline is the union of
 /// its circles resampled per column (then lobes and the base ripple), as factors on the radius.
+#[allow(
+    clippy::too_many_arguments,
+    reason = "separate borrows of one sweep: stem, rings, circle, wind, frames, output"
+)]
 pub(super) fn sweep_trunk(
     stem: &Stem,
     ts: &[f32],
