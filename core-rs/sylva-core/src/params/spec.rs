@@ -19,7 +19,8 @@ pub enum ParamKind {
 }
 
 /// The pipeline stages, in order: the first one a parameter affects is declared in the registry
-/// ([`ParamSpec::stage`]). An edit reruns that stage and every later one and reuses the results of
+/// ([`ParamSpec::stage`]), and the parameter lives in that stage's struct of
+/// [`crate::TreeParams`]. An edit reruns that stage and every later one and reuses the results of
 /// the earlier ones ([`crate::session::Session`]); a `Viewer` parameter regenerates nothing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -62,7 +63,8 @@ pub struct ParamSpec {
     /// Option labels for enums (value = index).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub options: Option<Vec<String>>,
-    /// The first pipeline stage the parameter affects.
+    /// The first pipeline stage the parameter affects: the stage struct of
+    /// [`crate::TreeParams`] that holds it.
     pub stage: Stage,
 }
 
