@@ -25,8 +25,7 @@
 //! on thick stems), the last ring sits a quarter span short of the tip and a small cone closes
 //! the tip at an apex, exactly as the tube does, so the only open edges stay the buried base ring.
 
-use super::tube::sides_for;
-use super::tube::{Base, StemMesh, StemWind};
+use super::stem::{sides_for, Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
 use crate::params::{GrowthMode, TreeParams, TwigDetail};

@@ -11,7 +11,7 @@
 //!   diamond network, with fine fibres along the stem.
 
 use super::noise::{cells, fbm, lattice, smoothstep, value};
-use super::BarkType;
+use crate::params::BarkType;
 
 /// One texel of a pattern: height 0 (deepest) to 1, linear RGB 0..1, roughness 0..1.
 #[derive(Clone, Copy, Debug)]

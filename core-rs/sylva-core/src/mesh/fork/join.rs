@@ -15,8 +15,8 @@
 
 use super::{seam_copies, split_ring, RISES};
 use crate::math::{atan2, cos, sin, unit_or, PI, TAU};
-use crate::mesh::tube::Frame;
-use crate::mesh::weld::{well_wound, Join};
+use crate::mesh::junction::{well_wound, Join};
+use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_RADIUS, WIND_STRIDE};
 use glam::Vec3;
 

@@ -9,9 +9,8 @@
 //! face into the cavity (out of the wood); `u` follows the rim, `v` continues the bark's at one
 //! unit per circumference.
 
-use super::cut::Region;
 use super::patch::{nrm, pos};
-use super::{Hole, CAVITY_RINGS, CHAMFER, LIP, SMOOTH_PASSES};
+use super::{Hole, Region, CAVITY_RINGS, CHAMFER, LIP, SMOOTH_PASSES};
 use crate::math::{unit_or, TAU};
 use crate::mesh::TreeMesh;
 use glam::Vec3;

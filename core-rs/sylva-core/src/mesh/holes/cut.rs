@@ -7,26 +7,9 @@
 
 use super::cavity::{Cavity, Id};
 use super::patch::{bits, pos, Patch};
-use super::{Source, ELONGATION};
+use super::{Region, ELONGATION};
 use crate::mesh::{TreeMesh, WIND_STRIDE};
 use glam::Vec3;
-
-/// A selected disk of faces around a candidate.
-pub(super) struct Region {
-    pub(super) patch: usize,
-    pub(super) centre: u32,
-    /// Triangle indices of the faces to remove.
-    pub(super) faces: Vec<u32>,
-    /// Boundary loop, directed as in the removed faces (counter-clockwise from outside).
-    pub(super) lp: Vec<u32>,
-    /// Vertices used only by removed faces (their slots are reused).
-    pub(super) interior: Vec<u32>,
-    /// Opening half-width (m) and cavity depth (m).
-    pub(super) radius: f32,
-    pub(super) depth: f32,
-    pub(super) local_radius: f32,
-    pub(super) source: Source,
-}
 
 /// Select the faces within the hole's ellipse around `centre`; None unless they form a disk.
 pub(super) fn select(

@@ -39,7 +39,7 @@ use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
 use candidates::{all_candidates, children};
 use cavity::{plan_cavity, Cavity};
-use cut::{commit, drop_coincident, drop_rings, select, write_triangles, Region};
+use cut::{commit, drop_coincident, drop_rings, select, write_triangles};
 use glam::Vec3;
 use patch::{nrm, patches, pos};
 use std::ops::Range;
@@ -102,6 +102,23 @@ pub struct Hole {
     pub depth: f32,
 }
 
+/// A selected disk of faces around a candidate.
+pub(super) struct Region {
+    pub(super) patch: usize,
+    pub(super) centre: u32,
+    /// Triangle indices of the faces to remove.
+    pub(super) faces: Vec<u32>,
+    /// Boundary loop, directed as in the removed faces (counter-clockwise from outside).
+    pub(super) lp: Vec<u32>,
+    /// Vertices used only by removed faces (their slots are reused).
+    pub(super) interior: Vec<u32>,
+    /// Opening half-width (m) and cavity depth (m).
+    pub(super) radius: f32,
+    pub(super) depth: f32,
+    pub(super) local_radius: f32,
+    pub(super) source: Source,
+}
+
 /// Whether stem `i` can carry holes: the trunk records whose base is at least `hole_min_radius`
 /// thick, and level-1 stems (not roots, not Bezier twigs) at least twice that (a thinner branch
 /// would be densified along its whole length for a hole near its base only). The tube densifies these (rings about
@@ -149,7 +166,7 @@ pub(crate) fn densify(stem: &Stem, sides: u32, p: &TreeParams, ts: &mut Vec<f32>
         return sides;
     }
     ts[start..].sort_by(f32::total_cmp);
-    super::tube::drop_close(ts, start);
+    super::stem::drop_close(ts, start);
     sides
 }
 
