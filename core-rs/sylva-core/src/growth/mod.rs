@@ -15,19 +15,9 @@ use crate::params::{CrownVolumeKind, GrowthMode, TreeParams, VolumeGroup};
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
+pub use sca::node_budget_error;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
-
-/// The budget error for growth.
-pub fn node_budget_error(max: usize) -> SylvaError {
-    SylvaError::Budget {
-        param: "max_vertices".into(),
-        message: format!(
-            "growth stopped at {max} nodes (a quarter of the max_vertices budget): \
-             lower Markers, Iterations or Extra Markers, raise Internode, or raise Max Vertices"
-        ),
-    }
-}
 
 /// The environment described by the parameters: crown (one copy per start point), the wall.
 pub fn environment(p: &TreeParams) -> Environment {

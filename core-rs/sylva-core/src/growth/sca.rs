@@ -19,6 +19,17 @@ use crate::error::SylvaError;
 use crate::rng::Rng;
 use glam::Vec3;
 
+/// The budget error for growth.
+pub fn node_budget_error(max: usize) -> SylvaError {
+    SylvaError::Budget {
+        param: "max_vertices".into(),
+        message: format!(
+            "growth stopped at {max} nodes (a quarter of the max_vertices budget): \
+             lower Markers, Iterations or Extra Markers, raise Internode, or raise Max Vertices"
+        ),
+    }
+}
+
 /// Smallest mean resultant length of a node's marker directions that still makes it grow.
 const MIN_PULL: f32 = 0.2;
 
@@ -393,7 +404,7 @@ impl State {
                 continue;
             }
             if self.nodes.len() >= cfg.max_nodes {
-                return Err(super::node_budget_error(cfg.max_nodes));
+                return Err(node_budget_error(cfg.max_nodes));
             }
             self.add_node(Node { pos: to, parent: n, born: iter });
             grown += 1;

@@ -13,34 +13,13 @@
 
 pub mod cdt;
 pub mod rings;
+mod triangulation;
+
+pub use triangulation::{Method, Triangulation};
 
 use crate::leaf::geom::{orient, polygon_area, DVec2};
 use crate::leaf::margin::Outline;
 use glam::Vec2;
-use serde::Serialize;
-
-/// Which method produced a triangulation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Method {
-    /// Concentric rings and a centre fan.
-    Rings,
-    /// Ear clipping, constrained Delaunay flips and interior points.
-    Cdt,
-}
-
-/// A triangulated blade in the leaf plane.
-#[derive(Clone, Debug)]
-pub struct Triangulation {
-    /// Vertices: the outline points first (same order), then interior points.
-    pub vertices: Vec<Vec2>,
-    /// Counter-clockwise triangles (indices into `vertices`).
-    pub triangles: Vec<[u32; 3]>,
-    /// The method used.
-    pub method: Method,
-    /// Number of outline vertices at the start of `vertices`.
-    pub boundary: usize,
-}
 
 /// Stage 3: rings about the deepest kernel point when the outline is star-shaped, else the
 /// robust method. `rings` (1..16) sets the interior detail of both.

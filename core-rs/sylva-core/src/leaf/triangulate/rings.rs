@@ -5,7 +5,7 @@
 //! wedge is counter-clockwise, i.e. `c` lies in the outline's kernel (ANCHORS §5 trap: only
 //! star-shaped outlines). [`kernel_center`] picks such a centre or reports there is none.
 
-use super::{Method, Triangulation};
+use super::triangulation::{Method, Triangulation};
 use crate::leaf::geom::orient;
 use glam::Vec2;
 

@@ -18,7 +18,7 @@
 //!   in two (halving the sector) whenever the sector's width at its distance exceeds twice the
 //!   vein spacing (2 × Kill Distance), so the veins stay evenly spaced as the fan widens.
 
-use super::{VeinGraph, VeinNode, NONE};
+use super::graph::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::outline::Shape;
 use crate::leaf::raster::Mask;

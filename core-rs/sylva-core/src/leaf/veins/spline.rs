@@ -11,7 +11,7 @@
 //! Nodes are spaced by the growth step; a node's `born` is its distance in steps from the
 //! petiole along the veins, so the step slider draws the midrib first and the laterals after.
 
-use super::{VeinGraph, VeinNode, NONE};
+use super::graph::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::raster::Mask;
 use crate::params::TreeParams;

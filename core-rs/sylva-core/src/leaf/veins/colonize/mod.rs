@@ -31,8 +31,8 @@
 
 mod association;
 
+use super::graph::{Auxin, VeinGraph, VeinLink, VeinNode, Veins, NONE};
 use super::grid::{DynGrid, GridSpec, StaticGrid};
-use super::{Auxin, VeinGraph, VeinLink, VeinNode, Veins, NONE};
 use crate::leaf::raster::Mask;
 use crate::rng::Rng;
 use association::{Neighbourhood, EMPTY};
