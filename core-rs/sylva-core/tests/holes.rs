@@ -1,5 +1,5 @@
 //! Tree holes (issue 5): cut when asked, absent at count 0, closed and manifold, deterministic,
-//! candidates from both of the thesis' methods.
+//! candidates from both methods of the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.4.
 
 mod common;
 

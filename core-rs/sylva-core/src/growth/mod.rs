@@ -2,9 +2,9 @@
 //! Parameters -> [`volume::Environment`] + [`sca::GrowthConfig`] -> [`sca::grow`] -> nodes ->
 //! pipe-model radii -> stems (a [`Skeleton`]) that the ordinary bark mesher sweeps.
 //!
-//! Thickness follows the pipe model (da Vinci's rule, ANCHORS §4): `r_parent^Δ = Σ r_child^Δ`
-//! at every fork, from `Tip Radius` at the tips, so a node's radius is
-//! `tip_radius * (tips above it)^(1/Δ)`.
+//! Thickness follows the pipe model (da Vinci's rule; Shinozaki et al. 1964, *A quantitative
+//! analysis of plant form: the pipe model theory*): `r_parent^Δ = Σ r_child^Δ` at every fork, from
+//! `Tip Radius` at the tips, so a node's radius is `tip_radius * (tips above it)^(1/Δ)`.
 
 pub mod grid;
 pub mod sca;

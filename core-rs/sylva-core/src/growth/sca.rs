@@ -1,8 +1,9 @@
-//! Space colonization (Runions, Lane & Prusinkiewicz 2007; ANCHORS §4). Markers (attraction
-//! points) fill the crown; each iteration every marker attracts its closest node within the
-//! influence radius, every attracted node grows one internode toward the normalised sum of unit
-//! vectors to its markers (plus tropism and jitter), and markers within the kill distance of a
-//! node die. Growth stops when no marker is left, nothing grows, or the iteration cap is hit.
+//! Space colonization (Runions, Lane & Prusinkiewicz 2007, *Modeling Trees with a Space
+//! Colonization Algorithm*). Markers (attraction points) fill the crown; each iteration every
+//! marker attracts its closest node within the influence radius, every attracted node grows one
+//! internode toward the normalised sum of unit vectors to its markers (plus tropism and jitter),
+//! and markers within the kill distance of a node die. Growth stops when no marker is left, nothing
+//! grows, or the iteration cap is hit.
 //!
 //! Speed: each marker remembers its closest node and is updated only when a node appears within
 //! its influence radius (a uniform grid finds those markers), so an iteration costs one pass over

@@ -1,12 +1,12 @@
 //! Stage 3, triangulation (Leaf Generation guide §3): the blade filled with triangles.
 //!
-//! The guide's method comes first: **concentric rings** shrinking toward a centre, joined by
-//! triangle strips, with a fan to the centre ([`rings`]). It is valid exactly when the outline
-//! is star-shaped about the centre, so the centre is the candidate deepest inside the outline's
-//! kernel, and every ring triangle is checked. Where no such centre exists (a waisted spline
-//! outline with deep teeth) or a triangle would fold, a robust method takes over ([`cdt`]):
-//! ear clipping of the outline, Lawson flips to a constrained Delaunay triangulation, and
-//! interior points inserted with Delaunay legalisation.
+//! The method of Mtree's *Leaf Generation Guide* (§3) comes first: **concentric rings** shrinking
+//! toward a centre, joined by triangle strips, with a fan to the centre ([`rings`]). It is valid
+//! exactly when the outline is star-shaped about the centre, so the centre is the candidate deepest
+//! inside the outline's kernel, and every ring triangle is checked. Where no such centre exists (a
+//! waisted spline outline with deep teeth) or a triangle would fold, a robust method takes over
+//! ([`cdt`]): ear clipping of the outline, Lawson flips to a constrained Delaunay triangulation,
+//! and interior points inserted with Delaunay legalisation.
 //!
 //! Either way the outline points are the first vertices and the outline edges are exactly the
 //! boundary edges; [`validate`] checks that the result is an embedding of the blade.

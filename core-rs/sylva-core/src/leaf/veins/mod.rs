@@ -1,5 +1,5 @@
-//! Stage 5, the vein network (Leaf Generation guide §4; Runions et al. 2005; blog "OSL leaf
-//! veins shader").
+//! Stage 5, the vein network (Mtree's *Leaf Generation Guide* §4; Runions et al. 2005; Michel Anders
+//! 2013, "OSL leaf veins shader for Cycles", blog.michelanders.nl).
 //!
 //! * [`colonize`]: space colonization from a root at the petiole, Open (a tree) or Closed (a
 //!   source associates with every node in its relative neighbourhood and dies when all have

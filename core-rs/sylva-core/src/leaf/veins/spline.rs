@@ -1,4 +1,5 @@
-//! Spline venation (blog "OSL leaf veins shader", arcuate / pinnate): a straight midrib from
+//! Spline venation (Michel Anders 2013, "OSL leaf veins shader for Cycles",
+//! blog.michelanders.nl; arcuate / pinnate): a straight midrib from
 //! the petiole toward the tip and `Veins` lateral veins per side, each a quadratic spline
 //! `P0 → P1 → P2`:
 //!

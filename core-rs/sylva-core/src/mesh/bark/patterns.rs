@@ -1,4 +1,4 @@
-//! The four bark patterns of ANCHORS §10, each a tileable height field with its colour and
+//! The four bark patterns of `docs/look.md` ("Bark types"), each a tileable height field with its colour and
 //! roughness at a point of the unit tile (`u` around the stem, `v` along it):
 //!
 //! * **Furrowed** (oaks, ash, black locust): flat-topped ridges that meander and interlace along

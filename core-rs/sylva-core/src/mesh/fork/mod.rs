@@ -1,9 +1,9 @@
 //! # Smooth Y forks
 //!
-//! A split clone that leaves its original below about 30° runs inside it for many radii, so it
-//! has no footprint ([`super::weld`]); the original's tube splits in two instead. The shape is the
-//! maple page's **ramiform** (reference 003: two twig-like side patches and a smooth top part), a
-//! C0 simplification of Bloomenthal's node.
+//! A split clone that leaves its original below about 30° runs inside it for many radii, so it has
+//! no footprint ([`super::weld`]); the original's tube splits in two instead. The shape is the
+//! **ramiform** of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes) (two twig-like side
+//! patches and a smooth top part), a C0 simplification of Bloomenthal's node.
 //!
 //! ## Rings and patches
 //!

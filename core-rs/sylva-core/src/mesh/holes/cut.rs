@@ -1,4 +1,5 @@
-//! Cutting a hole into the mesh (the thesis, §4.3: the chamfer, connect, delete steps of the
+//! Cutting a hole into the mesh (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.3
+//! "Hole Generation": the chamfer, connect, delete steps of the
 //! 3ds Max recipe): the faces around a candidate within the hole's ellipse are selected and must
 //! form a topological disk (one boundary loop, Euler characteristic 1); regions touching a welded
 //! copy are dropped; a planned cavity is written over the removed faces, its new vertices reusing

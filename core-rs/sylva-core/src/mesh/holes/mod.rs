@@ -1,7 +1,9 @@
 //! # Tree holes
 //!
 //! A post-process on the bark mesh that cuts cavities into the trunk and into level-1 stems thick
-//! enough for them ([`eligible`]), after the thesis (§4.3–4.4).
+//! enough for them ([`eligible`]), after the tree-hole chapter of the tree-generator thesis posted
+//! on 3dideas.wordpress.com (2008): §4.3 "Hole Generation" and §4.4 "Recommended Methods for Hole
+//! Generation".
 //!
 //! ## Where (§4.4)
 //!
@@ -142,7 +144,7 @@ pub fn eligible(skeleton: &Skeleton, p: &TreeParams, twigs: &[bool]) -> Vec<bool
         .collect()
 }
 
-/// Make an eligible stem's mesh dense enough for holes, as the thesis cuts them into a dense
+/// Make an eligible stem's mesh dense enough for holes, as that chapter (§4.3) cuts them into a dense
 /// mesh: at least enough sides for an opening to span five columns (at most 96), and rings added
 /// to its plan (`ts[start..]`, sorted, the last one next to the tip) about one side apart wherever
 /// the stem is thick enough for a hole. Returns the number of sides to use.
@@ -243,7 +245,7 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
         if !clear {
             continue;
         }
-        // The thesis shrinks a selection that is not a clean disk; on a coarse mesh a larger one
+        // The hole recipe (§4.3) shrinks a selection that is not a clean disk; on a coarse mesh a larger one
         // may be needed, so a few sizes around the asked one are tried.
         let mut found = None;
         for f in [1.0, 0.8, 1.25, 1.6, 2.0] {

@@ -293,8 +293,8 @@ fn write_trunk_cap(block: &mut VertexBlock, cap: usize, circle: &[(f32, f32, f32
 }
 
 /// Cross-section settings of a complex trunk (see [`crate::mesh::trunk`]): refinement circles whose
-/// offset and radius vary smoothly with height, W&P lobes on top, and the maple page's base
-/// ripple `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
+/// offset and radius vary smoothly with height, Weber & Penn lobes on top, and the base
+/// ripple of *Modeling the Mighty Maple for Web*, `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
 pub(super) struct TrunkProfile {
     offset: f32,
     radius: f32,

@@ -4,8 +4,8 @@
 //! 1. [`Meeting::new`]: the parent's rows and columns around the footprint;
 //! 2. [`footprint::find`]: the footprint loop and the quads under it;
 //! 3. [`Collar::curves`]: one cubic Bezier per column from the footprint loop to the junction
-//!    ring, leaving the parent tangentially and arriving along the child's axis (after the maple
-//!    page's Bezier cylinders, reference 003);
+//!    ring, leaving the parent tangentially and arriving along the child's axis (after the Bezier
+//!    cylinders of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes));
 //! 4. [`Collar::write`] and [`Collar::quads`]: the collar loops' vertices and quads;
 //! 5. [`open_and_zip`]: the crease normals, the hole (grown where the loop comes close to its
 //!    edge) and the zip ([`super::zip`]); every new triangle is checked ([`well_wound`]) before

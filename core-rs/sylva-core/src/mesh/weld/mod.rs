@@ -2,8 +2,8 @@
 //!
 //! A level-1 or level-2 branch is joined into its parent's surface instead of being buried in it,
 //! so trunk + level 1 + level 2 form one closed, edge-manifold surface. The junction is a short
-//! **Bezier cylinder** from a loop on the parent to the branch's first ring, after the maple
-//! page's twigs and ramiforms (reference 003).
+//! **Bezier cylinder** from a loop on the parent to the branch's first ring, after the twigs
+//! and ramiforms of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes).
 //!
 //! ## Steps
 //!
