@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# All lints in one place: rustfmt, clippy and rustdoc with warnings as errors, eslint and prettier.
+# All lints in one place: rustfmt, no import cycles between Rust files (rust-cycles.mjs), clippy
+# and rustdoc with warnings as errors, eslint and prettier.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo fmt --all --check
+node scripts/rust-cycles.mjs
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo clippy -p sylva-wasm --target wasm32-unknown-unknown --quiet -- -D warnings
 RUSTDOCFLAGS='-D warnings' cargo doc --quiet --no-deps --workspace

@@ -287,8 +287,8 @@ pub fn command() -> clap::Command {
             }
             _ => a,
         });
-        overview.push_str(&format!("  {}\n", crate::reference::synopsis_wrapped(&c, 2, WIDTH)));
-        let usage = crate::reference::synopsis_wrapped(&c, "Usage: ".len(), WIDTH);
+        overview.push_str(&format!("  {}\n", crate::synopsis::synopsis_wrapped(&c, 2, WIDTH)));
+        let usage = crate::synopsis::synopsis_wrapped(&c, "Usage: ".len(), WIDTH);
         let examples: Vec<String> = examples(&name).iter().map(|e| format!("  {e}")).collect();
         c.override_usage(usage).after_help(format!("Examples:\n{}", examples.join("\n")))
     });

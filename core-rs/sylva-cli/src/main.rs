@@ -8,6 +8,7 @@
 mod cli;
 mod leaf;
 mod reference;
+mod synopsis;
 mod tree;
 
 use clap::error::{ContextKind, ErrorKind};

@@ -1,5 +1,5 @@
 //! Crown shapes: Weber & Penn's ShapeRatio (1995, §4.3), the envelope that scales level-1 branch
-//! lengths by their height on the trunk. Convention (ANCHORS §2): `r = 1` at the crown base
+//! lengths by their height on the trunk. Convention (as in the paper): `r = 1` at the crown base
 //! (lowest branch), `r = 0` at the top, so every silhouette looks like its name. The envelope
 //! preview in the app draws [`envelope_profile`], which calls this very function.
 

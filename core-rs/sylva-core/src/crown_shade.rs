@@ -1,13 +1,13 @@
-//! Crown-depth shading: how much sky a point inside the crown still sees, an ambient-occlusion
-//! term computed from the leaves the skeleton carries. The WebGL maple notes (reference 003, the
-//! "sunny" tree) shade leaves from a height map of the crown above them; here the leaves are
-//! binned into a coarse voxel grid of leaf area, and for every cell the transmittance
-//! `exp(-k · leaf area per unit cross-section)` is averaged over [`SKY_DIRECTIONS`] rays to the
-//! upper hemisphere (swept layer by layer from the top, one pass per direction) (Beer–Lambert through the foliage, `k` = 0.5 for randomly oriented leaves).
-//! A leaf's brightness is `MIN_LIGHT + (1 - MIN_LIGHT) · sky`, read trilinearly at its base, so
-//! inner and lower leaves are darker than the outer shell; the bark uses the same field
-//! ([`crate::mesh::shade`]). Deterministic: plain arithmetic and the portable `math::exp`, in a
-//! fixed order.
+//! Crown-depth shading: how much sky a point inside the crown still sees, an ambient-occlusion term
+//! computed from the leaves the skeleton carries. The WebGL pages of *Modeling the Mighty Maple for
+//! Web* (ibiblio.org/e-notes) (the "sunny" tree) shade leaves from a height map of the crown above
+//! them; here the leaves are binned into a coarse voxel grid of leaf area, and for every cell the
+//! transmittance `exp(-k · leaf area per unit cross-section)` is averaged over [`SKY_DIRECTIONS`]
+//! rays to the upper hemisphere (swept layer by layer from the top, one pass per direction)
+//! (Beer–Lambert through the foliage, `k` = 0.5 for randomly oriented leaves). A leaf's brightness
+//! is `MIN_LIGHT + (1 - MIN_LIGHT) · sky`, read trilinearly at its base, so inner and lower leaves
+//! are darker than the outer shell; the bark uses the same field ([`crate::mesh::shade`]).
+//! Deterministic: plain arithmetic and the portable `math::exp`, in a fixed order.
 
 use glam::Vec3;
 

@@ -8,12 +8,12 @@
 //!   over the part of the stem above **Leaf Start**, crowded toward the tip or the base by
 //!   **Leaf Distribution**, pulled into clumps by **Clumping**. Grown trees (space
 //!   colonization) carry them on the outermost internodes (the last three) of every shoot.
-//! * **Orientation** ("Top oriented leaves", the maple page): a leaf first leaves its stem at
-//!   **Leaf Angle**, turned about the stem by the golden angle from one leaf to the next. Its
-//!   direction `t` (the midrib, leaf `+y`) is then lowered, `t_y ← t_y (1 − t_y²)`, and
-//!   renormalised, so no leaf points straight up; finally the leaf turns about that direction
-//!   so its front (leaf `+z`) faces the sky as much as it can: the front is the component of
-//!   world up perpendicular to `t`.
+//! * **Orientation** ("Top oriented leaves", *Modeling the Mighty Maple for Web*
+//!   (ibiblio.org/e-notes)): a leaf first leaves its stem at **Leaf Angle**, turned about the stem
+//!   by the golden angle from one leaf to the next. Its direction `t` (the midrib, leaf `+y`) is
+//!   then lowered, `t_y ← t_y (1 − t_y²)`, and renormalised, so no leaf points straight up; finally
+//!   the leaf turns about that direction so its front (leaf `+z`) faces the sky as much as it can:
+//!   the front is the component of world up perpendicular to `t`.
 //! * **Size**: `Leaf Scale` (m, base to tip) times `1 ± Size Variation`; the width is further
 //!   times **Leaf Scale X**.
 //! * **Colour**: a per-leaf RGB tint (multiplies the leaf texture): brightness and a shift
@@ -133,8 +133,8 @@ pub fn budget_error(need: u64, max: u32) -> SylvaError {
     }
 }
 
-/// The maple page's rule: lower the direction's vertical component, `t_y ← t_y (1 − t_y²)`, and
-/// renormalise.
+/// The rule of *Modeling the Mighty Maple for Web*: lower the direction's vertical component,
+/// `t_y ← t_y (1 − t_y²)`, and renormalise.
 pub fn lower(t: Vec3) -> Vec3 {
     let t = Vec3::new(t.x, t.y * (1.0 - t.y * t.y), t.z);
     math::unit_or(t, || Vec3::X)

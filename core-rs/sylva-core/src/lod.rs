@@ -1,7 +1,7 @@
 //! # Levels of detail
 //!
 //! Every level is built from the **one** skeleton [`crate::generate`] built, so the levels of a
-//! tree never disagree about where its branches are (ANCHORS §6):
+//! tree never disagree about where its branches are:
 //!
 //! * **LOD0**: the generated tree itself (bark tubes at Mesh Quality, every leaf).
 //! * **LOD1**: the same sweep ([`crate::mesh::tube::build`]) at [`LOD1_QUALITY`] × Mesh Quality

@@ -7,7 +7,7 @@ use sylva_core::skeleton::preview_profile;
 use sylva_core::skeleton::{self, Skeleton};
 use sylva_core::{CrownShape, TreeParams};
 
-/// The ANCHORS §2 table, written out independently of `CrownShape::ratio`.
+/// Weber & Penn's ShapeRatio table (1995, §4.3), written out independently of `CrownShape::ratio`.
 fn reference(shape: usize, r: f64) -> f64 {
     use std::f64::consts::PI;
     match shape {
@@ -205,7 +205,7 @@ fn preview_lines_trace_the_profile() {
 
 #[test]
 fn the_weeping_preset_hangs_curtains() {
-    // Inverse Conical with a negative Attraction Up (the crown shape guide's weeping tree): its
+    // Inverse Conical with a negative Attraction Up (the weeping tree of Mtree's *Crown Shape User Guide*): its
     // twigs must hang, and far enough to read as curtains. With short, curved twigs they fell
     // 0.08 of the tree's height and the crown read as an upright cone.
     let p = sylva_core::presets::find("weeping").unwrap().params().unwrap();

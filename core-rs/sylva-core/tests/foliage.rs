@@ -1,5 +1,5 @@
-//! Foliage: leaves only on the last stem level, the maple page's orientation rule, the leaf
-//! budget, determinism, and the grown-tree case.
+//! Foliage: leaves only on the last stem level, the orientation rule of *Modeling the Mighty
+//! Maple for Web*, the leaf budget, determinism, and the grown-tree case.
 
 use glam::Vec3;
 use sylva_core::foliage::{self, face_up, lower};

@@ -1,4 +1,4 @@
-//! A uniform grid over a box for fixed-radius neighbour queries (ANCHORS §4: a grid updated
+//! A uniform grid over a box for fixed-radius neighbour queries (a grid updated
 //! incrementally keeps space colonization fast; all-pairs searches are what make other tools
 //! slow). Items are indices with positions; each cell holds a singly linked list threaded
 //! through `next`, so insertion is O(1) and never reallocates per cell.

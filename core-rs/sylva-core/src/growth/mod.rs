@@ -2,9 +2,9 @@
 //! Parameters -> [`volume::Environment`] + [`sca::GrowthConfig`] -> [`sca::grow`] -> nodes ->
 //! pipe-model radii -> stems (a [`Skeleton`]) that the ordinary bark mesher sweeps.
 //!
-//! Thickness follows the pipe model (da Vinci's rule, ANCHORS §4): `r_parent^Δ = Σ r_child^Δ`
-//! at every fork, from `Tip Radius` at the tips, so a node's radius is
-//! `tip_radius * (tips above it)^(1/Δ)`.
+//! Thickness follows the pipe model (da Vinci's rule; Shinozaki et al. 1964, *A quantitative
+//! analysis of plant form: the pipe model theory*): `r_parent^Δ = Σ r_child^Δ` at every fork, from
+//! `Tip Radius` at the tips, so a node's radius is `tip_radius * (tips above it)^(1/Δ)`.
 
 pub mod grid;
 pub mod sca;
@@ -15,19 +15,9 @@ use crate::params::{CrownVolumeKind, GrowthMode, SkeletonParams, VolumeGroup};
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
+pub use sca::node_budget_error;
 use sca::{Growth, GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
-
-/// The budget error for growth.
-pub fn node_budget_error(max: usize) -> SylvaError {
-    SylvaError::Budget {
-        param: "max_vertices".into(),
-        message: format!(
-            "growth stopped at {max} nodes (a quarter of the max_vertices budget): \
-             lower Markers, Iterations or Extra Markers, raise Internode, or raise Max Vertices"
-        ),
-    }
-}
 
 /// The environment described by the parameters: crown (one copy per start point), the wall.
 pub fn environment(p: &SkeletonParams) -> Environment {

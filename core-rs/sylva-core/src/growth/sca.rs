@@ -1,8 +1,9 @@
-//! Space colonization (Runions, Lane & Prusinkiewicz 2007; ANCHORS §4). Markers (attraction
-//! points) fill the crown; each iteration every marker attracts its closest node within the
-//! influence radius, every attracted node grows one internode toward the normalised sum of unit
-//! vectors to its markers (plus tropism and jitter), and markers within the kill distance of a
-//! node die. Growth stops when no marker is left, nothing grows, or the iteration cap is hit.
+//! Space colonization (Runions, Lane & Prusinkiewicz 2007, *Modeling Trees with a Space
+//! Colonization Algorithm*). Markers (attraction points) fill the crown; each iteration every
+//! marker attracts its closest node within the influence radius, every attracted node grows one
+//! internode toward the normalised sum of unit vectors to its markers (plus tropism and jitter),
+//! and markers within the kill distance of a node die. Growth stops when no marker is left, nothing
+//! grows, or the iteration cap is hit.
 //!
 //! Speed: each marker remembers its closest node and is updated only when a node appears within
 //! its influence radius (a uniform grid finds those markers), so an iteration costs one pass over
@@ -18,6 +19,17 @@ use super::volume::Environment;
 use crate::error::SylvaError;
 use crate::rng::Rng;
 use glam::Vec3;
+
+/// The budget error for growth.
+pub fn node_budget_error(max: usize) -> SylvaError {
+    SylvaError::Budget {
+        param: "max_vertices".into(),
+        message: format!(
+            "growth stopped at {max} nodes (a quarter of the max_vertices budget): \
+             lower Markers, Iterations or Extra Markers, raise Internode, or raise Max Vertices"
+        ),
+    }
+}
 
 /// Smallest mean resultant length of a node's marker directions that still makes it grow.
 const MIN_PULL: f32 = 0.2;
@@ -393,7 +405,7 @@ impl State {
                 continue;
             }
             if self.nodes.len() >= cfg.max_nodes {
-                return Err(super::node_budget_error(cfg.max_nodes));
+                return Err(node_budget_error(cfg.max_nodes));
             }
             self.add_node(Node { pos: to, parent: n, born: iter });
             grown += 1;

@@ -1,7 +1,8 @@
 //! # Lobed leaf outlines
 //!
-//! Lobed outlines that follow the botany of real leaves (ANCHORS §9) rather than the
-//! superformula's radial symmetry (Leaf Generation guide §1 draws an oak as a seven-pointed
+//! Lobed outlines that follow the botany of real leaves (Ellis et al. 2009, *Manual of Leaf
+//! Architecture*) rather than the
+//! superformula's radial symmetry (Mtree's *Leaf Generation Guide* §1 draws an oak as a seven-pointed
 //! star). Two models, both evaluated per half from the tip (`t = 0`) to the base (`t = 1`) like
 //! the other outlines, so the margin stage adds teeth to them unchanged:
 //!

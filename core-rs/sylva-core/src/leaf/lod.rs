@@ -1,5 +1,5 @@
-//! Levels of detail (Leaf Generation guide §6; Décoret et al. 2003 billboard clouds; ANCHORS §6
-//! hemi-octahedral impostors):
+//! Levels of detail (Leaf Generation guide §6; Décoret et al. 2003, *Billboard Clouds for Extreme
+//! Model Simplification*; hemi-octahedral impostors):
 //!
 //! * **LOD0**: the full deformed blade ([`super::Leaf::mesh`]).
 //! * **Card**: one quad over the UV box in the leaf plane (`z = 0`), UVs 0..1, showing the baked

@@ -1,10 +1,10 @@
 //! # Leaf margin
 //!
-//! Stage 2, the margin (Leaf Generation guide §2; ANCHORS §5): teeth as a modulation of the
+//! Stage 2, the margin (Mtree's *Leaf Generation Guide* §2): teeth as a modulation of the
 //! outline by `1 + depth · A · wave(f)`, radial about the superformula centre or sideways from
 //! the midrib for the spline outline, so the edge stays a simple polygon for every depth. For the
 //! superformula the tooth is added at the half's mean radius, `r + depth · A · wave · r_mean`
-//! (the additive form of ANCHORS' `r (1 + depth · wave)`), because the formula's centre can sit
+//! (the additive form of the guide's `r (1 + depth · wave)`), because the formula's centre can sit
 //! near one end of the blade and `r · depth` would give huge teeth at one end and none at the
 //! other; for the spline, `x (1 + depth · A · wave)` lets teeth fade toward petiole and tip.
 //!

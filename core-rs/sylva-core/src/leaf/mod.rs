@@ -1,6 +1,7 @@
 //! # Leaves
 //!
-//! A single leaf from parameters, in the order of the Leaf Generation guide:
+//! A single leaf from parameters, in the order of Mtree's *Leaf Generation Guide* (its sections
+//! are cited below as "Leaf Generation guide §N"):
 //!
 //! ```text
 //! outline → margin → triangulation → UVs → veins → deformation (+ vein field) → texture → LOD
@@ -9,10 +10,10 @@
 //! | stage | module | reference |
 //! |---|---|---|
 //! | outline | [`outline`] | superformula (Gielis 2003) or mirrored cubic spline, adaptive sampling |
-//! | margin | [`margin`] | `r (1 + depth · wave(f))` (ANCHORS §5) |
-//! | lobed outlines | [`lobes`] | pinnate lobes along the midrib, palmate lobes (ANCHORS §9) |
-//! | needles, petiole | [`needles`] | pine fascicles, the leaf stalk (ANCHORS §9) |
-//! | conifer shoots | [`shoot`] | many needles on a twig, baked into one texture (ANCHORS §9) |
+//! | margin | [`margin`] | `r (1 + depth · wave(f))` (Leaf Generation guide §2) |
+//! | lobed outlines | [`lobes`] | pinnate lobes along the midrib, palmate lobes (Ellis et al. 2009, `docs/leaves.md`) |
+//! | needles, petiole | [`needles`] | pine fascicles, the leaf stalk (`docs/leaves.md`) |
+//! | conifer shoots | [`shoot`] | many needles on a twig, baked into one texture (`docs/leaves.md`) |
 //! | triangulation | [`triangulate`] | concentric rings + fan; ear clipping + constrained Delaunay fallback |
 //! | UVs | [`uv`] | planar over the blade's box |
 //! | veins | [`veins`] | primary veins (pinnate, palmate, dichotomous), then space colonization (Runions 2005), open / closed; spline veins |

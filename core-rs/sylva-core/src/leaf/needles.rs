@@ -1,4 +1,4 @@
-//! Needles as foliage geometry (ANCHORS §9: pines carry needles in fascicles of 2 to 5 from
+//! Needles as foliage geometry (pines carry needles in fascicles of 2 to 5 from
 //! one sheath; firs single flat needles along the twig), and the petiole.
 //!
 //! * [`fascicle`] (Needles per Fascicle 2–5): `n` round needles instead of the flat blade.

@@ -1,4 +1,5 @@
-//! Stage 1, the outline (Leaf Generation guide §1; blog "OSL leaf shape shader").
+//! Stage 1, the outline (Mtree's *Leaf Generation Guide* §1; Michel Anders 2013, "A OSL leaf
+//! shape shader for Cycles", blog.michelanders.nl).
 //!
 //! * **Superformula** (Gielis 2003): `r(φ) = (|cos(mφ/4)/a|^n2 + |sin(mφ/4)/b|^n3)^(-1/n1)`,
 //!   evaluated in log space (so extreme exponents neither overflow nor underflow) and divided by

@@ -1,7 +1,8 @@
 //! Leaf presets: data over the registry's defaults, like the tree presets. The species leaves
-//! follow the botany of ANCHORS §9 (outline, margin, venation and petiole of the real leaf,
-//! see `docs/leaves.md`); the `superformula_*` presets keep the Leaf Generation guide's
-//! "Species Presets" (Mtree's values, ANCHORS §5) as examples of the superformula.
+//! follow the botany of real leaves (Ellis et al. 2009, *Manual of Leaf Architecture*: outline,
+//! margin, venation and petiole of the real leaf, see `docs/leaves.md`); the `superformula_*`
+//! presets keep the Leaf Generation guide's "Species Presets" (Mtree's values) as examples of the
+//! superformula.
 
 use crate::error::SylvaError;
 use crate::params::TreeParams;
@@ -27,7 +28,7 @@ impl LeafPreset {
     }
 }
 
-/// The guide's superformula settings, reset to the superformula outline without primary veins
+/// The *Leaf Generation Guide*'s superformula settings, reset to the superformula outline without primary veins
 /// or petiole (the registry's default leaf is the aspen's).
 macro_rules! superformula {
     ($($v:expr),* $(,)?) => {
@@ -35,7 +36,8 @@ macro_rules! superformula {
     };
 }
 
-/// The species leaves (ANCHORS §9), then the guide's five superformula presets (ANCHORS §5).
+/// The species leaves (`docs/leaves.md`), then the five superformula presets of Mtree's
+/// *Leaf Generation Guide* ("Species Presets").
 pub const LEAF_PRESETS: &[LeafPreset] = &[
     LeafPreset {
         name: "oak",

@@ -1,4 +1,4 @@
-//! Conifer shoots: the leaf becomes a twig carrying many needles (ANCHORS §9; the "frond" of
+//! Conifer shoots: the leaf becomes a twig carrying many needles (pines and firs, `docs/leaves.md`; the "frond" of
 //! SpeedTree and the needle cards of every real-time conifer), so a crown of a few thousand
 //! shoots has the needle area of a real conifer, hundreds of thousands of needles, which
 //! single needles could only reach with as many instances. Seen from a distance a fir is a

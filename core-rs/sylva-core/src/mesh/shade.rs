@@ -4,10 +4,10 @@
 //! * **Crown depth**: the sky the vertex still sees through the foliage, from the same leaf-area
 //!   field that shades the leaves ([`crate::crown_shade`]), so the inner trunk and branches inside
 //!   the crown are darker than the outer twigs.
-//! * **Tree holes** (the thesis, §4.3): inside a cavity the light falls off with the depth below
-//!   the opening, so a hole reads as a dark opening; the depth is measured from the stem's own
-//!   curved surface (a cylinder of the local radius through the hole's rim), so the bark around
-//!   the opening stays lit.
+//! * **Tree holes** (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.3 "Hole
+//!   Generation"): inside a cavity the light falls off with the depth below the opening, so a hole
+//!   reads as a dark opening; the depth is measured from the stem's own curved surface (a cylinder
+//!   of the local radius through the hole's rim), so the bark around the opening stays lit.
 //!
 //! Viewers multiply the bark colour by it (the viewer as an attribute, the GLB through `COLOR_0`).
 

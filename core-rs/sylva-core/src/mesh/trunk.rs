@@ -1,10 +1,11 @@
-//! Complex trunk cross-sections (the thesis' trunk generator, §4.2): around the main circle of
-//! each trunk ring sit `count` shape-refinement circles (radius default ⅓ of the main circle),
-//! centred on refinement curves offset from the guide curve (default offset = the circle's
-//! radius) and spread evenly around it; the cross-section is the outer boundary of the union of
-//! all these circles, resampled at a fixed number of points. Resampling casts one ray from the
-//! centre per column and keeps the farthest point of the union on it, so the outline is exactly
-//! what a ray test against the union sees.
+//! Complex trunk cross-sections (the trunk generator of the tree-generator thesis posted on
+//! 3dideas.wordpress.com (2008), §4.2 "Recommendations for Trunk Generation"): around the main
+//! circle of each trunk ring sit `count` shape-refinement circles (radius default ⅓ of the main
+//! circle), centred on refinement curves offset from the guide curve (default offset = the circle's
+//! radius) and spread evenly around it; the cross-section is the outer boundary of the union of all
+//! these circles, resampled at a fixed number of points. Resampling casts one ray from the centre
+//! per column and keeps the farthest point of the union on it, so the outline is exactly what a ray
+//! test against the union sees.
 
 use crate::math::{cos, sin, TAU};
 

@@ -1,14 +1,14 @@
 //! # Bezier twigs
 //!
-//! Bezier twigs, after the WebGL maple page (reference 003, following Bloomenthal's "Modeling
-//! the Mighty Maple"): the thinnest stems are meshed as Bezier cylinders, the tensor product of a
-//! circle and a quadratic Bezier spline. Three control circles sit on the control polygon: R0 at
-//! the base, R2 at the tip, and the middle one with the page's linear interpolation
-//! `R1 = (l0 R0 + l1 R2) / (l0 + l1)`, where `l0`, `l1` are the two leg lengths. The middle
-//! circle is turned by `θ/2`, half the bend `θ` between the legs, and the tip circle by `θ`, so
-//! each circle lies across its leg (the base one across the first leg, like the tube's first
-//! ring). A ring at curve parameter `u` is the Bernstein blend of the three circles, and its
-//! normals are the exact surface normals `∂S/∂φ × ∂S/∂u` of the patch.
+//! Bezier twigs, after the WebGL page *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes)
+//! (following Bloomenthal's "Modeling the Mighty Maple"): the thinnest stems are meshed as Bezier
+//! cylinders, the tensor product of a circle and a quadratic Bezier spline. Three control circles
+//! sit on the control polygon: R0 at the base, R2 at the tip, and the middle one with the page's
+//! linear interpolation `R1 = (l0 R0 + l1 R2) / (l0 + l1)`, where `l0`, `l1` are the two leg
+//! lengths. The middle circle is turned by `θ/2`, half the bend `θ` between the legs, and the tip
+//! circle by `θ`, so each circle lies across its leg (the base one across the first leg, like the
+//! tube's first ring). A ring at curve parameter `u` is the Bernstein blend of the three circles,
+//! and its normals are the exact surface normals `∂S/∂φ × ∂S/∂u` of the patch.
 //!
 //! Which stems are twigs ([`mask`]): stems of the deepest level (`level == levels - 1`, with
 //! `levels >= 2`, parametric trees only) that carry nothing (no child, no split clone), have a
@@ -25,8 +25,7 @@
 //! on thick stems), the last ring sits a quarter span short of the tip and a small cone closes
 //! the tip at an apex, exactly as the tube does, so the only open edges stay the buried base ring.
 
-use super::tube::sides_for;
-use super::tube::{Base, StemMesh, StemWind};
+use super::stem::{sides_for, Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
 use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
 use crate::params::{GrowthMode, MeshParams, TwigDetail};

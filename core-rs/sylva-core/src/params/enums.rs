@@ -8,7 +8,7 @@ use super::macros::param_enum;
 // Crown (Weber & Penn ShapeRatio, `crown.rs`).
 
 param_enum! {
-    /// The eight crown envelopes of the Crown Shape guide, in Weber & Penn's numbering.
+    /// The eight crown envelopes of Mtree's *Crown Shape User Guide*, in Weber & Penn's numbering.
     CrownShape {
         /// Christmas tree: longest branches at the crown base (fir, spruce).
         Conical = 0, "Conical";
@@ -122,7 +122,7 @@ param_enum! {
     /// The primary veins laid down before space colonization fills the rest
     /// ([`crate::leaf::veins::primary`]).
     LeafPrimaries {
-        /// None: colonization grows everything from the petiole (the guide's method).
+        /// None: colonization grows everything from the petiole (Mtree's *Leaf Generation Guide*, §4).
         None = 0, "None";
         /// A midrib with secondary veins along it, one per lobe on a lobed blade.
         Pinnate = 1, "Pinnate";
@@ -151,7 +151,7 @@ param_enum! {
 // Bark (`mesh/bark`).
 
 param_enum! {
-    /// The bark pattern of a tree (ANCHORS §10).
+    /// The bark pattern of a tree (`docs/look.md`, "Bark types").
     BarkType {
         /// Deep vertical fissures between interlacing ridges (oaks, ash).
         Furrowed = 0, "Furrowed";

@@ -1,4 +1,5 @@
-//! The space-colonization presets (Runions, Lane & Prusinkiewicz 2007; ANCHORS §4): crown
+//! The space-colonization presets (Runions, Lane & Prusinkiewicz 2007, *Modeling Trees with a
+//! Space Colonization Algorithm*): crown
 //! volumes, start points, walls and light competition, and the SCA add-on's bushy reference tree.
 
 use super::Preset;

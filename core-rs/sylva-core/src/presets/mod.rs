@@ -33,9 +33,9 @@ pub struct Preset {
     pub values: &'static [(&'static str, f64)],
 }
 
-/// All presets, the default tree first. The four Weber & Penn species use the paper's values
-/// (ANCHORS §3); the next five illustrate one crown shape each; the `grown_*` presets use
-/// space-colonization growth.
+/// All presets, the default tree first. The four Weber & Penn species use the paper's values (Weber
+/// & Penn 1995, *Creation and Rendering of Realistic Trees*); the next five illustrate one crown
+/// shape each; the `grown_*` presets use space-colonization growth.
 pub const PRESETS: &[Preset] = &[
     DEFAULT,
     species::QUAKING_ASPEN,

@@ -1,5 +1,5 @@
 //! The four Weber & Penn species of the paper's appendix (Weber & Penn 1995, "Creation and
-//! Rendering of Realistic Trees"; ANCHORS §3): their parameter values as the paper lists them.
+//! Rendering of Realistic Trees"): their parameter values as the paper lists them.
 
 use super::Preset;
 

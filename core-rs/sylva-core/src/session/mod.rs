@@ -35,12 +35,12 @@ use crate::clock::Clock;
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::{self, Foliage};
+use crate::generated::{Generated, Stats};
 use crate::mesh::holes::Hole;
 use crate::mesh::tube::WeldStats;
 use crate::mesh::{self, Bounds, TreeMesh};
 use crate::params::{LeafParams, Stage, TreeParams};
 use crate::skeleton::Skeleton;
-use crate::{Generated, Stats};
 
 mod stages;
 use stages::{build_skeleton, full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
@@ -176,8 +176,14 @@ impl Current {
     pub fn meta_json(&self) -> String {
         let b = &self.bark;
         let stems = self.skeleton.skeleton.stems.len();
-        let mut meta =
-            crate::tree_meta(&b.mesh, &self.foliage, &b.bounds, &self.skeleton.envelope, stems, b.holes.len());
+        let mut meta = crate::generated::tree_meta(
+            &b.mesh,
+            &self.foliage,
+            &b.bounds,
+            &self.skeleton.envelope,
+            stems,
+            b.holes.len(),
+        );
         let t = self.times;
         let c = self.changes;
         meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });

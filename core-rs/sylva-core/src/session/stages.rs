@@ -6,10 +6,11 @@ use super::{Bark, Changes, Current, SkeletonOut, StageTimes, PREVIEW_QUALITY};
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
+use crate::generated::ENVELOPE_SAMPLES;
+use crate::growth;
 use crate::mesh::{self, TreeMesh};
 use crate::params::{GrowthMode, LeafParams, MeshParams, SkeletonParams, Stage, TreeParams};
 use crate::skeleton::{self, Skeleton};
-use crate::{growth, ENVELOPE_SAMPLES};
 
 /// The stages an update ran; `None` = reuse the previous result.
 pub(super) struct Fresh {

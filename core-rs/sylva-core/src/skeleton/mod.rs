@@ -1,6 +1,6 @@
 //! Skeleton stage: parameters -> stems (centre polylines with a radius profile), after Weber &
-//! Penn, "Creation and Rendering of Realistic Trees" (SIGGRAPH 1995) with the formulas of
-//! ANCHORS §3: stem lengths (level 1 scaled by the crown ShapeRatio), radii with RatioPower and
+//! Penn, "Creation and Rendering of Realistic Trees" (SIGGRAPH 1995) with the paper's formulas:
+//! stem lengths (level 1 scaled by the crown ShapeRatio), radii with RatioPower and
 //! child <= parent at the attachment point, taper modes, trunk flare, curvature (Curve,
 //! CurveBack, CurveV), DownAngle/Rotate with their negative variants, branch counts with error
 //! diffusion, AttractionUp and Angle Spread.
@@ -267,7 +267,7 @@ impl Builder<'_> {
             }
             None => (stem_len, 0.0),
         };
-        // How many children (W&P §4.3), fractional counts carried over by error diffusion.
+        // How many children (Weber & Penn 1995, §4.3), fractional counts carried over by error diffusion.
         let wanted = match child {
             1 => cp.branches as f32,
             2 => {
@@ -291,7 +291,7 @@ impl Builder<'_> {
             let mut crng = rng.split();
             let offset = start + (stem.length - start) * (i as f32 + 0.5) / count as f32;
             let along = chain_offset + offset;
-            // Crown position r: 1 at the crown base, 0 at the top (ANCHORS §2).
+            // Crown position r: 1 at the crown base, 0 at the top (as in `crate::crown`).
             let crown_span = stem_len - self.crown_base;
             let crown_r = if crown_span > 0.0 { (stem_len - along) / crown_span } else { 0.0 };
             let length = if child == 1 {

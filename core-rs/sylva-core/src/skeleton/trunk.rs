@@ -1,4 +1,5 @@
-//! Trunk extras of the skeleton: the thesis' guide curve (§4.2.1) and the surface roots.
+//! Trunk extras of the skeleton: the surface roots, and the guide curve of the tree-generator
+//! thesis posted on 3dideas.wordpress.com (2008), §4.2.1 "Creating a Guiding Curve".
 
 use super::{Points, Stem, StemKind};
 use crate::math::TAU;
@@ -6,9 +7,9 @@ use crate::params::SkeletonParams;
 use crate::rng::Rng;
 use glam::Vec3;
 
-/// The thesis' guide curve (§4.2.1): the trunk's points keep their heights but move by random
-/// x/z offsets within `Guide Limit` (the first point stays at the origin, the second moves at most
-/// half as far), from their own random stream.
+/// The guide curve (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.2.1): the
+/// trunk's points keep their heights but move by random x/z offsets within `Guide Limit` (the first
+/// point stays at the origin, the second moves at most half as far), from their own random stream.
 pub(super) fn guide_curve(p: &SkeletonParams, points: &mut Points) {
     let mut rng = Rng::new(u64::from(p.seed), "trunk-guide");
     for (i, q) in points.iter_mut().enumerate().skip(1) {

@@ -18,7 +18,7 @@
 //!   has no per-leaf wind record: a shader there takes a leaf's anchor from its instance
 //!   translation, which the baked file no longer has.)
 
-use crate::export::{bake_leaves, BakedLeaves};
+use crate::export::bake::{bake_leaves, BakedLeaves};
 use crate::mesh::{Bounds, WIND_STRIDE};
 use crate::Generated;
 use glam::Vec3;

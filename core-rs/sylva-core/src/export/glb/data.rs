@@ -148,18 +148,20 @@ impl Data<'_> {
             Data::U32(s) => copy_words(out, &s[r], u32::to_le_bytes),
             Data::U16(s) => fill::<_, 1, 2>(out, &s[r], |v| (v[0] as u16).to_le_bytes()),
             Data::Bytes(s) => out.copy_from_slice(&s[r]),
-            Data::Snorm3(s) => crate::export::normals_snorm8_write(&s[3 * r.start..3 * r.end], out),
-            Data::Frames(m) => crate::export::frames_snorm8_write(m, r, out),
-            Data::FramesOf(n, t) => {
-                crate::export::frames_of_snorm8_write(&n[3 * r.start..3 * r.end], &t[4 * r.start..4 * r.end], out)
-            }
+            Data::Snorm3(s) => crate::export::frames::normals_snorm8_write(&s[3 * r.start..3 * r.end], out),
+            Data::Frames(m) => crate::export::frames::frames_snorm8_write(m, r, out),
+            Data::FramesOf(n, t) => crate::export::frames::frames_of_snorm8_write(
+                &n[3 * r.start..3 * r.end],
+                &t[4 * r.start..4 * r.end],
+                out,
+            ),
             Data::BarkExtras(m, colors, wind) => bark_extras_write(m, colors, wind, r, out, second),
             Data::Trs(m, part) => {
                 let m = &m[16 * r.start..16 * r.end];
                 match part {
                     Part::Translation => fill::<_, 16, 12>(out, m, |m| le([m[12], m[13], m[14]])),
-                    Part::Rotation => fill::<_, 16, 16>(out, m, |m| le(crate::export::decompose_rotation(m))),
-                    Part::Scale => fill::<_, 16, 12>(out, m, |m| le(crate::export::decompose_scale(m))),
+                    Part::Rotation => fill::<_, 16, 16>(out, m, |m| le(crate::export::bake::decompose_rotation(m))),
+                    Part::Scale => fill::<_, 16, 12>(out, m, |m| le(crate::export::bake::decompose_scale(m))),
                 }
             }
         }
@@ -178,7 +180,7 @@ fn bark_extras_write(
     wind_out: &mut [u8],
 ) {
     let n = m.vertex_count();
-    let tint = colors.map(|b| crate::export::BarkTint::new(m, &b));
+    let tint = colors.map(|b| crate::export::tint::BarkTint::new(m, &b));
     let w = if m.wind.len() == n * WIND_STRIDE { &m.wind[..] } else { &[][..] };
     let codec = wind.map(|c| (c.0.map(|e| e.offset), c.0.map(|e| e.factor())));
     for base in vertices.clone().step_by(LANES) {

@@ -89,7 +89,8 @@ mod baked;
 mod data;
 mod doc;
 
-use super::{ExportOptions, LeafMode, TexturePngs};
+use super::options::{ExportOptions, LeafMode};
+use super::textures::TexturePngs;
 use crate::foliage::Foliage;
 use crate::mesh::{merge_ranges, ranges, Bounds, Material, TreeMesh, WIND_STRIDE};
 use crate::Generated;
@@ -125,7 +126,7 @@ const WIND_PARAMS_DOC: &str =
 struct Owned {
     bark_pngs: Option<Arc<TexturePngs>>,
     leaf_pngs: Option<Arc<TexturePngs>>,
-    baked: Option<super::BakedLeaves>,
+    baked: Option<super::bake::BakedLeaves>,
     leaf_tangents: Option<Vec<f32>>,
 }
 
@@ -151,14 +152,14 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let normal_maps = opts.textures && opts.normal_maps;
     // Tangents only for the normal maps, and only when asked for.
     let tangents = normal_maps && opts.tangents;
-    let leaf_pngs = if opts.textures && has_leaves { super::leaf_pngs(f) } else { None };
+    let leaf_pngs = if opts.textures && has_leaves { super::textures::leaf_pngs(f) } else { None };
     let instanced = has_leaves && opts.leaves == LeafMode::Instanced;
     let owned = Owned {
-        bark_pngs: (has_bark && opts.textures).then(|| super::bark_pngs(g.bark, opts.bark_texture_size)),
+        bark_pngs: (has_bark && opts.textures).then(|| super::textures::bark_pngs(g.bark, opts.bark_texture_size)),
         baked: (has_leaves && opts.leaves == LeafMode::Baked)
             .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads)),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
-            .then(|| super::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
+            .then(|| super::frames::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
         leaf_pngs,
     };
     let mut doc = Doc::default();

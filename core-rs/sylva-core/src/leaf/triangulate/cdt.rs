@@ -5,7 +5,7 @@
 //! half a spacing away from the outline. Every flip checks that the new quad diagonal lies
 //! inside the quad, so no step can fold the mesh.
 
-use super::{Method, Triangulation};
+use super::triangulation::{Method, Triangulation};
 use crate::leaf::geom::{bounds, dist_to_segment, orient, polygon_area};
 use glam::Vec2;
 

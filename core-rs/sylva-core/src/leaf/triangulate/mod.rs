@@ -1,46 +1,25 @@
 //! Stage 3, triangulation (Leaf Generation guide §3): the blade filled with triangles.
 //!
-//! The guide's method comes first: **concentric rings** shrinking toward a centre, joined by
-//! triangle strips, with a fan to the centre ([`rings`]). It is valid exactly when the outline
-//! is star-shaped about the centre, so the centre is the candidate deepest inside the outline's
-//! kernel, and every ring triangle is checked. Where no such centre exists (a waisted spline
-//! outline with deep teeth) or a triangle would fold, a robust method takes over ([`cdt`]):
-//! ear clipping of the outline, Lawson flips to a constrained Delaunay triangulation, and
-//! interior points inserted with Delaunay legalisation.
+//! The method of Mtree's *Leaf Generation Guide* (§3) comes first: **concentric rings** shrinking
+//! toward a centre, joined by triangle strips, with a fan to the centre ([`rings`]). It is valid
+//! exactly when the outline is star-shaped about the centre, so the centre is the candidate deepest
+//! inside the outline's kernel, and every ring triangle is checked. Where no such centre exists (a
+//! waisted spline outline with deep teeth) or a triangle would fold, a robust method takes over
+//! ([`cdt`]): ear clipping of the outline, Lawson flips to a constrained Delaunay triangulation,
+//! and interior points inserted with Delaunay legalisation.
 //!
 //! Either way the outline points are the first vertices and the outline edges are exactly the
 //! boundary edges; [`validate`] checks that the result is an embedding of the blade.
 
 pub mod cdt;
 pub mod rings;
+mod triangulation;
+
+pub use triangulation::{Method, Triangulation};
 
 use crate::leaf::geom::{orient, polygon_area, DVec2};
 use crate::leaf::margin::Outline;
 use glam::Vec2;
-use serde::Serialize;
-
-/// Which method produced a triangulation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Method {
-    /// Concentric rings and a centre fan.
-    Rings,
-    /// Ear clipping, constrained Delaunay flips and interior points.
-    Cdt,
-}
-
-/// A triangulated blade in the leaf plane.
-#[derive(Clone, Debug)]
-pub struct Triangulation {
-    /// Vertices: the outline points first (same order), then interior points.
-    pub vertices: Vec<Vec2>,
-    /// Counter-clockwise triangles (indices into `vertices`).
-    pub triangles: Vec<[u32; 3]>,
-    /// The method used.
-    pub method: Method,
-    /// Number of outline vertices at the start of `vertices`.
-    pub boundary: usize,
-}
 
 /// Stage 3: rings about the deepest kernel point when the outline is star-shaped, else the
 /// robust method. `rings` (1..16) sets the interior detail of both.

@@ -2,10 +2,10 @@
 //! `1 - k/R` about a centre `c`; neighbouring rings are joined by strips of two triangles per
 //! outline edge (split along the shorter diagonal) and the innermost ring by a fan to `c`.
 //! Each strip quad lies inside the wedge `c, p_i, p_i+1`, so the result is valid whenever every
-//! wedge is counter-clockwise, i.e. `c` lies in the outline's kernel (ANCHORS §5 trap: only
-//! star-shaped outlines). [`kernel_center`] picks such a centre or reports there is none.
+//! wedge is counter-clockwise, i.e. `c` lies in the outline's kernel (rings alone only
+//! triangulate star-shaped outlines). [`kernel_center`] picks such a centre or reports there is none.
 
-use super::{Method, Triangulation};
+use super::triangulation::{Method, Triangulation};
 use crate::leaf::geom::orient;
 use glam::Vec2;
 

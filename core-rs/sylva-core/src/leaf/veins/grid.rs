@@ -1,4 +1,4 @@
-//! Uniform grids for the space colonization (ANCHORS §4: a grid, never all-pairs): a static
+//! Uniform grids for the space colonization (a grid, never all-pairs searches): a static
 //! grid built once by counting sort for the auxin sources, and a growing grid (a linked list per
 //! cell) for the vein nodes.
 

@@ -1,8 +1,8 @@
-//! Primary veins, laid down before space colonization fills the rest (ANCHORS §9: pinnate,
-//! palmate and dichotomous venation; Runions et al. 2005 grow their networks from such a
-//! given skeleton too). Every vein is a polyline of nodes spaced by the growth step, cut where
-//! it would leave the blade; a node's `born` is its distance in steps from the petiole, so the
-//! step slider draws the primaries first.
+//! Primary veins, laid down before space colonization fills the rest (pinnate, palmate and
+//! dichotomous venation, Ellis et al. 2009, *Manual of Leaf Architecture*; Runions et al. 2005 grow
+//! their networks from such a given skeleton too). Every vein is a polyline of nodes spaced by the
+//! growth step, cut where it would leave the blade; a node's `born` is its distance in steps from
+//! the petiole, so the step slider draws the primaries first.
 //!
 //! * **Pinnate**: a straight midrib from the petiole `(0, 0)` to the tip, and secondary veins
 //!   along it: one per lobe, ending at the lobe's apex (oak), or on an unlobed blade Secondary
@@ -18,7 +18,7 @@
 //!   in two (halving the sector) whenever the sector's width at its distance exceeds twice the
 //!   vein spacing (2 × Kill Distance), so the veins stay evenly spaced as the fan widens.
 
-use super::{VeinGraph, VeinNode, NONE};
+use super::graph::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::outline::Shape;
 use crate::leaf::raster::Mask;

@@ -1,4 +1,5 @@
-//! Spline venation (blog "OSL leaf veins shader", arcuate / pinnate): a straight midrib from
+//! Spline venation (Michel Anders 2013, "OSL leaf veins shader for Cycles",
+//! blog.michelanders.nl; arcuate / pinnate): a straight midrib from
 //! the petiole toward the tip and `Veins` lateral veins per side, each a quadratic spline
 //! `P0 → P1 → P2`:
 //!
@@ -11,7 +12,7 @@
 //! Nodes are spaced by the growth step; a node's `born` is its distance in steps from the
 //! petiole along the veins, so the step slider draws the midrib first and the laterals after.
 
-use super::{VeinGraph, VeinNode, NONE};
+use super::graph::{VeinGraph, VeinNode, NONE};
 use crate::leaf::margin::Outline;
 use crate::leaf::raster::Mask;
 use crate::params::LeafParams;

@@ -1,4 +1,4 @@
-//! Procedural bark textures by species type (ANCHORS §10), baked in the core (no downloaded
+//! Procedural bark textures by species type (`docs/look.md`, "Bark types"), baked in the core (no downloaded
 //! images): for each [`BarkType`] a tileable colour map, tangent-space normal map (alpha =
 //! height) and an occlusion-roughness-metal map, so the viewer and the GLB / OBJ exports show the
 //! same bark. The patterns themselves are in [`patterns`]; the tileable noise in [`noise`].

@@ -1,4 +1,4 @@
-//! The four bark patterns of ANCHORS §10, each a tileable height field with its colour and
+//! The four bark patterns of `docs/look.md` ("Bark types"), each a tileable height field with its colour and
 //! roughness at a point of the unit tile (`u` around the stem, `v` along it):
 //!
 //! * **Furrowed** (oaks, ash, black locust): flat-topped ridges that meander and interlace along
@@ -11,7 +11,7 @@
 //!   diamond network, with fine fibres along the stem.
 
 use super::noise::{cells, fbm, lattice, smoothstep, value};
-use super::BarkType;
+use crate::params::BarkType;
 
 /// One texel of a pattern: height 0 (deepest) to 1, linear RGB 0..1, roughness 0..1.
 #[derive(Clone, Copy, Debug)]

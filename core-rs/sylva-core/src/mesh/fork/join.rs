@@ -1,7 +1,7 @@
 //! # Building one fork
 //!
-//! The join of [`super`] (the maple page's ramiform, reference 003; see the module notes there),
-//! in named steps:
+//! The join of [`super`] (the ramiform of *Modeling the Mighty Maple for Web*
+//! (ibiblio.org/e-notes); see the module notes there), in named steps:
 //!
 //! 1. [`Fork::new`]: the layout. Rings `S`, `Jo`, `Jc` and their frames, the inner half of `S`
 //!    (the `n/2` columns facing the clone), where the new vertices go.
@@ -15,8 +15,8 @@
 
 use super::{seam_copies, split_ring, RISES};
 use crate::math::{atan2, cos, sin, unit_or, PI, TAU};
-use crate::mesh::tube::Frame;
-use crate::mesh::weld::{well_wound, Join};
+use crate::mesh::junction::{well_wound, Join};
+use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_RADIUS, WIND_STRIDE};
 use glam::Vec3;
 

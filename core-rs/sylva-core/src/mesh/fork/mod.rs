@@ -1,9 +1,9 @@
 //! # Smooth Y forks
 //!
-//! A split clone that leaves its original below about 30° runs inside it for many radii, so it
-//! has no footprint ([`super::weld`]); the original's tube splits in two instead. The shape is the
-//! maple page's **ramiform** (reference 003: two twig-like side patches and a smooth top part), a
-//! C0 simplification of Bloomenthal's node.
+//! A split clone that leaves its original below about 30° runs inside it for many radii, so it has
+//! no footprint ([`super::weld`]); the original's tube splits in two instead. The shape is the
+//! **ramiform** of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes) (two twig-like side
+//! patches and a smooth top part), a C0 simplification of Bloomenthal's node.
 //!
 //! ## Rings and patches
 //!
@@ -25,7 +25,7 @@
 //!
 //! Edge-manifold by construction (every edge of `S`, `Jo` and `Jc` is used once more, the seam's
 //! by both crotch rows). Every new triangle must be non-degenerate and wound with its normals
-//! ([`super::weld::well_wound`]), else the clone falls back to a separate tube. The original
+//! ([`super::junction::well_wound`]), else the clone falls back to a separate tube. The original
 //! keeps no rings between `S` and `Jo` ([`keep_gaps`]) and no other footprint may use those rows;
 //! triangles across the texture seam get vertex copies a turn on ([`MeshBuilder::unwrap_u`]).
 
@@ -33,8 +33,8 @@ mod join;
 
 pub(crate) use join::join;
 
-use super::tube::Frame;
-use super::weld::{surface_bound, Junction, MAX_START};
+use super::junction::{surface_bound, Junction, MAX_START};
+use super::stem::{Frame, StemMesh};
 use super::MeshBuilder;
 use crate::math::PI;
 use crate::params::MeshParams;
@@ -184,7 +184,7 @@ pub(crate) fn keep_gaps(feet: &[Junction], ts: &mut Vec<f32>, first: usize) {
 /// the original's) and the `v` of `S` (so the bark runs on), given the original's swept tube.
 pub(crate) fn clone_start(
     j: &Junction,
-    parent: &super::tube::StemMesh,
+    parent: &StemMesh,
     ts: &[f32],
     frames: &[Frame],
     out: &MeshBuilder,
@@ -195,7 +195,7 @@ pub(crate) fn clone_start(
 }
 
 /// Index (within the original's tube) of ring `S`, followed by ring `Jo`.
-fn split_ring(j: &Junction, pm: &super::tube::StemMesh, ts: &[f32]) -> Option<usize> {
+fn split_ring(j: &Junction, pm: &StemMesh, ts: &[f32]) -> Option<usize> {
     let pts = &ts[pm.ring0..pm.ring0 + pm.rings as usize];
     let rs = pts.partition_point(|&x| x < j.t_lo);
     (rs + 1 < pts.len() && pts[rs] == j.t_lo && pts[rs + 1] == j.t_hi).then_some(rs)

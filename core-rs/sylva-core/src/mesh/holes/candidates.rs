@@ -1,5 +1,5 @@
-//! Where holes can go (the thesis, §4.4): candidates of both methods on each eligible stem's
-//! patch.
+//! Where holes can go (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.4):
+//! candidates of both methods on each eligible stem's patch.
 //! * *surface* (§4.4.1): every vertex gets its outside edge angle, `180° - 2·mean asin(e·n)` over
 //!   its edges `e` (unit) and its normal `n`: 180° on a flat surface, more on a convex one, less
 //!   in a concave valley (flutes, lobes, buttresses). Vertices more than [`CONCAVE_DEG`] below

@@ -1,17 +1,16 @@
-//! The cavity of one hole (the thesis, §4.3: the extrude and subdivide steps of the 3ds Max
-//! recipe): the boundary loop gets a rolled callus lip (three rings rising to [`LIP`] × the
-//! opening's half-size above the surface and curling over the edge, along a round copy of the
-//! loop, which on a coarse mesh zigzags around the ellipse), then a chamfered ring (inset toward the loop's centre and bevelled
-//! inward), and that rim is extruded inward along minus the surface normal into
-//! [`CAVITY_RINGS`] rings that narrow toward a closed bottom `hole_depth` × local radius below the
-//! surface; the cavity rings are then smoothed by a few Laplacian passes (the thesis' final
-//! subdivision, which softens the edges). New normals are area-weighted face normals, so they
-//! face into the cavity (out of the wood); `u` follows the rim, `v` continues the bark's at one
-//! unit per circumference.
+//! The cavity of one hole (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.3
+//! "Hole Generation": the extrude and subdivide steps of the 3ds Max recipe): the boundary loop
+//! gets a rolled callus lip (three rings rising to [`LIP`] × the opening's half-size above the
+//! surface and curling over the edge, along a round copy of the loop, which on a coarse mesh
+//! zigzags around the ellipse), then a chamfered ring (inset toward the loop's centre and bevelled
+//! inward), and that rim is extruded inward along minus the surface normal into [`CAVITY_RINGS`]
+//! rings that narrow toward a closed bottom `hole_depth` × local radius below the surface; the
+//! cavity rings are then smoothed by a few Laplacian passes (that recipe's final subdivision, which
+//! softens the edges). New normals are area-weighted face normals, so they face into the cavity
+//! (out of the wood); `u` follows the rim, `v` continues the bark's at one unit per circumference.
 
-use super::cut::Region;
 use super::patch::{nrm, pos};
-use super::{Hole, CAVITY_RINGS, CHAMFER, LIP, SMOOTH_PASSES};
+use super::{Hole, Region, CAVITY_RINGS, CHAMFER, LIP, SMOOTH_PASSES};
 use crate::math::{unit_or, TAU};
 use crate::mesh::TreeMesh;
 use glam::Vec3;

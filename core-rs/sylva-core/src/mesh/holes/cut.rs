@@ -1,4 +1,5 @@
-//! Cutting a hole into the mesh (the thesis, §4.3: the chamfer, connect, delete steps of the
+//! Cutting a hole into the mesh (the tree-generator thesis posted on 3dideas.wordpress.com (2008), §4.3
+//! "Hole Generation": the chamfer, connect, delete steps of the
 //! 3ds Max recipe): the faces around a candidate within the hole's ellipse are selected and must
 //! form a topological disk (one boundary loop, Euler characteristic 1); regions touching a welded
 //! copy are dropped; a planned cavity is written over the removed faces, its new vertices reusing
@@ -7,26 +8,9 @@
 
 use super::cavity::{Cavity, Id};
 use super::patch::{bits, pos, Patch};
-use super::{Source, ELONGATION};
+use super::{Region, ELONGATION};
 use crate::mesh::{TreeMesh, WIND_STRIDE};
 use glam::Vec3;
-
-/// A selected disk of faces around a candidate.
-pub(super) struct Region {
-    pub(super) patch: usize,
-    pub(super) centre: u32,
-    /// Triangle indices of the faces to remove.
-    pub(super) faces: Vec<u32>,
-    /// Boundary loop, directed as in the removed faces (counter-clockwise from outside).
-    pub(super) lp: Vec<u32>,
-    /// Vertices used only by removed faces (their slots are reused).
-    pub(super) interior: Vec<u32>,
-    /// Opening half-width (m) and cavity depth (m).
-    pub(super) radius: f32,
-    pub(super) depth: f32,
-    pub(super) local_radius: f32,
-    pub(super) source: Source,
-}
 
 /// Select the faces within the hole's ellipse around `centre`; None unless they form a disk.
 pub(super) fn select(

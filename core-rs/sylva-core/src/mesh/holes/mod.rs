@@ -1,7 +1,9 @@
 //! # Tree holes
 //!
 //! A post-process on the bark mesh that cuts cavities into the trunk and into level-1 stems thick
-//! enough for them ([`eligible`]), after the thesis (§4.3–4.4).
+//! enough for them ([`eligible`]), after the tree-hole chapter of the tree-generator thesis posted
+//! on 3dideas.wordpress.com (2008): §4.3 "Hole Generation" and §4.4 "Recommended Methods for Hole
+//! Generation".
 //!
 //! ## Where (§4.4)
 //!
@@ -39,7 +41,7 @@ use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
 use candidates::{all_candidates, children};
 use cavity::{plan_cavity, Cavity};
-use cut::{commit, drop_coincident, drop_rings, select, write_triangles, Region};
+use cut::{commit, drop_coincident, drop_rings, select, write_triangles};
 use glam::Vec3;
 use patch::{nrm, patches, pos};
 use std::ops::Range;
@@ -102,6 +104,23 @@ pub struct Hole {
     pub depth: f32,
 }
 
+/// A selected disk of faces around a candidate.
+pub(super) struct Region {
+    pub(super) patch: usize,
+    pub(super) centre: u32,
+    /// Triangle indices of the faces to remove.
+    pub(super) faces: Vec<u32>,
+    /// Boundary loop, directed as in the removed faces (counter-clockwise from outside).
+    pub(super) lp: Vec<u32>,
+    /// Vertices used only by removed faces (their slots are reused).
+    pub(super) interior: Vec<u32>,
+    /// Opening half-width (m) and cavity depth (m).
+    pub(super) radius: f32,
+    pub(super) depth: f32,
+    pub(super) local_radius: f32,
+    pub(super) source: Source,
+}
+
 /// Whether stem `i` can carry holes: the trunk records whose base is at least `hole_min_radius`
 /// thick, and level-1 stems (not roots, not Bezier twigs) at least twice that (a thinner branch
 /// would be densified along its whole length for a hole near its base only). The tube densifies these (rings about
@@ -125,7 +144,7 @@ pub fn eligible(skeleton: &Skeleton, p: &MeshParams, twigs: &[bool]) -> Vec<bool
         .collect()
 }
 
-/// Make an eligible stem's mesh dense enough for holes, as the thesis cuts them into a dense
+/// Make an eligible stem's mesh dense enough for holes, as that chapter (§4.3) cuts them into a dense
 /// mesh: at least enough sides for an opening to span five columns (at most 96), and rings added
 /// to its plan (`ts[start..]`, sorted, the last one next to the tip) about one side apart wherever
 /// the stem is thick enough for a hole. Returns the number of sides to use.
@@ -149,7 +168,7 @@ pub(crate) fn densify(stem: &Stem, sides: u32, p: &MeshParams, ts: &mut Vec<f32>
         return sides;
     }
     ts[start..].sort_by(f32::total_cmp);
-    super::tube::drop_close(ts, start);
+    super::stem::drop_close(ts, start);
     sides
 }
 
@@ -226,7 +245,7 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
         if !clear {
             continue;
         }
-        // The thesis shrinks a selection that is not a clean disk; on a coarse mesh a larger one
+        // The hole recipe (§4.3) shrinks a selection that is not a clean disk; on a coarse mesh a larger one
         // may be needed, so a few sizes around the asked one are tried.
         let mut found = None;
         for f in [1.0, 0.8, 1.25, 1.6, 2.0] {

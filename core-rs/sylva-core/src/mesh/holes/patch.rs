@@ -1,7 +1,8 @@
-//! The hole-eligible stems' parts of the bark mesh (the thesis, §4.3): each eligible stem's
-//! block of vertices, the faces inside it, and which of its vertices may be cut — inside the
-//! stem's block, used by no triangle reaching outside the block (junction bridges), on no open
-//! edge, and sharing their position with no other vertex (UV seam, cap ring, welded copies).
+//! The hole-eligible stems' parts of the bark mesh (the tree-generator thesis posted on
+//! 3dideas.wordpress.com (2008), §4.3): each eligible stem's block of vertices, the faces inside
+//! it, and which of its vertices may be cut — inside the stem's block, used by no triangle reaching
+//! outside the block (junction bridges), on no open edge, and sharing their position with no other
+//! vertex (UV seam, cap ring, welded copies).
 
 use crate::mesh::TreeMesh;
 use crate::skeleton::{Skeleton, Stem};

@@ -18,9 +18,10 @@ mod plan;
 mod rings;
 mod sweep;
 
-pub(crate) use rings::drop_close;
-pub use sweep::{stem_winds, StemWind};
+pub use super::stem::{sides_for, StemWind};
+pub use sweep::stem_winds;
 
+use super::stem::{Base, Frame, StemMesh};
 use super::{fork, fork_rows, twig, weld, Material, MeshBuilder, TreeMesh};
 use crate::error::SylvaError;
 use crate::params::MeshParams;
@@ -29,67 +30,6 @@ use glam::Vec3;
 use plan::Plan;
 use std::ops::Range;
 use sweep::{circle, emit, sweep, sweep_trunk, TrunkProfile};
-
-/// What one stem's sweep wrote, for the junctions of its children and the index pass.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct StemMesh {
-    /// First vertex of ring 0.
-    pub first: u32,
-    /// Number of rings.
-    pub rings: u32,
-    /// Sides per ring (a ring holds `sides + 1` vertices, the seam duplicated).
-    pub sides: u32,
-    /// Index of ring 0 in the shared ring-parameter and frame buffers.
-    pub ring0: usize,
-    /// The apex closing the tip.
-    pub apex: u32,
-    /// How the base is closed.
-    pub base: Base,
-    /// Offset of this stem's quads in the claimed-quad bitmap (`(rings - 1) * sides` entries).
-    pub claim: usize,
-    /// `v` of ring 0.
-    pub v0: f32,
-}
-
-impl StemMesh {
-    /// The seam twin of ring vertex `i` a whole turn of `u` on (`turns` = 1: a ring's first
-    /// vertex, `u` 0, to its last, `u` 1; -1 the other way), if `i` is one of this stem's.
-    pub(crate) fn seam_twin(&self, i: u32, turns: i32) -> Option<u32> {
-        let stride = self.sides + 1;
-        let k = i.checked_sub(self.first).filter(|&k| k < self.rings * stride)?;
-        match (k % stride, turns) {
-            (0, 1) => Some(i + self.sides),
-            (c, -1) if c == self.sides => Some(i - self.sides),
-            _ => None,
-        }
-    }
-}
-
-/// How a stem's base ring is closed.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Base {
-    /// The trunk: a flat downward cap on its own copy of ring 0 (first vertex of the copy).
-    Trunk(u32),
-    /// A fan from ring 0 to this centre vertex (a separate tube sitting in its parent).
-    Cap(u32),
-    /// Welded into the parent's surface ([`super::weld`]).
-    Welded,
-    /// Not closed yet: a branch's base between its sweep and its weld or cap (never left so
-    /// for the index pass).
-    Open,
-}
-
-/// Centre and orientation of one swept ring: column `j` of the ring lies along
-/// `normal cos(2πj/sides) + (tangent × normal) sin(2πj/sides)`.
-#[derive(Clone, Copy, Debug, Default)]
-pub(crate) struct Frame {
-    /// Ring centre.
-    pub centre: Vec3,
-    /// Unit tangent of the centre curve.
-    pub tangent: Vec3,
-    /// Unit normal, transported along the stem.
-    pub normal: Vec3,
-}
 
 /// Counts of the junction pass.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -119,12 +59,6 @@ impl WeldStats {
             self.split_fallbacks += usize::from(clone);
         }
     }
-}
-
-/// Number of sides around a stem of base radius `r` (m) at the given quality.
-pub fn sides_for(r: f32, quality: f32, lobes: u32) -> u32 {
-    let base = (quality * (3.0 + 30.0 * r.max(0.0).sqrt())).round() as u32;
-    base.max((4 * lobes).min(96)).clamp(3, 96)
 }
 
 /// Sweep all stems into bark tubes. Fails with a budget error before allocating if the vertex

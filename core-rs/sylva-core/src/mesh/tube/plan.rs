@@ -4,9 +4,9 @@
 //! if it fell back to a separate tube).
 
 use super::rings::plan_rings;
-use super::sides_for;
 use crate::error::SylvaError;
 use crate::math::TAU;
+use crate::mesh::stem::sides_for;
 use crate::mesh::{fork, fork_rows, holes, twig, weld};
 use crate::params::MeshParams;
 use crate::skeleton::{budget_error, Skeleton, StemKind};

@@ -5,6 +5,7 @@
 //! ring).
 
 use crate::math::{normalize_or_hw, rad, HwSqrt};
+use crate::mesh::stem::drop_close;
 use crate::mesh::weld;
 use crate::skeleton::Stem;
 use glam::Vec3;
@@ -99,18 +100,4 @@ pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
-}
-
-/// Drops from the sorted ring positions `ts[first..]` every one within 1e-4 of the one kept before
-/// it (rings closer than that would give degenerate quads).
-pub(crate) fn drop_close(ts: &mut Vec<f32>, first: usize) {
-    let rings = &mut ts[first..];
-    let mut n = 0;
-    for i in 0..rings.len() {
-        if n == 0 || rings[i] - rings[n - 1] > 1e-4 {
-            rings[n] = rings[i];
-            n += 1;
-        }
-    }
-    ts.truncate(first + n);
 }

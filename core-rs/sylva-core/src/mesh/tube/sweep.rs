@@ -7,8 +7,8 @@
 //! wind constants the sweep records, and the index pass writing each stem's quads (skipping
 //! claimed ones) and fans.
 
-use super::{Base, Frame, StemMesh};
 use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
+use crate::mesh::stem::{Base, Frame, StemMesh, StemWind};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{MeshBuilder, VertexBlock, WIND_STRIDE};
 use crate::params::MeshParams;
@@ -71,33 +71,6 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
             }
         }
         Base::Welded | Base::Open => {}
-    }
-}
-
-/// Per-stem constants of the wind attributes ([`TreeMesh::wind`](crate::mesh::TreeMesh::wind)).
-#[derive(Clone, Copy, Debug)]
-pub struct StemWind {
-    /// The stem's base point (the pivot it sways about).
-    pub pivot: Vec3,
-    /// Branch level.
-    pub level: f32,
-    /// Random phase 0..1, one per stem.
-    pub phase: f32,
-    /// Path length from the root to the stem's base (m).
-    pub distance: f32,
-    /// Trunk base radius (m), the reference for stiffness.
-    pub trunk_radius: f32,
-}
-
-impl StemWind {
-    /// The wind record of a ring at fraction `t` of `stem` with local radius `radius`.
-    /// Stiffness is `sqrt(min(1, radius / trunk_radius))`: 1 at the trunk base (and in the flare),
-    /// about 0.3 where a stem is a tenth of the trunk, 0.1 at a hundredth: thin twigs sway most.
-    #[inline]
-    pub fn record(&self, stem: &Stem, t: f32, radius: f32) -> [f32; WIND_STRIDE] {
-        let stiffness = (radius / self.trunk_radius).clamp(0.0, 1.0).sqrt();
-        let p = self.pivot;
-        [p.x, p.y, p.z, self.level, self.phase, stiffness, self.distance + t * stem.length, radius]
     }
 }
 
@@ -328,8 +301,8 @@ fn write_trunk_cap(block: &mut VertexBlock, cap: usize, circle: &[(f32, f32, f32
 }
 
 /// Cross-section settings of a complex trunk (see [`crate::mesh::trunk`]): refinement circles whose
-/// offset and radius vary smoothly with height, W&P lobes on top, and the maple page's base
-/// ripple `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
+/// offset and radius vary smoothly with height, Weber & Penn lobes on top, and the base
+/// ripple of *Modeling the Mighty Maple for Web*, `R(u) = R0 (1 + a sin(7 theta))` fading out over the flare zone.
 pub(super) struct TrunkProfile {
     offset: f32,
     radius: f32,

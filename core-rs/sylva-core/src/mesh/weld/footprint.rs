@@ -4,13 +4,39 @@
 //! from the parent's local cylinder ([`Meeting::guess`]), then a walk across the quads around it
 //! ([`Meeting::walk`]), else a search of every quad of a window around the estimate.
 
-use super::join::{Join, Scratch};
 use super::{asin, REACH};
 use crate::math::{atan2, unit_or, HwSqrt, TAU};
-use crate::mesh::tube::Frame;
+use crate::mesh::junction::Join;
+use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_STIFFNESS, WIND_STRIDE};
 use glam::{Vec2, Vec3};
 use std::ops::Range;
+
+/// Reused buffers of [`join`](super::join()).
+#[derive(Default)]
+pub(crate) struct Scratch {
+    pub(super) hole: Vec<u32>,
+    pub(super) angle: Vec<f32>,
+    pub(super) ring: Vec<f32>,
+    /// Collar points, loop by loop (`loops × columns`), and the curves' directions there.
+    pub(super) pos: Vec<Vec3>,
+    pub(super) along: Vec<Vec3>,
+    /// Length of each column's collar curve's chord.
+    pub(super) chord: Vec<f32>,
+    pub(crate) tris: Vec<u32>,
+    /// The footprint loop, one point per column of the junction ring.
+    pub(super) foot: Vec<FootPoint>,
+    /// The parent quad under each footprint point, and where in it.
+    pub(super) cells: Vec<Cell>,
+    /// The collar's own normal at each footprint point.
+    pub(super) collar_n: Vec<Vec3>,
+    /// The hole's vertices in the parent's surface coordinates.
+    pub(super) flat: Vec<Vec2>,
+    /// The footprint loop in the parent's surface coordinates.
+    pub(super) foot_flat: Vec<Vec2>,
+    /// The search window's triangles ([`footprint`]).
+    pub(super) window: Vec<WindowTri>,
+}
 
 /// A block of the parent's quads: rows `row_lo..row_hi` along it, columns `col_lo..col_hi`
 /// around it (columns may run past the seam: they are taken modulo the sides).

@@ -4,69 +4,20 @@
 //! 1. [`Meeting::new`]: the parent's rows and columns around the footprint;
 //! 2. [`footprint::find`]: the footprint loop and the quads under it;
 //! 3. [`Collar::curves`]: one cubic Bezier per column from the footprint loop to the junction
-//!    ring, leaving the parent tangentially and arriving along the child's axis (after the maple
-//!    page's Bezier cylinders, reference 003);
+//!    ring, leaving the parent tangentially and arriving along the child's axis (after the Bezier
+//!    cylinders of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes));
 //! 4. [`Collar::write`] and [`Collar::quads`]: the collar loops' vertices and quads;
 //! 5. [`open_and_zip`]: the crease normals, the hole (grown where the loop comes close to its
 //!    edge) and the zip ([`super::zip`]); every new triangle is checked ([`well_wound`]) before
 //!    anything is committed.
 
-use super::footprint::{self, claim_index, free, Cell, FootPoint, Meeting, Rect, WindowTri};
+use super::footprint::{self, claim_index, free, Cell, FootPoint, Meeting, Rect, Scratch};
 use super::zip::zip_hole;
-use super::Junction;
 use crate::math::{unit_or, HwSqrt, TAU};
-use crate::mesh::tube::{Frame, StemMesh, StemWind};
+use crate::mesh::junction::{well_wound, Join};
+use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_STRIDE};
-use crate::skeleton::Stem;
-use glam::{Vec2, Vec3};
-
-/// Everything [`join`] reads.
-pub(crate) struct Join<'a> {
-    /// The planned junction.
-    pub junction: &'a Junction,
-    /// The parent's swept tube.
-    pub parent: &'a StemMesh,
-    /// The parent stem.
-    pub parent_stem: &'a Stem,
-    /// The child's swept tube (ring 0 is its junction ring).
-    pub child: &'a StemMesh,
-    /// The child stem.
-    pub child_stem: &'a Stem,
-    /// Ring parameters of all stems.
-    pub ts: &'a [f32],
-    /// Ring frames of all stems.
-    pub frames: &'a [Frame],
-    /// The child's wind constants.
-    pub wind: &'a StemWind,
-    /// Collar loops between hole and junction ring.
-    pub loops: usize,
-}
-
-/// Reused buffers of [`join`].
-#[derive(Default)]
-pub(crate) struct Scratch {
-    pub(super) hole: Vec<u32>,
-    pub(super) angle: Vec<f32>,
-    pub(super) ring: Vec<f32>,
-    /// Collar points, loop by loop (`loops × columns`), and the curves' directions there.
-    pos: Vec<Vec3>,
-    along: Vec<Vec3>,
-    /// Length of each column's collar curve's chord.
-    chord: Vec<f32>,
-    pub(crate) tris: Vec<u32>,
-    /// The footprint loop, one point per column of the junction ring.
-    pub(super) foot: Vec<FootPoint>,
-    /// The parent quad under each footprint point, and where in it.
-    pub(super) cells: Vec<Cell>,
-    /// The collar's own normal at each footprint point.
-    collar_n: Vec<Vec3>,
-    /// The hole's vertices in the parent's surface coordinates.
-    pub(super) flat: Vec<Vec2>,
-    /// The footprint loop in the parent's surface coordinates.
-    pub(super) foot_flat: Vec<Vec2>,
-    /// The search window's triangles ([`footprint`]).
-    pub(super) window: Vec<WindowTri>,
-}
+use glam::Vec3;
 
 /// Steps 2 to 5: open the parent, add the collar loops and zip them in. On success the hole's
 /// quads are marked in `claimed`, the new vertices stay in `out` and the new triangles go to
@@ -277,14 +228,4 @@ fn grown(j: &Join, m: &Meeting, found: Rect, cells: &[Cell], grow: bool, claimed
         col_hi += 1;
     }
     Rect { row_lo, row_hi, col_lo, col_hi }
-}
-
-/// True if every triangle of `tris` is non-degenerate and wound with its vertex normals (its
-/// face normal on the side of their sum).
-pub(crate) fn well_wound(out: &MeshBuilder, tris: &[u32]) -> bool {
-    tris.chunks_exact(3).all(|t| {
-        let ((a, na), (b, nb), (c, nc)) = (out.vertex_at(t[0]), out.vertex_at(t[1]), out.vertex_at(t[2]));
-        let cross = (b - a).cross(c - a);
-        cross.length_squared() > 0.0 && cross.dot(na + nb + nc) > 0.0
-    })
 }

@@ -2,8 +2,8 @@
 //!
 //! A level-1 or level-2 branch is joined into its parent's surface instead of being buried in it,
 //! so trunk + level 1 + level 2 form one closed, edge-manifold surface. The junction is a short
-//! **Bezier cylinder** from a loop on the parent to the branch's first ring, after the maple
-//! page's twigs and ramiforms (reference 003).
+//! **Bezier cylinder** from a loop on the parent to the branch's first ring, after the twigs
+//! and ramiforms of *Modeling the Mighty Maple for Web* (ibiblio.org/e-notes).
 //!
 //! ## Steps
 //!
@@ -38,55 +38,21 @@ mod footprint;
 mod join;
 mod zip;
 
-pub(crate) use join::{join, well_wound, Join, Scratch};
+use super::junction::surface_bound;
+pub(crate) use super::junction::{Join, Junction, MAX_START};
+pub(crate) use footprint::Scratch;
+pub(crate) use join::join;
 
-use crate::math::{atan2, unit_or, PI, TAU};
+use crate::math::{atan2, unit_or, TAU};
 use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem, StemKind};
 
 /// Smallest sine of the angle between a child and its parent that is welded (about 20°): below
 /// it the child leaves the parent's surface too far along its own length.
 const MIN_SIN: f32 = 0.17;
-/// The junction ring must sit in the first half of the child.
-pub(crate) const MAX_START: f32 = 0.5;
 /// How far (in footprint lengths) the parent's nearest ring below and above a footprint may be:
 /// the hole spans the rows between them. Farther rings get a ring added at the footprint's end.
 pub(crate) const REACH: f32 = 1.0;
-
-/// Where a welded child starts and where it opens its parent (fractions of each stem).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Junction {
-    /// The parent stem.
-    pub parent: u32,
-    /// Fraction of the child where its junction ring (its first ring) sits.
-    pub t_start: f32,
-    /// Fractions of the parent where the footprint starts and ends.
-    pub t_lo: f32,
-    /// See `t_lo`.
-    pub t_hi: f32,
-    /// Radius of the footprint (the collar's base) (m).
-    pub foot: f32,
-    /// Estimated azimuth of the footprint around the parent (radians; only compared between
-    /// footprints close along the same parent).
-    pub phi: f32,
-    /// Half-width of the footprint around the parent (radians).
-    pub beta: f32,
-    /// A shallow split clone forked from its original ([`super::fork`]): `t_lo` is the split
-    /// ring on the original, `t_hi` the original's next ring, and no other ring lies between.
-    pub fork: bool,
-}
-
-impl Junction {
-    /// True if two footprints on the same parent are closer around it than their half-widths
-    /// plus `pad` (radians).
-    pub(crate) fn side_by_side(&self, other: &Junction, pad: f32) -> bool {
-        let mut d = (self.phi - other.phi).abs() % TAU;
-        if d > PI {
-            d = TAU - d;
-        }
-        d < self.beta + other.beta + pad
-    }
-}
 
 /// True for the stems the junctions weld: levels 1 and 2 on their parents and split clones up to
 /// level 2 (a clone has its original's level).
@@ -98,14 +64,6 @@ pub(crate) fn is_candidate(stems: &[Stem], i: usize) -> bool {
 /// Number of collar loops between the footprint loop and the child's junction ring.
 pub(crate) fn collar_loops(quality: f32) -> usize {
     (quality.round() as usize).clamp(1, 3)
-}
-
-/// How far the trunk's surface reaches beyond its nominal radius (lobes, fluting, ripple).
-pub(crate) fn surface_bound(p: &MeshParams) -> f32 {
-    let lobes = 1.0 + if p.lobes > 0 { p.lobe_depth } else { 0.0 };
-    let refine =
-        if p.refine_curves > 0 { (p.refine_offset + p.refine_radius) * (1.0 + p.refine_variation) } else { 0.0 };
-    lobes * refine.max(1.0) * (1.0 + p.base_ripple)
 }
 
 /// `asin(x)` for x in [0, 1) through the portable `atan2`.

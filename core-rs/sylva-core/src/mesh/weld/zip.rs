@@ -6,9 +6,9 @@
 //! triangle would turn the wrong way and the other would not; one triangle per step, so every
 //! edge of both loops is used exactly once. These triangles lie on the parent's facets.
 
-use super::footprint::Rect;
-use super::join::{Join, Scratch};
+use super::footprint::{Rect, Scratch};
 use crate::math::TAU;
+use crate::mesh::junction::Join;
 use glam::Vec2;
 
 /// Step 5: the hole over the parent's quads `hole`, zipped to the footprint loop

@@ -5,8 +5,8 @@
 //! attraction distance, never all pairs.
 
 use super::State;
+use crate::leaf::veins::graph::{VeinLink, NONE};
 use crate::leaf::veins::grid::StaticGrid;
-use crate::leaf::veins::{VeinLink, NONE};
 use glam::Vec2;
 
 /// Most nodes kept in a source's relative neighbourhood.

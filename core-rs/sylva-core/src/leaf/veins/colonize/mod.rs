@@ -1,6 +1,6 @@
 //! # Vein growth by space colonization
 //!
-//! Space colonization of the blade (Runions et al. 2005; ANCHORS §4).
+//! Space colonization of the blade (Runions et al. 2005, *Modeling and Visualization of Leaf Venation Patterns*).
 //!
 //! Each iteration: (1) every live auxin source pulls the vein nodes it is associated with;
 //! (2) every pulled node grows one step `D` toward the normalised sum of the unit vectors to its
@@ -31,8 +31,8 @@
 
 mod association;
 
+use super::graph::{Auxin, VeinGraph, VeinLink, VeinNode, Veins, NONE};
 use super::grid::{DynGrid, GridSpec, StaticGrid};
-use super::{Auxin, VeinGraph, VeinLink, VeinNode, Veins, NONE};
 use crate::leaf::raster::Mask;
 use crate::rng::Rng;
 use association::{Neighbourhood, EMPTY};
