@@ -32,7 +32,7 @@ import type {
   TreeBuffers,
   VolumePrimitive,
 } from '../../../packages/sylva-trees/src/core/types';
-import type { OverlayHost } from '../viewer/TreeViewer';
+import type { OverlayHost } from '../viewer/overlayHost';
 import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
 import type { ImpostorAtlas } from './impostor';
 import { SUPERSEDED, type LodClient } from './lodClient';

@@ -27,7 +27,7 @@ import type {
   VolumePrimitive,
 } from '../../../packages/sylva-trees/src/core/types';
 import { normalizeVolume } from '../../../packages/sylva-trees/src/core/volumes';
-import type { OverlayHost } from './TreeViewer';
+import type { OverlayHost } from './overlayHost';
 
 /** Wireframe colour per group (crown green, shadow grey, exclusion red); the params' crown blue. */
 export const GROUP_COLORS: Record<VolumeGroup, string> = {
