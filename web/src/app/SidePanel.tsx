@@ -21,7 +21,7 @@ interface Props {
   /** Null while the generator loads: the tabs and an empty panel keep their place. */
   params: Params | null;
   version: string | null;
-  activePreset: string | null;
+  activePreset: Preset['name'] | null;
   editor: Editor;
   growth: GrowthEditor;
 }
@@ -41,7 +41,7 @@ export function SidePanel({
   const { change, paramsRef } = editor;
   /** A control changed a value; `interactive` while it is dragged or typed into. */
   const onChange = useCallback(
-    (id: string, value: number, interactive = false) => {
+    (id: ParamSpec['id'], value: number, interactive = false) => {
       const current = paramsRef.current;
       if (current) change({ params: { ...current, [id]: value }, key: id }, interactive);
     },

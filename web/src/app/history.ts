@@ -46,7 +46,7 @@ export interface History {
 }
 
 function sameParams(a: Params, b: Params): boolean {
-  const keys = Object.keys(a);
+  const keys = Object.keys(a) as (keyof Params)[];
   if (keys.length !== Object.keys(b).length) return false;
   return keys.every((k) => Object.is(a[k], b[k]));
 }

@@ -34,7 +34,7 @@ describe('buildDocsModel', () => {
 
 describe('display text', () => {
   const spec = (over: Partial<ParamSpec>): ParamSpec => ({
-    id: 'x',
+    id: 'ratio',
     group: 'G',
     label: 'X',
     kind: 'float',

@@ -81,7 +81,7 @@ export function resolveTreeAttributes(
   if (query.length > MAX_QUERY_LENGTH) {
     return fail(`The params attribute is too long (limit ${MAX_QUERY_LENGTH} characters).`);
   }
-  const byId = new Map(registry.map((s) => [s.id, s]));
+  const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
   const seen = new Set<string>();
   for (const piece of query.split('&')) {
     if (piece.trim() === '') continue;
@@ -115,7 +115,7 @@ export function resolveTreeAttributes(
     }
     seen.add(key);
     const value = parseValue(spec, raw);
-    if (typeof value === 'number') params[key] = value;
+    if (typeof value === 'number') params[spec.id] = value;
     else note(`Ignored "${key}" in params: ${value}.`);
   }
 

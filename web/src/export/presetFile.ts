@@ -67,7 +67,7 @@ export function parsePresetFile(registry: readonly ParamSpec[], text: string): P
   if (!isRecord(data.params)) {
     return { ok: false, error: 'The preset file has no "params" object.' };
   }
-  const byId = new Map(registry.map((s) => [s.id, s]));
+  const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
   const params = defaultParams(registry);
   const problems: string[] = [];
   const unknown: string[] = [];
@@ -87,7 +87,7 @@ export function parsePresetFile(registry: readonly ParamSpec[], text: string): P
           : null;
     const parsed = raw === null ? `${shown(JSON.stringify(value) ?? '')} is not a number` : null;
     const result = parsed ?? parseValue(spec, raw ?? '');
-    if (typeof result === 'number') params[id] = result;
+    if (typeof result === 'number') params[spec.id] = result;
     else problems.push(`${spec.label} (${id}): ${result}`);
   }
   if (problems.length > 0) {

@@ -7,7 +7,7 @@
 import type {
   LeafInspection,
   Params,
-  Preset,
+  LeafPreset,
   SylvaError,
 } from '../../../packages/sylva-trees/src/core/types';
 import { WorkerClient } from '../../../packages/sylva-trees/src/worker/client';
@@ -26,7 +26,7 @@ export interface LeafCallbacks {
   onLeaf(leaf: LeafInspection, id: number): void;
   onError(error: SylvaError): void;
   /** The worker is ready; carries the leaf presets. */
-  onPresets?(presets: Preset[]): void;
+  onPresets?(presets: LeafPreset[]): void;
 }
 
 /** Owns the inspector's worker. */

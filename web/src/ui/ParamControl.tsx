@@ -8,7 +8,7 @@ interface Props {
   spec: ParamSpec;
   value: number;
   /** `interactive`: a step of a drag or of typing (the full tree follows when it settles). */
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
 }
 
 /**

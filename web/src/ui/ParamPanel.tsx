@@ -9,9 +9,9 @@ interface Props {
   registry: readonly ParamSpec[];
   presets: readonly Preset[];
   params: Params;
-  activePreset: string | null;
+  activePreset: Preset['name'] | null;
   version: string;
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   onPreset: (name: string) => void;
   onRandomize: () => void;
   onReset: () => void;

@@ -246,7 +246,7 @@ export class GrowthOverlay {
 
   /** The crown (per start point) and the wall, from the params; rebuilt when they change. */
   private rebuildParamShapes(p: Params): void {
-    const ids = [
+    const ids: (keyof Params)[] = [
       'crown_volume',
       'crown_base',
       'crown_height',
@@ -262,7 +262,7 @@ export class GrowthOverlay {
     if (key === this.paramKey) return;
     this.paramKey = key;
     this.disposeParamShapes();
-    const v = (id: string, fallback: number) => p[id] ?? fallback;
+    const v = (id: keyof Params, fallback: number) => p[id] ?? fallback;
     const kind = v('crown_volume', 0);
     const base = v('crown_base', 2.5);
     const height = v('crown_height', 6);

@@ -7,6 +7,7 @@ import { harness } from '../testing/workerHarness';
 import type { DebugResponse } from './debug';
 import { createHandler, readyMessage } from './handler';
 import type { WorkerResponse } from './protocol';
+import type { Params } from '../core/types';
 
 /** One request answered with a result and then its hash; the merged tree. */
 function onlyTree(h: ReturnType<typeof harness>) {
@@ -93,7 +94,7 @@ describe('real wasm through the worker handler', () => {
 
   it('an unknown param gives an unknown_param error', () => {
     const { sent, handle } = harness();
-    handle({ type: 'generate', id: 8, params: { no_such_param: 1 } });
+    handle({ type: 'generate', id: 8, params: { no_such_param: 1 } as Params });
     const message = sent[0]?.message;
     expect(message?.type === 'error' && message.error.kind).toBe('unknown_param');
   });

@@ -1,6 +1,6 @@
 /** Worker-side request handling over an initialised wasm API (no Worker globals; testable in Node). */
 import { parseLeafInspection, parsePresets, parseRegistry, toSylvaError } from '../core/parse';
-import type { Params, WasmApi } from '../core/types';
+import type { LeafPresetId, Params, WasmApi } from '../core/types';
 import { lodsResponse } from '../lod/lodHandler';
 import { exportFormatsOf, exportTree } from '../export/exportHandler';
 import {
@@ -28,7 +28,7 @@ export function readyMessage(wasm: WasmApi): ReadyResponse {
     registry: parseRegistry(wasm.registry_json()),
     presets: parsePresets(wasm.presets_json()),
     version: wasm.core_version(),
-    leafPresets: wasm.leaf_presets_json ? parsePresets(wasm.leaf_presets_json()) : [],
+    leafPresets: wasm.leaf_presets_json ? parsePresets<LeafPresetId>(wasm.leaf_presets_json()) : [],
     exportFormats: exportFormatsOf(wasm),
   };
 }
