@@ -6,7 +6,7 @@
 import react from '@vitejs/plugin-react';
 import { randomBytes } from 'node:crypto';
 import { fileURLToPath } from 'node:url';
-import type { Plugin } from 'vite';
+import { defaultClientConditions, defaultServerConditions, type Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { withNonce } from './src/security/csp.ts';
 
@@ -45,9 +45,18 @@ function devElementScript(): Plugin {
 
 const page = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
+/**
+ * The `sylva-trees` package's entries (its package.json `exports`) resolve to its TypeScript
+ * sources under this condition, so the app, its workers and its tests build from source; a
+ * published package resolves to its built `dist/` files instead.
+ */
+const SOURCE_CONDITION = 'sylva-source';
+
 export default defineConfig({
   base: './',
   plugins: [react(), devCspNonce(), devElementScript()],
+  resolve: { conditions: [SOURCE_CONDITION, ...defaultClientConditions] },
+  ssr: { resolve: { conditions: [SOURCE_CONDITION, ...defaultServerConditions] } },
   worker: { format: 'es' },
   build: {
     target: 'es2022',

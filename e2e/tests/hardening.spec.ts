@@ -1,6 +1,6 @@
 /**
  * Hardening end to end: the Content-Security-Policy, the generation time limit, undo/redo, and
- * a batch of hostile share links (the browser cases of web/src/url/hostileLinks.fixture.ts; Vitest
+ * a batch of hostile share links (the browser cases of web/src/app/hostileLinks.fixture.ts; Vitest
  * runs all of them through the codec). Each hostile link shows a message or ignores the junk, a
  * tree still renders (the exact tree of the equivalent clean link), and nothing uncaught
  * reaches the console.
@@ -15,7 +15,7 @@ import {
   waitForTree,
   watchErrors,
 } from './helpers';
-import { DEFAULT, HOSTILE, SEED5, type HostileCase } from '../../web/src/url/hostileLinks.fixture';
+import { DEFAULT, HOSTILE, SEED5, type HostileCase } from '../../web/src/app/hostileLinks.fixture';
 
 /** Records CSP violations of every document of the page (before any app script runs). */
 async function recordCspViolations(page: Page): Promise<void> {

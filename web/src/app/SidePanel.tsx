@@ -6,9 +6,11 @@ import { useCallback, useState } from 'react';
 import {
   applyPreset,
   defaultParams,
+  type Params,
+  type ParamSpec,
+  type Preset,
   randomSeed,
-} from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
+} from 'sylva-trees/core';
 import { GrowthTools } from '../ui/GrowthTools';
 import { LeafInspector } from '../ui/LeafInspector';
 import { ParamPanel } from '../ui/ParamPanel';

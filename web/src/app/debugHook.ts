@@ -2,7 +2,7 @@
 import type { LeafPullCheck } from '../viewer/leafPullCheck';
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
-import type { WindSettings } from '../../../packages/sylva-trees/src/viewer/windSettings';
+import type { WindSettings } from 'sylva-trees/viewer';
 
 /** A tree the viewer applied (the debug hook's log; benchmarks time answers with it). */
 export interface TreeApplied {

@@ -5,7 +5,7 @@
  * undo step, while presets, Reset, Randomize and adding or removing a primitive are always
  * steps of their own.
  */
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 
 /** Changes of one key closer together than this (ms) are one undo step. */
 export const COALESCE_MS = 1000;

@@ -2,13 +2,14 @@
  * `<sylva-tree>` attributes → generator params (pure): the `preset` (or the defaults), then the
  * `params` query (`id=value&...`, validated exactly like a share link), then `seed`.
  */
-import { applyPreset, defaultParams } from '../../../packages/sylva-trees/src/core/params';
-import type {
-  ParamSpec,
-  Params,
-  Preset,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
+import {
+  applyPreset,
+  defaultParams,
+  type Params,
+  type ParamSpec,
+  type Preset,
+  type VolumePrimitive,
+} from 'sylva-trees/core';
 import {
   decodeVolumes,
   FORMAT_VERSION,
@@ -16,7 +17,7 @@ import {
   parseValue,
   shown,
   VOLUMES_KEY,
-} from '../../../packages/sylva-trees/src/url/codec';
+} from 'sylva-trees/url';
 
 /** The attributes that choose the tree. */
 export interface TreeAttributes {

@@ -3,9 +3,8 @@
  * each value with the share-link validation (`parseValue`), so a file can hold nothing a link
  * could not; any bad value rejects the whole file (the current tree stays).
  */
-import { defaultParams, normalizeValue } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
-import { formatNumber, parseValue, shown } from '../../../packages/sylva-trees/src/url/codec';
+import { defaultParams, normalizeValue, type Params, type ParamSpec } from 'sylva-trees/core';
+import { formatNumber, parseValue, shown } from 'sylva-trees/url';
 
 /** Format version written as `"sylva"`. */
 export const PRESET_FILE_VERSION = 1;

@@ -5,12 +5,11 @@
  * in a worker of their own, one request per variety.
  */
 import { useEffect, useRef, useState } from 'react';
-import { applyPreset } from '../../../packages/sylva-trees/src/core/params';
-import type { Params } from '../../../packages/sylva-trees/src/core/types';
+import { applyPreset, type Params } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { installDebugHook } from '../app/debugHook';
 import { LodClient } from '../lod/lodClient';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
+import type { ReadyInfo } from 'sylva-trees/worker';
 import { ForestScene, type ForestStats } from './ForestScene';
 
 /** Presets the forest mixes (those present are used, in this order). */

@@ -36,12 +36,8 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import {
-  impostorLights,
-  type ImpostorLights,
-} from '../../../packages/sylva-trees/src/viewer/lighting';
+import { impostorLights, type ImpostorLights, wrapInstances } from 'sylva-trees/viewer';
 import { frameDirection, viewBasis } from './hemiOct';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
 import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
 import impostorVertex from './shaders/impostor.vert.glsl?raw';

@@ -5,14 +5,15 @@
  * with `superseded`); a crashed worker rejects what it held and is restarted on the next request
  * (all of it in [`WorkerClient`]; the worker starts with the first request).
  */
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
-import { WorkerClient, type DropReason } from '../../../packages/sylva-trees/src/worker/client';
-import type {
-  GeneratorWorkerFactory,
-  WorkerRequest,
-  WorkerResponse,
-} from '../../../packages/sylva-trees/src/worker/protocol';
-import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import {
+  type DropReason,
+  type GeneratorWorkerFactory,
+  type LodBuffers,
+  WorkerClient,
+  type WorkerRequest,
+  type WorkerResponse,
+} from 'sylva-trees/worker';
 
 /** Rejection reason of a request replaced by a newer one. */
 export const SUPERSEDED = 'superseded';

@@ -19,17 +19,15 @@ import {
   type Material,
   type Texture,
 } from 'three';
-import type { LeafTextureBuffers } from '../../../packages/sylva-trees/src/core/types';
-import { attachBarkAttributes } from '../../../packages/sylva-trees/src/viewer/barkLook';
-import { mulberry32 } from '../forest/layout';
+import type { LeafTextureBuffers } from 'sylva-trees/core';
 import {
-  QUAD_FLOATS,
-  type LodBuffers,
-  type LodLevelBuffers,
-} from '../../../packages/sylva-trees/src/lod/types';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
-import { LEAF_TRANSLUCENCY } from '../../../packages/sylva-trees/src/viewer/Foliage';
-import { srgbTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
+  attachBarkAttributes,
+  LEAF_TRANSLUCENCY,
+  srgbTexture,
+  wrapInstances,
+} from 'sylva-trees/viewer';
+import { mulberry32 } from '../forest/layout';
+import { type LodBuffers, type LodLevelBuffers, QUAD_FLOATS } from 'sylva-trees/worker';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';

@@ -1,7 +1,6 @@
 /** One registry-generated control: slider + number (float/int), checkbox (bool) or select (enum). */
 import { memo } from 'react';
-import { snapToStep } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
+import { type ParamSpec, snapToStep } from 'sylva-trees/core';
 import { NumberField } from './NumberField';
 
 interface Props {

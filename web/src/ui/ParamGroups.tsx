@@ -3,7 +3,7 @@
  * registry group, and the options of a preset picker.
  */
 import type { ReactNode } from 'react';
-import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, ParamSpec, Preset } from 'sylva-trees/core';
 import { ParamControl } from './ParamControl';
 
 interface Props {

@@ -19,14 +19,14 @@ import {
   type Object3D,
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
-import type {
-  Params,
-  TreeBuffers,
-  VolumeGroup,
-  VolumeKind,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
-import { normalizeVolume } from '../../../packages/sylva-trees/src/core/volumes';
+import {
+  normalizeVolume,
+  type Params,
+  type TreeBuffers,
+  type VolumeGroup,
+  type VolumeKind,
+  type VolumePrimitive,
+} from 'sylva-trees/core';
 import type { OverlayHost } from './overlayHost';
 
 /** Wireframe colour per group (crown green, shadow grey, exclusion red); the params' crown blue. */

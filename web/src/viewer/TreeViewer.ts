@@ -18,15 +18,17 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { TreeBuffers, TreeUpdate } from '../../../packages/sylva-trees/src/core/types';
-import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
-import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
-import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
-import { applySoftShadows } from '../../../packages/sylva-trees/src/viewer/softShadows';
+import type { TreeBuffers, TreeUpdate } from 'sylva-trees/core';
+import {
+  applySoftShadows,
+  buildEnvelopeGeometry,
+  SceneLights,
+  TreeObject,
+  type WindController,
+} from 'sylva-trees/viewer';
 import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
-import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';

@@ -5,7 +5,7 @@
  */
 import type { PerspectiveCamera, Scene } from 'three';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { TreeBuffers } from '../../../packages/sylva-trees/src/core/types';
+import type { TreeBuffers } from 'sylva-trees/core';
 
 /** See [`TreeViewer.overlayHost`]. */
 export interface OverlayHost {
