@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# All lints in one place: rustfmt, clippy and rustdoc with warnings as errors, eslint and prettier.
+# All lints in one place: rustfmt, clippy and rustdoc with warnings as errors, eslint (with the size
+# rule), prettier, and dependency-cruiser (no import cycle; in the web and package `lint` scripts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo fmt --all --check
