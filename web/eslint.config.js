@@ -11,7 +11,7 @@ const DEEP_IMPORT = String.raw`(^|/)packages/|^sylva-trees/src(/|$)`;
 const deepImport =
   'Import the sylva-trees package by its entries (package.json `exports`), not its files.';
 
-export default typescriptConfig(import.meta.dirname, ['dist'], {
+export default typescriptConfig(import.meta.dirname, ['dist', 'dist-debug'], {
   plugins: { 'react-hooks': reactHooks },
   rules: {
     ...reactHooks.configs.recommended.rules,

@@ -8,6 +8,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import {
   DEBOUNCE_WAIT_MS,
+  DEBUG_BUILD_URL,
   dragSlider,
   expectTreeOnCanvas,
   sliderRange,
@@ -36,7 +37,8 @@ test('the app runs under its Content-Security-Policy without a single violation'
 }) => {
   const errors = watchErrors(page);
   await recordCspViolations(page);
-  await page.goto('/?debug=1');
+  // The debug build (the same page and policy; only its worker can be made to panic).
+  await page.goto(`${DEBUG_BUILD_URL}/?debug=1`);
   const first = await waitForTree(page);
   const policy = await page
     .locator('meta[http-equiv="Content-Security-Policy"]')
@@ -72,7 +74,8 @@ test('a generation past the time limit is stopped, reported, and the previous tr
   page,
 }) => {
   const errors = watchErrors(page);
-  await page.goto('/?debug=1');
+  // The debug build: only its worker has the hang hook.
+  await page.goto(`${DEBUG_BUILD_URL}/?debug=1`);
   const hash = await waitForTree(page);
   await page.waitForFunction(() => typeof window.__sylva?.hang === 'function');
   // A short limit keeps the test quick; the default 10 s is covered by the scheduler unit tests.

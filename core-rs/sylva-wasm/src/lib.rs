@@ -44,7 +44,9 @@ pub fn take_panic() -> Option<String> {
     LAST_PANIC.lock().ok().and_then(|mut s| s.take())
 }
 
-/// Panics on purpose, to test the worker's recovery path.
+/// Panics on purpose, to test the worker's recovery path. Only in a build with the
+/// `debug-hooks` feature (the tests' debug worker): the shipped module exports no test hooks.
+#[cfg(feature = "debug-hooks")]
 #[wasm_bindgen]
 pub fn debug_panic() {
     panic!("debug_panic: deliberate panic requested by a test");

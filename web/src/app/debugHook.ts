@@ -18,9 +18,9 @@ export interface TreeApplied {
 
 /** What the debug hook exposes to tests and the console. */
 export interface SylvaDebugHook {
-  /** Makes the generator worker panic (tests the crash-recovery path). */
+  /** Makes the generator worker panic (tests the crash-recovery path; the debug build only). */
   panic(): void;
-  /** Makes the generator worker busy-loop for `ms` (tests the time limit). */
+  /** Makes the generator worker busy-loop for `ms` (tests the time limit; the debug build only). */
   hang(ms: number): void;
   /** The trees applied so far (the last 200), oldest first. */
   trees(): TreeApplied[];

@@ -81,8 +81,11 @@ export function useGenerator(
     );
     schedulerRef.current = scheduler;
     const uninstall = installDebugHook({
-      panic: () => scheduler.debugPanic(),
-      hang: (ms) => scheduler.debugHang(ms),
+      // Only the debug build's worker (`vite build --mode debug`, web/dist-debug) has the test
+      // hooks that `panic` and `hang` drive; the shipped app leaves them out.
+      ...(import.meta.env.MODE === 'debug'
+        ? { panic: () => scheduler.debugPanic(), hang: (ms: number) => scheduler.debugHang(ms) }
+        : {}),
       setTimeLimit: (ms) => {
         scheduler.timeLimitMs = ms;
       },

@@ -337,7 +337,6 @@ export interface WasmApi {
   /** `generate` calling `progress(fraction)` during growth (optional: fakes may omit it). */
   generate_with_progress?(paramsJson: string, progress: (fraction: number) => void): WasmTree;
   take_panic(): string | undefined;
-  debug_panic(): void;
   leaf_inspect?(paramsJson: string, step: number, triangulation: boolean): string;
   leaf_presets_json?(): string;
   /**

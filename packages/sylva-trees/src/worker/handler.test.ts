@@ -2,9 +2,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams } from '../core/params';
 import { buildTreeGeometry } from '../viewer/geometry';
-import { loadWasm, realRegistry } from '../testing/realWasm';
+import { loadDebugWasm, loadWasm, realRegistry } from '../testing/realWasm';
 import { harness } from '../testing/workerHarness';
-import type { DebugResponse } from './debug';
+import { debugHooks, type DebugResponse } from './debug';
 import { createHandler, readyMessage } from './handler';
 import type { WorkerResponse } from './protocol';
 import type { Params } from '../core/types';
@@ -117,10 +117,15 @@ describe('real wasm through the worker handler', () => {
     }
   });
 
-  // Runs last in this file: the wasm instance is unusable after a panic.
-  it('debug-panic reports the panic message as fatal, then refuses further work', () => {
+  it('the shipped core has no test hook', () => {
+    expect('debug_panic' in loadWasm()).toBe(false);
+  });
+
+  it('debug-panic makes the debug core panic: reported as fatal, then further work refused', async () => {
     const sent: { message: WorkerResponse | DebugResponse }[] = [];
-    const handle = createHandler(loadWasm(), (message) => sent.push({ message }), { debug: true });
+    const handle = createHandler(await loadDebugWasm(), (message) => sent.push({ message }), {
+      debug: debugHooks,
+    });
     handle({ type: 'debug-panic' });
     const fatal = sent[0]?.message;
     expect(fatal?.type).toBe('fatal');

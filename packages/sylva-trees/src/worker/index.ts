@@ -20,7 +20,7 @@ export {
   type WorkerStartOptions,
 } from './client';
 export { GenerationScheduler, type GeneratorFactory } from './scheduler';
-export { DEBUG_WORKER_NAME } from './debug';
+export { DEBUG_WORKER_NAME } from './debugName';
 export { startGeneratorWorker } from '../runtime/startWorker';
 export { adaptWorker, type EarlyMessages } from '../runtime/workerHandle';
 export { loadWasmHere } from '../runtime/inProcess';
