@@ -6,7 +6,6 @@ import type {
   ParamId,
   ParamKind,
   ParamSpec,
-  Params,
   Preset,
   PresetId,
   SylvaError,
@@ -127,7 +126,7 @@ export function parsePresets<Name extends string = PresetId>(text: string): Pres
       name: str(o, 'name', where) as Name,
       label: str(o, 'label', where),
       description: typeof o.description === 'string' ? o.description : '',
-      values: numberRecord(o.values, `${where}.values`) as Params,
+      values: numberRecord(o.values, `${where}.values`),
     };
   });
 }
