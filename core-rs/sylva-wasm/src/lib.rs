@@ -8,8 +8,10 @@ use std::sync::Mutex;
 use sylva_core::{mesh::bark, params::BarkType, params::TreeParams, presets, Clock, Generated};
 use wasm_bindgen::prelude::*;
 
+mod baked;
 mod session;
 
+pub use baked::BakedLeafMesh;
 pub use session::Session;
 
 static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);

@@ -47,7 +47,7 @@ import {
   cloudGeometry,
   cloudMaterial,
   clumpTexture,
-  mergedLeafGeometry,
+  bakedLeafGeometry,
   treeSphere,
 } from '../lod/lodObjects';
 import { switchDistances } from '../lod/selection';
@@ -205,7 +205,7 @@ export class ForestScene {
     for (let l = 0; l < 3; l++) {
       const level = lods.levels[l]!;
       const list = [{ geometry: own(barkGeometry(level)), material: bark as Material }];
-      const merged = mergedLeafGeometry(level);
+      const merged = bakedLeafGeometry(level);
       if (merged) list.push({ geometry: own(merged), material: leaves });
       const cloud = cloudGeometry(level);
       if (cloud) {

@@ -131,7 +131,8 @@ export function ForestView({ info }: { info: ReadyInfo }) {
     const scene = new ForestScene(container);
     sceneRef.current = scene;
     scene.setCount(countRef.current);
-    const client = new LodClient(createModuleWorker, false);
+    // Queued, and with the leaves baked in the worker (the forest draws them as one mesh).
+    const client = new LodClient(createModuleWorker, false, true);
     const all = varietyParams(info).slice(0, varietyLimit());
     setTotal(all.length);
     const stop = loadVarieties(client, all, scene, {

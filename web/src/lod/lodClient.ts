@@ -38,13 +38,21 @@ export class LodClient {
   private readonly client: WorkerClient<Waiting, WorkerRequest, WorkerResponse>;
   private nextId = 1;
 
-  /** `latestWins`: false queues every request (the forest asks for several trees in turn). */
-  constructor(factory: GeneratorWorkerFactory, latestWins = true) {
+  /**
+   * `latestWins`: false queues every request (the forest asks for several trees in turn).
+   * `bakeLeaves`: every level also comes with its leaves baked into one mesh, in the worker.
+   */
+  constructor(factory: GeneratorWorkerFactory, latestWins = true, bakeLeaves = false) {
     this.client = new WorkerClient<Waiting, WorkerRequest, WorkerResponse>(
       factory,
       {
-        message: ({ id, params, volumes }) =>
-          volumes?.length ? { type: 'lods', id, params, volumes } : { type: 'lods', id, params },
+        message: ({ id, params, volumes }) => ({
+          type: 'lods',
+          id,
+          params,
+          ...(volumes?.length ? { volumes } : {}),
+          ...(bakeLeaves ? { bakeLeaves } : {}),
+        }),
         ends: (response, job) =>
           (response.type === 'lods' || response.type === 'error') && response.id === job.id,
         receive: (response, answered) => {
