@@ -14,7 +14,7 @@ import {
   normalizeValue,
   type Params,
   type ParamSpec,
-  type Preset,
+  type LeafPreset,
   type SylvaError,
 } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
@@ -28,7 +28,7 @@ export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
 interface Props {
   registry: readonly ParamSpec[];
   params: Params;
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   /** Applies several values at once (a leaf preset). */
   onChangeMany: (values: Params) => void;
 }
@@ -52,7 +52,7 @@ function downloadSvg(text: string, name: string): void {
 interface LeafDrawing {
   leaf: LeafInspection | null;
   error: SylvaError | null;
-  presets: Preset[];
+  presets: LeafPreset[];
   /** The element the SVG is adopted into. */
   viewRef: RefObject<HTMLDivElement | null>;
 }
@@ -68,7 +68,7 @@ function useLeafDrawing(
   const viewRef = useRef<HTMLDivElement | null>(null);
   const [leaf, setLeaf] = useState<LeafInspection | null>(null);
   const [error, setError] = useState<SylvaError | null>(null);
-  const [presets, setPresets] = useState<Preset[]>([]);
+  const [presets, setPresets] = useState<LeafPreset[]>([]);
   const [ready, setReady] = useState(false);
 
   useEffect(() => {
