@@ -1,5 +1,5 @@
 /**
- * Octahedral impostors (ANCHORS §6), baked in the browser:
+ * Octahedral impostors (docs/user-guide.md, Levels of detail), baked in the browser:
  *
  * * **Bake**: the LOD0 tree is rendered from the `n × n` view directions of a hemi-octahedral
  *   grid (`hemiOct.ts`) with an orthographic camera fitted to its bounding sphere, one frame per
