@@ -127,7 +127,9 @@ fn object(indent: usize, prefix: &str, fields: &[(String, String)], suffix: &str
 /// else one item per line.
 fn string_array(indent: usize, key: &str, items: &[&str]) -> String {
     let inline = format!("[{}]", items.iter().map(|s| string(s)).collect::<Vec<_>>().join(", "));
-    if indent + key.len() + 2 + inline.len() + 1 <= WIDTH {
+    // `key: [...],` at `indent`.
+    let line = indent + key.len() + ": ".len() + inline.len() + ",".len();
+    if line <= WIDTH {
         return inline;
     }
     let pad = " ".repeat(indent);
