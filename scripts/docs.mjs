@@ -3,6 +3,8 @@
 //   docs/parameters.md      `sylva params --markdown`   (the parameter registry)
 //   docs/cli.md             `sylva cli-reference`       (the CLI's clap declarations)
 //   web/src/docs/cli.json   `sylva cli-reference --json` (the docs page's Command line section)
+//   packages/sylva-trees/src/core/generated/params.ts   `sylva params --typescript` (ParamId,
+//                           PresetId, the registry and the presets as TypeScript)
 import { execFileSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -14,6 +16,7 @@ const outputs = [
   ['docs/parameters.md', ['params', '--markdown']],
   ['docs/cli.md', ['cli-reference']],
   ['web/src/docs/cli.json', ['cli-reference', '--json']],
+  ['packages/sylva-trees/src/core/generated/params.ts', ['params', '--typescript']],
 ];
 for (const [file, args] of outputs) {
   writeFileSync(`${root}/${file}`, execFileSync(sylva, args, { encoding: 'utf8' }));

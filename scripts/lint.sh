@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # All lints in one place: rustfmt, no import cycles between Rust files (rust-cycles.mjs), clippy
-# and rustdoc with warnings as errors, eslint and prettier.
+# (too_many_lines at 120) and rustdoc with warnings as errors, eslint (with the size rules), prettier,
+# and dependency-cruiser (no TypeScript import cycle; in the web and package `lint` scripts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo fmt --all --check

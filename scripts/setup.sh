@@ -2,7 +2,8 @@
 # One setup for every entry point (npm start, npm test, npm run build/bench/lint).
 # Idempotent: each step checks before it acts, so a second run with nothing changed takes seconds.
 #   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build
-#   scripts/setup.sh --test     the same, plus Chromium for the Playwright tests
+#   scripts/setup.sh --test     the same, plus the debug wasm build (the test hook `debug_panic`, in
+#                               packages/sylva-trees/src/wasm-debug) and Chromium for the Playwright tests
 #   scripts/setup.sh --native   the same as plain (the bench also builds the native CLI itself)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -54,7 +55,24 @@ if [ ! -f "$OUT/sylva_wasm_bg.wasm" ] || [ "$WASM" -nt "$OUT/sylva_wasm_bg.wasm"
   wasm-bindgen --target web --out-dir "$OUT" "$WASM"
 fi
 
-# 5. For tests: Chromium from the system (Playwright's own browser download is never used).
+# 5. For tests: the same module with the `debug-hooks` feature (`debug_panic`, for the tests of
+#    the worker's crash recovery) in its own target directory and folder, which only the app's
+#    debug build (`npm run build:debug -w web`, web/dist-debug) loads. cargo is a no-op when
+#    nothing changed, and wasm-bindgen runs only when the module is newer than its glue.
+if [ "$WANT_TEST" = 1 ]; then
+  step "cargo build sylva-wasm --features debug-hooks (release, wasm32)"
+  DEBUG_TARGET=${CARGO_TARGET_DIR:-target}/debug-hooks
+  cargo build --quiet --release --target wasm32-unknown-unknown -p sylva-wasm --features debug-hooks \
+    --target-dir "$DEBUG_TARGET"
+  DEBUG_WASM=$DEBUG_TARGET/wasm32-unknown-unknown/release/sylva_wasm.wasm
+  DEBUG_OUT=packages/sylva-trees/src/wasm-debug
+  if [ ! -f "$DEBUG_OUT/sylva_wasm_bg.wasm" ] || [ "$DEBUG_WASM" -nt "$DEBUG_OUT/sylva_wasm_bg.wasm" ]; then
+    step "wasm-bindgen -> $DEBUG_OUT"
+    wasm-bindgen --target web --out-dir "$DEBUG_OUT" "$DEBUG_WASM"
+  fi
+fi
+
+# 6. For tests: Chromium from the system (Playwright's own browser download is never used).
 if [ "$WANT_TEST" = 1 ]; then
   CHROMIUM=${SYLVA_CHROMIUM:-/usr/bin/chromium}
   if [ ! -x "$CHROMIUM" ]; then

@@ -17,8 +17,9 @@ node scripts/wasm-parity.mjs
 step "Vitest"
 npm run test -w web
 npm run test -w packages/sylva-trees
-step "build the web app, and the sylva-trees package (tarball for its e2e test)"
+step "build the web app, its debug build (the worker's test hooks, for e2e), and the sylva-trees package (tarball for its e2e test)"
 npm run build -w web
+npm run build:debug -w web
 bash scripts/package.sh
 step "Playwright (Chromium)"
 npm run test -w e2e

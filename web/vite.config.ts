@@ -5,8 +5,9 @@
  */
 import react from '@vitejs/plugin-react';
 import { randomBytes } from 'node:crypto';
+import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import type { Plugin } from 'vite';
+import { defaultClientConditions, defaultServerConditions, type Plugin } from 'vite';
 import { defineConfig } from 'vitest/config';
 import { withNonce } from './src/security/csp.ts';
 
@@ -43,12 +44,63 @@ function devElementScript(): Plugin {
   };
 }
 
+/** The sylva-trees package's sources. */
+const PACKAGE_SRC = fileURLToPath(new URL('../packages/sylva-trees/src/', import.meta.url));
+
+/**
+ * `vite build --mode debug` (`npm run build:debug`, into web/dist-debug) only: the app whose
+ * generator worker carries the test hooks, for the e2e tests of the crash recovery and the time
+ * limit. The worker's `./debugHooks` becomes `debug.ts` (the hooks) and the core becomes its
+ * `debug-hooks` build (`debug_panic`, in packages/sylva-trees/src/wasm-debug, which
+ * `scripts/setup.sh --test` builds). web/dist, the shipped app, has neither.
+ */
+function debugBuild(): Plugin {
+  let active = false;
+  const debugWasm = `${PACKAGE_SRC}wasm-debug/`;
+  return {
+    name: 'sylva:debug-build',
+    enforce: 'pre',
+    configResolved(config) {
+      active = config.mode === 'debug';
+    },
+    buildStart() {
+      if (active && !existsSync(`${debugWasm}sylva_wasm_bg.wasm`)) {
+        this.error(`${debugWasm} is missing: run \`bash scripts/setup.sh --test\` first`);
+      }
+    },
+    resolveId(source, importer) {
+      if (!active || !importer) return null;
+      if (source === './debugHooks' && /worker[\\/]worker\.ts$/.test(importer)) {
+        return `${PACKAGE_SRC}worker/debug.ts`;
+      }
+      if (source === '../wasm/sylva_wasm.js') return `${debugWasm}sylva_wasm.js`;
+      return null;
+    },
+    transform(code, id) {
+      if (!active || !/runtime[\\/]urls\.ts$/.test(id)) return null;
+      const wasm = "'../wasm/sylva_wasm_bg.wasm'";
+      if (!code.includes(wasm)) this.error(`${id} has no ${wasm}`);
+      return { code: code.replace(wasm, "'../wasm-debug/sylva_wasm_bg.wasm'"), map: null };
+    },
+  };
+}
+
 const page = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
+
+/**
+ * The `sylva-trees` package's entries (its package.json `exports`) resolve to its TypeScript
+ * sources under this condition, so the app, its workers and its tests build from source; a
+ * published package resolves to its built `dist/` files instead.
+ */
+const SOURCE_CONDITION = 'sylva-source';
 
 export default defineConfig({
   base: './',
-  plugins: [react(), devCspNonce(), devElementScript()],
-  worker: { format: 'es' },
+  plugins: [react(), devCspNonce(), devElementScript(), debugBuild()],
+  resolve: { conditions: [SOURCE_CONDITION, ...defaultClientConditions] },
+  ssr: { resolve: { conditions: [SOURCE_CONDITION, ...defaultServerConditions] } },
+  // The worker bundle has plugins of its own: the debug build redirects inside it too.
+  worker: { format: 'es', plugins: () => [debugBuild()] },
   build: {
     target: 'es2022',
     sourcemap: true,

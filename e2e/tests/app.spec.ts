@@ -4,6 +4,7 @@ import {
   analyseCanvas,
   DEBOUNCE_WAIT_MS,
   dragSlider,
+  DEBUG_BUILD_URL,
   expectTreeOnCanvas,
   pick,
   sliderIds,
@@ -162,7 +163,8 @@ test('(d) a broken URL shows the error banner and still renders a tree', async (
 test('(e) a worker panic is reported, the tree stays, and the worker is recreated', async ({
   page,
 }) => {
-  await page.goto('/?debug=1');
+  // The debug build: only its worker can be made to panic.
+  await page.goto(`${DEBUG_BUILD_URL}/?debug=1`);
   const hash = await waitForTree(page);
   await page.waitForFunction(() => typeof window.__sylva?.panic === 'function');
   await page.evaluate(() => window.__sylva?.panic?.());

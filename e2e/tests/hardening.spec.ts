@@ -1,6 +1,6 @@
 /**
  * Hardening end to end: the Content-Security-Policy, the generation time limit, undo/redo, and
- * a batch of hostile share links (the browser cases of web/src/url/hostileLinks.fixture.ts; Vitest
+ * a batch of hostile share links (the browser cases of web/src/app/hostileLinks.fixture.ts; Vitest
  * runs all of them through the codec). Each hostile link shows a message or ignores the junk, a
  * tree still renders (the exact tree of the equivalent clean link), and nothing uncaught
  * reaches the console.
@@ -8,6 +8,7 @@
 import { expect, test, type Page } from '@playwright/test';
 import {
   DEBOUNCE_WAIT_MS,
+  DEBUG_BUILD_URL,
   dragSlider,
   expectTreeOnCanvas,
   sliderRange,
@@ -15,7 +16,7 @@ import {
   waitForTree,
   watchErrors,
 } from './helpers';
-import { DEFAULT, HOSTILE, SEED5, type HostileCase } from '../../web/src/url/hostileLinks.fixture';
+import { DEFAULT, HOSTILE, SEED5, type HostileCase } from '../../web/src/app/hostileLinks.fixture';
 
 /** Records CSP violations of every document of the page (before any app script runs). */
 async function recordCspViolations(page: Page): Promise<void> {
@@ -36,7 +37,8 @@ test('the app runs under its Content-Security-Policy without a single violation'
 }) => {
   const errors = watchErrors(page);
   await recordCspViolations(page);
-  await page.goto('/?debug=1');
+  // The debug build (the same page and policy; only its worker can be made to panic).
+  await page.goto(`${DEBUG_BUILD_URL}/?debug=1`);
   const first = await waitForTree(page);
   const policy = await page
     .locator('meta[http-equiv="Content-Security-Policy"]')
@@ -72,7 +74,8 @@ test('a generation past the time limit is stopped, reported, and the previous tr
   page,
 }) => {
   const errors = watchErrors(page);
-  await page.goto('/?debug=1');
+  // The debug build: only its worker has the hang hook.
+  await page.goto(`${DEBUG_BUILD_URL}/?debug=1`);
   const hash = await waitForTree(page);
   await page.waitForFunction(() => typeof window.__sylva?.hang === 'function');
   // A short limit keeps the test quick; the default 10 s is covered by the scheduler unit tests.

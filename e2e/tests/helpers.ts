@@ -8,6 +8,13 @@ export const DEBOUNCE_WAIT_MS = 800;
 
 const HASH_RE = /^[0-9a-f]{16}$/;
 
+/**
+ * The app's debug build (web/dist-debug, served by playwright.config.ts on the port after the
+ * app's): the same app, but its generator worker has the test hooks (`window.__sylva.panic()`
+ * and `hang()` with `?debug=1`), which the shipped build (web/dist) leaves out.
+ */
+export const DEBUG_BUILD_URL = `http://127.0.0.1:${Number(process.env.SYLVA_E2E_PORT ?? 4317) + 1}`;
+
 /** Collects uncaught page errors and console errors for the whole test. */
 export function watchErrors(page: Page): string[] {
   const errors: string[] = [];

@@ -2,8 +2,9 @@
 // or here when missing) installed with three and Vite into a fresh folder outside the repository,
 // the example app (e2e/package-example, the README's API) built with Vite and served, and two
 // trees checked in Chromium: both drawn in one scene, set() changes the hash, dispose() leaves no
-// geometry or texture on the GPU. Prints the tarball size and the time to the first tree. Then the
-// same tarball without a bundler: its dist/ and three in a plain page with an import map.
+// geometry or texture on the GPU; its subpath entries (`sylva-trees/core` ...) resolve to built,
+// typed files. Prints the tarball size and the time to the first tree. Then the same tarball
+// without a bundler: its dist/ and three in a plain page with an import map.
 import { expect, test } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import {
@@ -38,6 +39,31 @@ function versionOf(name: string): string {
   const path = join(root, 'node_modules', name, 'package.json');
   return (JSON.parse(readFileSync(path, 'utf8')) as { version: string }).version;
 }
+
+/** The subpath entries of the package's `exports` (the root entry aside). */
+const SUBPATHS = ['core', 'url', 'viewer', 'worker', 'worker-script'];
+
+/**
+ * Run by Node in the installed example: whether each entry resolves to a file of the package, the
+ * pure ones (`core`, `url`) load, and what resolving the workspace-only `testing` entry throws.
+ */
+const ENTRY_PROBE = `
+import { existsSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+const out = {};
+for (const s of ${JSON.stringify(['sylva-trees', ...SUBPATHS.map((s) => `sylva-trees/${s}`)])})
+  out[s] = existsSync(fileURLToPath(import.meta.resolve(s)));
+const core = await import('sylva-trees/core');
+const url = await import('sylva-trees/url');
+out.pure = typeof core.defaultParams === 'function' && typeof url.encodeParams === 'function';
+try {
+  import.meta.resolve('sylva-trees/testing');
+  out.testing = 'resolved';
+} catch (e) {
+  out.testing = e.code;
+}
+console.log(JSON.stringify(out));
+`;
 
 test('the packed package works in a fresh three.js + Vite app', async ({ page }) => {
   test.setTimeout(180_000);
@@ -74,6 +100,20 @@ test('the packed package works in a fresh three.js + Vite app', async ({ page })
     expect(
       existsSync(join(dir, 'node_modules', 'sylva-trees', 'dist', 'types', 'index.d.ts')),
     ).toBe(true);
+    // The subpath entries: built, typed, loadable; `sylva-trees/testing` is not published.
+    const types = join(dir, 'node_modules', 'sylva-trees', 'dist', 'types');
+    for (const s of SUBPATHS.filter((s) => s !== 'worker-script'))
+      expect(existsSync(join(types, s, 'index.d.ts')), s).toBe(true);
+    const probe = execFileSync('node', ['--input-type=module', '-e', ENTRY_PROBE], {
+      cwd: dir,
+      encoding: 'utf8',
+    });
+    expect(JSON.parse(probe)).toEqual({
+      'sylva-trees': true,
+      ...Object.fromEntries(SUBPATHS.map((s) => [`sylva-trees/${s}`, true])),
+      pure: true,
+      testing: 'ERR_PACKAGE_PATH_NOT_EXPORTED',
+    });
 
     phase('built');
     server = await serve(await freePort(), { outDir: join(dir, 'dist') });

@@ -2,4 +2,4 @@
 // (scripts/eslint-typescript.mjs), without React.
 import { typescriptConfig } from '../../scripts/eslint-typescript.mjs';
 
-export default typescriptConfig(import.meta.dirname, ['dist', 'src/wasm']);
+export default typescriptConfig(import.meta.dirname, ['dist', 'src/wasm', 'src/wasm-debug']);

@@ -1,7 +1,10 @@
 /**
- * The `sylva-trees` package: a Vite library build (ES modules, `three` external) of two entries,
- * `index.js` (the API) and `worker.js` (the generator worker), next to the core's
- * `sylva_wasm_bg.wasm`. Vite's library mode would inline the wasm (base64) and the worker (a
+ * The `sylva-trees` package: a Vite library build (ES modules, `three` external) of the entries
+ * that package.json `exports` names, `index.js` (the API), `core.js`, `url.js`, `viewer.js` and
+ * `worker-client.js` (the subpaths `sylva-trees/core` … `sylva-trees/worker`) and `worker.js`
+ * (the generator worker, `sylva-trees/worker-script`), next to the core's `sylva_wasm_bg.wasm`.
+ * All of them and their shared chunks sit in `dist/` itself, for the URLs below are written
+ * relative to the module that holds them. Vite's library mode would inline the wasm (base64) and the worker (a
  * blob URL) and hide both behind expressions no other bundler can follow; instead the source's
  * `new URL('<source path>', import.meta.url)` of the worker and the wasm are written out as
  * `new URL('./worker.js', import.meta.url)` and `new URL('./sylva_wasm_bg.wasm', import.meta.url)`:
@@ -103,7 +106,14 @@ export default defineConfig({
     sourcemap: false,
     minify: true,
     lib: {
-      entry: { index: here('./src/index.ts'), worker: here('./src/worker/worker.ts') },
+      entry: {
+        index: here('./src/index.ts'),
+        core: here('./src/core/index.ts'),
+        url: here('./src/url/index.ts'),
+        viewer: here('./src/viewer/index.ts'),
+        'worker-client': here('./src/worker/index.ts'),
+        worker: here('./src/worker/worker.ts'),
+      },
       formats: ['es'],
     },
     rolldownOptions: {

@@ -4,16 +4,14 @@
  * that the worker and its wasm download and compile while the page parses three.js and React.
  * A debug worker (tests, `?debug=1`) is started under [`DEBUG_WORKER_NAME`].
  */
-import type {
-  WorkerHandle,
-  WorkerStartOptions,
-} from '../../packages/sylva-trees/src/worker/client';
-import { DEBUG_WORKER_NAME } from '../../packages/sylva-trees/src/worker/debug';
-import { startGeneratorWorker } from '../../packages/sylva-trees/src/runtime/startWorker';
 import {
   adaptWorker,
+  DEBUG_WORKER_NAME,
   type EarlyMessages,
-} from '../../packages/sylva-trees/src/runtime/workerHandle';
+  startGeneratorWorker,
+  type WorkerHandle,
+  type WorkerStartOptions,
+} from 'sylva-trees/worker';
 
 function newWorker(debug: boolean): Worker {
   return startGeneratorWorker(debug ? DEBUG_WORKER_NAME : '');

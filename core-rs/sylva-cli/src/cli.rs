@@ -47,12 +47,16 @@ pub enum Command {
     ///
     /// One object per parameter: `id`, `group`, `label`, `kind`, `default`, `min`, `max`, `step`,
     /// `unit`, `description` and, for enums, `options`. With `--markdown`: the parameter reference
-    /// docs/parameters.md.
+    /// docs/parameters.md. With `--typescript`: the registry and the presets as the TypeScript
+    /// module packages/sylva-trees/src/core/generated/params.ts (`ParamId`, `PresetId`, ...).
     #[command(args_override_self = true)]
     Params {
         /// Print the parameter reference as Markdown instead
-        #[arg(long)]
+        #[arg(long, conflicts_with = "typescript")]
         markdown: bool,
+        /// Print the registry and the presets as a TypeScript module instead
+        #[arg(long)]
+        typescript: bool,
     },
     /// Print the tree presets as JSON
     ///
@@ -251,7 +255,7 @@ pub const EXAMPLES: &[(&str, &[&str])] = &[
             "sylva generate --preset oak --set hole_count=3 --report mesh",
         ],
     ),
-    ("params", &["sylva params --markdown"]),
+    ("params", &["sylva params --markdown", "sylva params --typescript"]),
     ("presets", &["sylva presets"]),
     ("leaf-presets", &["sylva leaf-presets"]),
     ("envelope", &["sylva envelope --shape flame --samples 11"]),

@@ -10,6 +10,7 @@ mod leaf;
 mod reference;
 mod synopsis;
 mod tree;
+mod typescript;
 
 use clap::error::{ContextKind, ErrorKind};
 use clap::{ArgMatches, FromArgMatches};
@@ -57,8 +58,9 @@ fn run(args: &[String]) -> Result<String, String> {
     };
     match command {
         Command::Generate(a) => tree::generate(&a),
-        Command::Params { markdown: true } => Ok(reference::params_markdown()),
-        Command::Params { markdown: false } => Ok(sylva_core::params::registry_json()),
+        Command::Params { typescript: true, .. } => Ok(typescript::params_module()),
+        Command::Params { markdown: true, .. } => Ok(reference::params_markdown()),
+        Command::Params { .. } => Ok(sylva_core::params::registry_json()),
         Command::Presets => Ok(presets::presets_json()),
         Command::LeafPresets => Ok(sylva_core::leaf::presets::presets_json()),
         Command::Envelope { shape, samples } => {

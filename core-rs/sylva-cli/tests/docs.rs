@@ -1,6 +1,8 @@
-//! The generated references stay true: docs/cli.md, docs/parameters.md and the docs page's
-//! `web/src/docs/cli.json` are exactly what the binary prints (`npm run docs` writes them), and
-//! `sylva help` describes every command and option the CLI accepts.
+//! The generated references stay true: docs/cli.md, docs/parameters.md, the docs page's
+//! `web/src/docs/cli.json` and the TypeScript types of the registry and presets
+//! (`packages/sylva-trees/src/core/generated/params.ts`) are exactly what the binary prints
+//! (`npm run docs` writes them), and `sylva help` describes every command and option the CLI
+//! accepts.
 
 use std::process::Command;
 
@@ -26,6 +28,7 @@ fn generated_docs_are_what_the_binary_prints() {
         (&["cli-reference"][..], "docs/cli.md"),
         (&["cli-reference", "--json"][..], "web/src/docs/cli.json"),
         (&["params", "--markdown"][..], "docs/parameters.md"),
+        (&["params", "--typescript"][..], "packages/sylva-trees/src/core/generated/params.ts"),
     ] {
         let (code, out, err) = sylva(args);
         assert_eq!(code, 0, "sylva {args:?}: {err}");
@@ -49,6 +52,31 @@ fn the_parameter_reference_has_every_parameter_without_float_noise() {
     // f32 noise such as 0.014999999664723873: seven or more digits after a decimal point.
     let noisy = doc.split('.').skip(1).find(|after| after.len() >= 7 && after[..7].bytes().all(|b| b.is_ascii_digit()));
     assert_eq!(noisy.map(|s| &s[..20.min(s.len())]), None, "float noise in docs/parameters.md");
+}
+
+#[test]
+fn the_typescript_types_have_every_parameter_and_preset() {
+    let (_, reg, _) = sylva(&["params"]);
+    let (_, presets, _) = sylva(&["presets"]);
+    let module = file("packages/sylva-trees/src/core/generated/params.ts");
+    assert!(module.starts_with("// @generated"), "the header marks the file as generated");
+    let reg: serde_json::Value = serde_json::from_str(&reg).expect("JSON");
+    for p in reg.as_array().expect("an array") {
+        let id = p["id"].as_str().expect("an id");
+        assert!(module.contains(&format!("\n  {id}: {{")), "{id} missing from PARAM_SPECS");
+        if let Some(options) = p["options"].as_array() {
+            let first = options[0].as_str().expect("a label");
+            assert!(module.contains(&format!("  {id}:")) && module.contains(&format!("'{first}'")), "{id}'s options");
+        }
+    }
+    assert!(module.contains("  ratio: {\n    label: 'Radius Ratio',"), "ratio's entry");
+    assert!(module.contains("    default: 0.014999999664723873,"), "defaults are the registry's f32 values");
+    let presets: serde_json::Value = serde_json::from_str(&presets).expect("JSON");
+    for p in presets.as_array().expect("an array") {
+        let name = p["name"].as_str().expect("a name");
+        assert!(module.contains(&format!("\n  '{name}',")), "{name} missing from PRESET_IDS");
+        assert!(module.contains(&format!("\n  {name}: {{")), "{name} missing from PRESET_VALUES");
+    }
 }
 
 #[test]

@@ -8,8 +8,10 @@ use std::sync::Mutex;
 use sylva_core::{mesh::bark, params::BarkType, params::TreeParams, presets, Clock, Generated};
 use wasm_bindgen::prelude::*;
 
+mod baked;
 mod session;
 
+pub use baked::BakedLeafMesh;
 pub use session::Session;
 
 static LAST_PANIC: Mutex<Option<String>> = Mutex::new(None);
@@ -44,7 +46,9 @@ pub fn take_panic() -> Option<String> {
     LAST_PANIC.lock().ok().and_then(|mut s| s.take())
 }
 
-/// Panics on purpose, to test the worker's recovery path.
+/// Panics on purpose, to test the worker's recovery path. Only in a build with the
+/// `debug-hooks` feature (the tests' debug worker): the shipped module exports no test hooks.
+#[cfg(feature = "debug-hooks")]
 #[wasm_bindgen]
 pub fn debug_panic() {
     panic!("debug_panic: deliberate panic requested by a test");

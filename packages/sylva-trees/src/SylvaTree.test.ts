@@ -2,7 +2,7 @@
 import type { BufferGeometry } from 'three';
 import { Texture } from 'three';
 import { describe, expect, it } from 'vitest';
-import { SylvaTree, SylvaTreeError, params, presets } from './index';
+import { SylvaTree, SylvaTreeError, params, presets, type SylvaPresetId } from './index';
 
 /** Geometries and textures alive under `tree.object` (disposed ones fire `dispose`). */
 function resources(tree: SylvaTree): { geometries: Set<BufferGeometry>; textures: Set<Texture> } {
@@ -59,7 +59,9 @@ describe('sylva-trees', () => {
     expect(tree.stats.hash).toBe(hash);
     await tree.set({ levels: 2 });
     expect(tree.params.l1_length).not.toBe(3);
-    await expect(SylvaTree.create({ preset: 'no_such_tree', worker: false })).rejects.toThrow(
+    // A JavaScript caller (no types) may pass any name.
+    const unknown = 'no_such_tree' as SylvaPresetId;
+    await expect(SylvaTree.create({ preset: unknown, worker: false })).rejects.toThrow(
       /unknown preset "no_such_tree"/,
     );
     tree.dispose();

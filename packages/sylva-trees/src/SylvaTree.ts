@@ -6,7 +6,15 @@
 import type { Group } from 'three';
 import { applyPreset, defaultParams } from './core/params';
 import { parsePresets, parseRegistry } from './core/parse';
-import type { ParamSpec, Params, Preset, SylvaError, VolumePrimitive } from './core/types';
+import type {
+  ParamId,
+  ParamSpec,
+  Params,
+  Preset,
+  PresetId,
+  SylvaError,
+  VolumePrimitive,
+} from './core/types';
 import { ExportClient, ExportError } from './export/exportClient';
 import { startGeneratorWorker } from './runtime/startWorker';
 import { inProcessFactory } from './runtime/inProcess';
@@ -17,12 +25,18 @@ import type { GeneratorWorkerFactory } from './worker/protocol';
 import { GenerationScheduler } from './worker/scheduler';
 import { coreVersion, presetsJson, registryJson } from 'virtual:sylva-catalog';
 
+/** A parameter id of the registry (`params`; docs/parameters.md lists them). */
+export type SylvaParamId = ParamId;
+
+/** A preset name (`presets`). */
+export type SylvaPresetId = PresetId;
+
 /** Parameter values by id: numbers (booleans become 1/0, enums their option index). */
-export type SylvaParams = Record<string, number | boolean>;
+export type SylvaParams = Partial<Record<SylvaParamId, number | boolean>>;
 
 /** One parameter of the registry. */
 export interface SylvaParamInfo {
-  id: string;
+  id: SylvaParamId;
   label: string;
   group: string;
   type: 'float' | 'int' | 'bool' | 'enum';
@@ -39,7 +53,7 @@ export interface SylvaParamInfo {
 /** What `SylvaTree.create` takes. */
 export interface SylvaTreeOptions {
   /** A preset name (see `presets`); default: the default tree. */
-  preset?: string;
+  preset?: SylvaPresetId;
   /** Random seed (the `seed` parameter). */
   seed?: number;
   /** Values over the preset (ids from `params`). */
@@ -78,7 +92,7 @@ const registry: readonly ParamSpec[] = Object.freeze(parseRegistry(registryJson)
 const presetList: readonly Preset[] = Object.freeze(parsePresets(presetsJson));
 
 /** The preset names, for `SylvaTree.create({ preset })`. */
-export const presets: readonly string[] = Object.freeze(presetList.map((p) => p.name));
+export const presets: readonly SylvaPresetId[] = Object.freeze(presetList.map((p) => p.name));
 
 /** The parameter registry. */
 export const params: readonly SylvaParamInfo[] = Object.freeze(
@@ -102,7 +116,9 @@ export const version: string = coreVersion;
 /** `values` as the core's numbers; throws a `SylvaTreeError` for a value of the wrong type. */
 function toNumbers(values: SylvaParams | undefined): Params {
   const out: Params = {};
-  for (const [id, value] of Object.entries(values ?? {})) {
+  for (const [key, value] of Object.entries(values ?? {})) {
+    // Passed on as it is: the core rejects an id it does not know (`unknown_param`).
+    const id = key as ParamId;
     if (typeof value === 'boolean') out[id] = value ? 1 : 0;
     else if (typeof value === 'number') out[id] = value;
     else {

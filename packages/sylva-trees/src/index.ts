@@ -13,8 +13,10 @@ export {
   params,
   presets,
   version,
+  type SylvaParamId,
   type SylvaParamInfo,
   type SylvaParams,
+  type SylvaPresetId,
   type SylvaTreeOptions,
   type SylvaTreeStats,
 } from './SylvaTree';

@@ -4,8 +4,7 @@
  * shows each new state: a generation request, or only a viewer change.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { firstStage, matchingPreset } from '../../../packages/sylva-trees/src/core/params';
-import type { Params } from '../../../packages/sylva-trees/src/core/types';
+import { firstStage, matchingPreset, type Params } from 'sylva-trees/core';
 import { Toolbar } from '../export/Toolbar';
 import { LodPanel } from '../lod/LodPanel';
 import { ErrorBanner } from '../ui/ErrorBanner';
@@ -14,7 +13,7 @@ import { StatsOverlay } from '../ui/StatsOverlay';
 import { Viewport } from '../ui/Viewport';
 import { WindControls } from '../ui/WindControls';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
+import type { ReadyInfo } from 'sylva-trees/worker';
 import { useSettleOnRelease, useViewerDebugHook } from './appEffects';
 import { emitDebug } from './debugHook';
 import type { EditorState } from './editor';

@@ -6,9 +6,11 @@ import { useCallback, useState } from 'react';
 import {
   applyPreset,
   defaultParams,
+  type Params,
+  type ParamSpec,
+  type Preset,
   randomSeed,
-} from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
+} from 'sylva-trees/core';
 import { GrowthTools } from '../ui/GrowthTools';
 import { LeafInspector } from '../ui/LeafInspector';
 import { ParamPanel } from '../ui/ParamPanel';
@@ -21,7 +23,7 @@ interface Props {
   /** Null while the generator loads: the tabs and an empty panel keep their place. */
   params: Params | null;
   version: string | null;
-  activePreset: string | null;
+  activePreset: Preset['name'] | null;
   editor: Editor;
   growth: GrowthEditor;
 }
@@ -41,7 +43,7 @@ export function SidePanel({
   const { change, paramsRef } = editor;
   /** A control changed a value; `interactive` while it is dragged or typed into. */
   const onChange = useCallback(
-    (id: string, value: number, interactive = false) => {
+    (id: ParamSpec['id'], value: number, interactive = false) => {
       const current = paramsRef.current;
       if (current) change({ params: { ...current, [id]: value }, key: id }, interactive);
     },

@@ -2,7 +2,7 @@
 import type { LeafPullCheck } from '../viewer/leafPullCheck';
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
-import type { WindSettings } from '../../../packages/sylva-trees/src/viewer/windSettings';
+import type { WindSettings } from 'sylva-trees/viewer';
 
 /** A tree the viewer applied (the debug hook's log; benchmarks time answers with it). */
 export interface TreeApplied {
@@ -18,9 +18,9 @@ export interface TreeApplied {
 
 /** What the debug hook exposes to tests and the console. */
 export interface SylvaDebugHook {
-  /** Makes the generator worker panic (tests the crash-recovery path). */
+  /** Makes the generator worker panic (tests the crash-recovery path; the debug build only). */
   panic(): void;
-  /** Makes the generator worker busy-loop for `ms` (tests the time limit). */
+  /** Makes the generator worker busy-loop for `ms` (tests the time limit; the debug build only). */
   hang(ms: number): void;
   /** The trees applied so far (the last 200), oldest first. */
   trees(): TreeApplied[];

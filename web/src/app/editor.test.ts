@@ -1,6 +1,6 @@
 /** The editor's reducer: params and growth volumes share one undo history. */
 import { describe, expect, it } from 'vitest';
-import type { VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { VolumePrimitive } from 'sylva-trees/core';
 import { editorReducer, initialEditor, undoable, type EditorAction } from './editor';
 
 const sphere: VolumePrimitive = {

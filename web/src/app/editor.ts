@@ -3,7 +3,7 @@
  * undo/redo history live in one state, so a volume edit undoes like a slider. The app shows each
  * new state (a generation request, the URL, the overlay); nothing else holds a copy.
  */
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 import { canRedo, canUndo, record, redo, startHistory, undo, type History } from './history';
 
 /** Everything the user edits. */

@@ -1,6 +1,6 @@
 /** Tests of the undo/redo stack and its keyboard shortcuts. */
 import { describe, expect, it } from 'vitest';
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 import {
   COALESCE_MS,
   historyShortcut,

@@ -5,7 +5,7 @@
  * undo step, while presets, Reset, Randomize and adding or removing a primitive are always
  * steps of their own.
  */
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 
 /** Changes of one key closer together than this (ms) are one undo step. */
 export const COALESCE_MS = 1000;
@@ -46,7 +46,7 @@ export interface History {
 }
 
 function sameParams(a: Params, b: Params): boolean {
-  const keys = Object.keys(a);
+  const keys = Object.keys(a) as (keyof Params)[];
   if (keys.length !== Object.keys(b).length) return false;
   return keys.every((k) => Object.is(a[k], b[k]));
 }

@@ -1,7 +1,7 @@
 /** Tests of the initial-params choice between page URL, localStorage and defaults. */
 import { describe, expect, it } from 'vitest';
-import { defaultParams } from '../../../packages/sylva-trees/src/core/params';
-import { realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
+import { defaultParams } from 'sylva-trees/core';
+import { realRegistry } from 'sylva-trees/testing';
 import { loadInitialParams, STORAGE_KEY, type KeyValueStore } from './persistence';
 
 const registry = realRegistry();

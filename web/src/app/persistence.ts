@@ -1,11 +1,6 @@
 /** Share-URL and localStorage persistence of the current params (load on start, debounced save). */
-import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
-import {
-  buildSearch,
-  decodeQuery,
-  encodeParams,
-  type DecodeResult,
-} from '../../../packages/sylva-trees/src/url/codec';
+import type { Params, ParamSpec } from 'sylva-trees/core';
+import { buildSearch, decodeQuery, type DecodeResult, encodeParams } from 'sylva-trees/url';
 
 /** localStorage key holding the last params as a share query string. */
 export const STORAGE_KEY = 'sylva.params.v1';

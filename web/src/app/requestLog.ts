@@ -3,7 +3,7 @@
  * which answer re-frames the camera, and the log of applied trees that the debug hook exposes
  * (benchmarks read the answer times from it).
  */
-import type { ResultResponse } from '../../../packages/sylva-trees/src/worker/protocol';
+import type { ResultResponse } from 'sylva-trees/worker';
 import type { TreeApplied } from './debugHook';
 import { emitDebug } from './debugHook';
 import type { StatsStore } from './statsStore';

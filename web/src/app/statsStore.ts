@@ -3,7 +3,7 @@
  * only the overlay, not the whole app (`useSyncExternalStore`), so a slider drag does not
  * re-render the panel once per answer.
  */
-import type { TreeMeta } from '../../../packages/sylva-trees/src/core/types';
+import type { TreeMeta } from 'sylva-trees/core';
 
 /** Per-tree numbers shown in the stats overlay. */
 export type TreeStats = Pick<TreeMeta, 'vertices' | 'triangles' | 'hash' | 'total_ms' | 'stems'> & {

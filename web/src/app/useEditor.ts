@@ -5,7 +5,7 @@
  * the worker already runs while the panel re-renders.
  */
 import { useCallback, useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 import {
   editorReducer,
   initialEditor,

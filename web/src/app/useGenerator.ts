@@ -1,14 +1,9 @@
 /** React hook wiring the scheduler to the viewer (mesh via refs) and to small React state. */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type {
-  Params,
-  SylvaError,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
+import type { Params, SylvaError, VolumePrimitive } from 'sylva-trees/core';
 import { createGeneratorWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
-import { GenerationScheduler } from '../../../packages/sylva-trees/src/worker/scheduler';
+import { GenerationScheduler, type ReadyInfo } from 'sylva-trees/worker';
 import { debugMode, installDebugHook } from './debugHook';
 import { RequestLog, showResult } from './requestLog';
 import { StatsStore } from './statsStore';
@@ -86,8 +81,11 @@ export function useGenerator(
     );
     schedulerRef.current = scheduler;
     const uninstall = installDebugHook({
-      panic: () => scheduler.debugPanic(),
-      hang: (ms) => scheduler.debugHang(ms),
+      // Only the debug build's worker (`vite build --mode debug`, web/dist-debug) has the test
+      // hooks that `panic` and `hang` drive; the shipped app leaves them out.
+      ...(import.meta.env.MODE === 'debug'
+        ? { panic: () => scheduler.debugPanic(), hang: (ms: number) => scheduler.debugHang(ms) }
+        : {}),
       setTimeLimit: (ms) => {
         scheduler.timeLimitMs = ms;
       },

@@ -6,19 +6,16 @@
  * move (the scheduler is latest-wins, so only the newest shape is ever waited for).
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type {
-  Params,
-  VolumeGroup,
-  VolumeKind,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
-import type { EditorChange } from './useEditor';
-import { MAX_VOLUMES, newVolume } from '../../../packages/sylva-trees/src/core/volumes';
 import {
-  decodeVolumes,
-  encodeVolumes,
-  VOLUMES_KEY,
-} from '../../../packages/sylva-trees/src/url/codec';
+  MAX_VOLUMES,
+  newVolume,
+  type Params,
+  type VolumeGroup,
+  type VolumeKind,
+  type VolumePrimitive,
+} from 'sylva-trees/core';
+import type { EditorChange } from './useEditor';
+import { decodeVolumes, encodeVolumes, VOLUMES_KEY } from 'sylva-trees/url';
 import { GrowthOverlay } from '../viewer/GrowthOverlay';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { installDebugHook } from './debugHook';

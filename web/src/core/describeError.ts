@@ -1,5 +1,5 @@
 /** Human-readable text of a generator error (the app's banner, the embed's status line). */
-import type { ParamSpec, SylvaError } from '../../../packages/sylva-trees/src/core/types';
+import type { ParamSpec, SylvaError } from 'sylva-trees/core';
 
 /** `crashed` opens the text of a panic (the app adds that the worker was restarted). */
 export function describeError(

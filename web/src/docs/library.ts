@@ -2,7 +2,7 @@
  * The text of the docs page's `sylva-trees` section: the example and the API rows. Every member
  * a row names is typed against the package's exports, so a renamed call fails the type check.
  */
-import type * as Package from '../../../packages/sylva-trees/src/index';
+import type * as Package from 'sylva-trees';
 
 type Tree = Package.SylvaTree;
 

@@ -1,12 +1,8 @@
 /** The docs page: loads the wasm core on the main thread for its registry, then renders. */
 import { StrictMode } from 'react';
 import { createRoot } from 'react-dom/client';
-import { parsePresets, parseRegistry } from '../../../packages/sylva-trees/src/core/parse';
-import init, {
-  core_version,
-  presets_json,
-  registry_json,
-} from '../../../packages/sylva-trees/src/wasm/sylva_wasm.js';
+import { parsePresets, parseRegistry } from 'sylva-trees/core';
+import { loadWasmHere } from 'sylva-trees/worker';
 import { DocsPage } from './DocsPage';
 import { buildDocsModel } from './model';
 import '../fonts.css';
@@ -16,12 +12,13 @@ const rootElement = document.getElementById('root');
 if (!rootElement) throw new Error('missing #root');
 const root = createRoot(rootElement);
 
-init()
-  .then(() => {
-    const model = buildDocsModel(parseRegistry(registry_json()), parsePresets(presets_json()));
+loadWasmHere()
+  .then((wasm) => {
+    const registry = parseRegistry(wasm.registry_json());
+    const model = buildDocsModel(registry, parsePresets(wasm.presets_json()));
     root.render(
       <StrictMode>
-        <DocsPage model={model} version={core_version()} pageHref={window.location.href} />
+        <DocsPage model={model} version={wasm.core_version()} pageHref={window.location.href} />
       </StrictMode>,
     );
   })

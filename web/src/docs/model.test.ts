@@ -1,8 +1,7 @@
 /** The docs page's reference model, built from the real registry. */
 import { describe, expect, it } from 'vitest';
-import { groupParams } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
-import { realPresets, realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
+import { groupParams, type ParamSpec } from 'sylva-trees/core';
+import { realPresets, realRegistry } from 'sylva-trees/testing';
 import { anchorOf, buildDocsModel, defaultText, rangeText } from './model';
 
 const registry = realRegistry();
@@ -34,7 +33,7 @@ describe('buildDocsModel', () => {
 
 describe('display text', () => {
   const spec = (over: Partial<ParamSpec>): ParamSpec => ({
-    id: 'x',
+    id: 'ratio',
     group: 'G',
     label: 'X',
     kind: 'float',

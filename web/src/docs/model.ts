@@ -3,9 +3,8 @@
  * the panel): groups in panel order, and per parameter its label, id, kind, unit, description,
  * default and range as display text.
  */
-import { displayValue, groupParams } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec, Preset } from '../../../packages/sylva-trees/src/core/types';
-import { formatNumber } from '../../../packages/sylva-trees/src/url/codec';
+import { displayValue, groupParams, type ParamSpec, type Preset } from 'sylva-trees/core';
+import { formatNumber } from 'sylva-trees/url';
 
 /** One parameter row of the reference. */
 export interface DocsParam {

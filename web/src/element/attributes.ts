@@ -2,13 +2,14 @@
  * `<sylva-tree>` attributes → generator params (pure): the `preset` (or the defaults), then the
  * `params` query (`id=value&...`, validated exactly like a share link), then `seed`.
  */
-import { applyPreset, defaultParams } from '../../../packages/sylva-trees/src/core/params';
-import type {
-  ParamSpec,
-  Params,
-  Preset,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
+import {
+  applyPreset,
+  defaultParams,
+  type Params,
+  type ParamSpec,
+  type Preset,
+  type VolumePrimitive,
+} from 'sylva-trees/core';
 import {
   decodeVolumes,
   FORMAT_VERSION,
@@ -16,7 +17,7 @@ import {
   parseValue,
   shown,
   VOLUMES_KEY,
-} from '../../../packages/sylva-trees/src/url/codec';
+} from 'sylva-trees/url';
 
 /** The attributes that choose the tree. */
 export interface TreeAttributes {
@@ -81,7 +82,7 @@ export function resolveTreeAttributes(
   if (query.length > MAX_QUERY_LENGTH) {
     return fail(`The params attribute is too long (limit ${MAX_QUERY_LENGTH} characters).`);
   }
-  const byId = new Map(registry.map((s) => [s.id, s]));
+  const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
   const seen = new Set<string>();
   for (const piece of query.split('&')) {
     if (piece.trim() === '') continue;
@@ -115,7 +116,7 @@ export function resolveTreeAttributes(
     }
     seen.add(key);
     const value = parseValue(spec, raw);
-    if (typeof value === 'number') params[key] = value;
+    if (typeof value === 'number') params[spec.id] = value;
     else note(`Ignored "${key}" in params: ${value}.`);
   }
 

@@ -4,9 +4,8 @@
  * A worker must be same-origin: from another origin a tiny module worker made from a blob: URL
  * imports the real one (the host then needs CORS, and the page's CSP must allow blob: workers).
  */
-import workerUrl from '../../../packages/sylva-trees/src/worker/worker.ts?worker&url';
-import type { WorkerHandle } from '../../../packages/sylva-trees/src/worker/client';
-import { adaptWorker } from '../../../packages/sylva-trees/src/runtime/workerHandle';
+import workerUrl from 'sylva-trees/worker-script?worker&url';
+import { adaptWorker, type WorkerHandle } from 'sylva-trees/worker';
 
 /** Absolute URL of the built worker script. */
 export function generatorWorkerUrl(): URL {

@@ -4,13 +4,9 @@
  * and a status line (loading, errors) drawn as text over the view. No React.
  */
 import { describeError } from '../core/describeError';
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 import { TreeViewer } from '../viewer/TreeViewer';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
-import {
-  GenerationScheduler,
-  type GeneratorFactory,
-} from '../../../packages/sylva-trees/src/worker/scheduler';
+import { GenerationScheduler, type GeneratorFactory, type ReadyInfo } from 'sylva-trees/worker';
 import type { Background } from './options';
 
 /** What to generate once the registry is known (or why nothing can be generated). */

@@ -3,11 +3,7 @@
  * link with orbit controls and an "Open in Sylva" link; errors are shown in the frame.
  */
 import { createModuleWorker } from '../createWorker';
-import {
-  decodeQuery,
-  decodeVolumes,
-  VOLUMES_KEY,
-} from '../../../packages/sylva-trees/src/url/codec';
+import { decodeQuery, decodeVolumes, VOLUMES_KEY } from 'sylva-trees/url';
 import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
 import { TreeEmbed, type EmbedState } from './TreeEmbed';
 import { cameraOf, lookFrom } from '../viewer/cameraView';

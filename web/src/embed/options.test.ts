@@ -1,8 +1,8 @@
 /** Embed options, the "Open in Sylva" query and the embed snippets. */
 import { describe, expect, it } from 'vitest';
-import { defaultParams } from '../../../packages/sylva-trees/src/core/params';
-import { realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
-import { decodeQuery } from '../../../packages/sylva-trees/src/url/codec';
+import { defaultParams } from 'sylva-trees/core';
+import { realRegistry } from 'sylva-trees/testing';
+import { decodeQuery } from 'sylva-trees/url';
 import {
   appQuery,
   elementSnippet,

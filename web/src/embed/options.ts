@@ -9,8 +9,8 @@ import {
   MAX_QUERY_LENGTH,
   shown,
   VOLUMES_KEY,
-} from '../../../packages/sylva-trees/src/url/codec';
-import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
+} from 'sylva-trees/url';
+import type { Params, ParamSpec } from 'sylva-trees/core';
 
 /** How the viewer background is drawn. */
 export type Background =

@@ -4,21 +4,17 @@
  * to choose it), "Copy embed code" and a link to the docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type {
-  ParamSpec,
-  Params,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
+import type { Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { useDismiss } from '../ui/useDismiss';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { downloadBlob } from './download';
-import { ExportClient } from '../../../packages/sylva-trees/src/export/exportClient';
-import type {
-  ExportFormat,
-  ExportResponse,
-  LeafExport,
-} from '../../../packages/sylva-trees/src/export/exportProtocol';
+import {
+  ExportClient,
+  type ExportFormat,
+  type ExportResponse,
+  type LeafExport,
+} from 'sylva-trees/worker';
 import { presetFileName } from './presetFile';
 import {
   EmbedButton,

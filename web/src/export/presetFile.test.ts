@@ -1,7 +1,7 @@
 /** Preset JSON files: save → load round trip, and clear errors for bad files. */
 import { describe, expect, it } from 'vitest';
-import { applyPreset, defaultParams } from '../../../packages/sylva-trees/src/core/params';
-import { realPresets, realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
+import { applyPreset, defaultParams } from 'sylva-trees/core';
+import { realPresets, realRegistry } from 'sylva-trees/testing';
 import { parsePresetFile, presetFileName, presetFileText } from './presetFile';
 
 const registry = realRegistry();

@@ -3,9 +3,8 @@
  * each value with the share-link validation (`parseValue`), so a file can hold nothing a link
  * could not; any bad value rejects the whole file (the current tree stays).
  */
-import { defaultParams, normalizeValue } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec, Params } from '../../../packages/sylva-trees/src/core/types';
-import { formatNumber, parseValue, shown } from '../../../packages/sylva-trees/src/url/codec';
+import { defaultParams, normalizeValue, type Params, type ParamSpec } from 'sylva-trees/core';
+import { formatNumber, parseValue, shown } from 'sylva-trees/url';
 
 /** Format version written as `"sylva"`. */
 export const PRESET_FILE_VERSION = 1;
@@ -67,7 +66,7 @@ export function parsePresetFile(registry: readonly ParamSpec[], text: string): P
   if (!isRecord(data.params)) {
     return { ok: false, error: 'The preset file has no "params" object.' };
   }
-  const byId = new Map(registry.map((s) => [s.id, s]));
+  const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
   const params = defaultParams(registry);
   const problems: string[] = [];
   const unknown: string[] = [];
@@ -87,7 +86,7 @@ export function parsePresetFile(registry: readonly ParamSpec[], text: string): P
           : null;
     const parsed = raw === null ? `${shown(JSON.stringify(value) ?? '')} is not a number` : null;
     const result = parsed ?? parseValue(spec, raw ?? '');
-    if (typeof result === 'number') params[id] = result;
+    if (typeof result === 'number') params[spec.id] = result;
     else problems.push(`${spec.label} (${id}): ${result}`);
   }
   if (problems.length > 0) {

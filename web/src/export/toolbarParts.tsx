@@ -3,13 +3,9 @@
  * and the file actions (PNG screenshot, preset JSON save and load).
  */
 import { useEffect, useState, type RefObject } from 'react';
-import type {
-  ParamSpec,
-  Params,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
+import type { Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
 import { EmbedDialog } from '../embed/EmbedDialog';
-import { encodeVolumes } from '../../../packages/sylva-trees/src/url/codec';
+import { encodeVolumes } from 'sylva-trees/url';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { canvasPng, downloadBlob, readTextFile } from './download';
 import { MAX_PRESET_FILE_BYTES, parsePresetFile, presetFileText } from './presetFile';

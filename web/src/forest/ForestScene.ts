@@ -7,11 +7,15 @@
  * uploaded and `.count` set, so the number of draw calls is bounded by
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
-import { leafTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
+import {
+  applyLeafCoverage,
+  impostorLights,
+  leafTexture,
+  SceneLights,
+  wrapInstances,
+} from 'sylva-trees/viewer';
 import { fitToContainer } from '../viewer/cameraView';
 import type { Sphere, InstancedMesh } from 'three';
-import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
-import { impostorLights, SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
 import {
   Color,
   DoubleSide,
@@ -43,11 +47,11 @@ import {
   cloudGeometry,
   cloudMaterial,
   clumpTexture,
-  mergedLeafGeometry,
+  bakedLeafGeometry,
   treeSphere,
 } from '../lod/lodObjects';
 import { switchDistances } from '../lod/selection';
-import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
+import type { LodBuffers } from 'sylva-trees/worker';
 import {
   assignLods,
   createBuckets,
@@ -56,7 +60,6 @@ import {
   type ForestLayout,
   type LodBuckets,
 } from './layout';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 
 /** Meshes (so draw calls) per variety: 3 levels × 2 materials + the impostor. */
 export const MESHES_PER_VARIETY = 7;
@@ -202,7 +205,7 @@ export class ForestScene {
     for (let l = 0; l < 3; l++) {
       const level = lods.levels[l]!;
       const list = [{ geometry: own(barkGeometry(level)), material: bark as Material }];
-      const merged = mergedLeafGeometry(level);
+      const merged = bakedLeafGeometry(level);
       if (merged) list.push({ geometry: own(merged), material: leaves });
       const cloud = cloudGeometry(level);
       if (cloud) {

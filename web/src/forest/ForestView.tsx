@@ -5,12 +5,11 @@
  * in a worker of their own, one request per variety.
  */
 import { useEffect, useRef, useState } from 'react';
-import { applyPreset } from '../../../packages/sylva-trees/src/core/params';
-import type { Params } from '../../../packages/sylva-trees/src/core/types';
+import { applyPreset, type Params } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { installDebugHook } from '../app/debugHook';
 import { LodClient } from '../lod/lodClient';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
+import type { ReadyInfo } from 'sylva-trees/worker';
 import { ForestScene, type ForestStats } from './ForestScene';
 
 /** Presets the forest mixes (those present are used, in this order). */
@@ -132,7 +131,8 @@ export function ForestView({ info }: { info: ReadyInfo }) {
     const scene = new ForestScene(container);
     sceneRef.current = scene;
     scene.setCount(countRef.current);
-    const client = new LodClient(createModuleWorker, false);
+    // Queued, and with the leaves baked in the worker (the forest draws them as one mesh).
+    const client = new LodClient(createModuleWorker, false, true);
     const all = varietyParams(info).slice(0, varietyLimit());
     setTotal(all.length);
     const stop = loadVarieties(client, all, scene, {

@@ -4,19 +4,14 @@
  * overwrite; a crashed worker is recreated and the pending request sent to the new one (all of
  * it in [`WorkerClient`]).
  */
-import type {
-  LeafInspection,
-  Params,
-  Preset,
-  SylvaError,
-} from '../../../packages/sylva-trees/src/core/types';
-import { WorkerClient } from '../../../packages/sylva-trees/src/worker/client';
-import type {
-  GeneratorWorkerFactory,
-  LeafRequest,
-  WorkerRequest,
-  WorkerResponse,
-} from '../../../packages/sylva-trees/src/worker/protocol';
+import type { LeafInspection, LeafPreset, Params, SylvaError } from 'sylva-trees/core';
+import {
+  type GeneratorWorkerFactory,
+  type LeafRequest,
+  WorkerClient,
+  type WorkerRequest,
+  type WorkerResponse,
+} from 'sylva-trees/worker';
 
 /** What the inspector asks for. */
 export type LeafQuery = Omit<LeafRequest, 'type' | 'id'>;
@@ -26,7 +21,7 @@ export interface LeafCallbacks {
   onLeaf(leaf: LeafInspection, id: number): void;
   onError(error: SylvaError): void;
   /** The worker is ready; carries the leaf presets. */
-  onPresets?(presets: Preset[]): void;
+  onPresets?(presets: LeafPreset[]): void;
 }
 
 /** Owns the inspector's worker. */

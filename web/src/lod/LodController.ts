@@ -5,12 +5,12 @@
  * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
  * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
  */
-import { leafTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
-import { applyLeafCoverage } from '../../../packages/sylva-trees/src/viewer/leafCoverage';
 import {
+  applyLeafCoverage,
   LEAF_INSTANCED_MATERIAL_KEY,
   LEAF_MATRICES_KEY,
-} from '../../../packages/sylva-trees/src/viewer/Foliage';
+  leafTexture,
+} from 'sylva-trees/viewer';
 import {
   BufferAttribute,
   BufferGeometry,
@@ -27,12 +27,8 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import type {
-  Params,
-  TreeBuffers,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
-import type { OverlayHost } from '../viewer/TreeViewer';
+import type { Params, TreeBuffers, VolumePrimitive } from 'sylva-trees/core';
+import type { OverlayHost } from '../viewer/overlayHost';
 import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
 import type { ImpostorAtlas } from './impostor';
 import { SUPERSEDED, type LodClient } from './lodClient';
@@ -48,7 +44,7 @@ import {
   treeSphere,
 } from './lodObjects';
 import { IMPOSTOR_LEVEL, screenFraction, selectLod } from './selection';
-import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
+import type { LodBuffers } from 'sylva-trees/worker';
 
 /** Auto (by screen size), a forced level 0..3, or (tests) nothing drawn. */
 export type LodMode = 'auto' | 0 | 1 | 2 | 3 | 'hidden';

@@ -5,11 +5,11 @@
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { installDebugHook } from '../app/debugHook';
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { ForestView } from '../forest/ForestView';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import type { ReadyInfo } from '../../../packages/sylva-trees/src/worker/protocol';
+import type { ReadyInfo } from 'sylva-trees/worker';
 import { LodClient } from './lodClient';
 import { LodController, type LodMode, type LodState } from './LodController';
 import { LEVEL_NAMES } from './selection';

@@ -1,7 +1,9 @@
 /**
- * Hemi-octahedral mapping (ANCHORS §6, octahedral impostors): unit directions of the upper
- * hemisphere (y ≥ 0, Y up) ↔ points of the unit square. The direction is projected onto the
- * octahedron |x| + |y| + |z| = 1, its (x, z) rotated by 45° into the square:
+ * Hemi-octahedral mapping (the hemi-oct encoding of Cigolle et al., "A Survey of Efficient
+ * Representations for Independent Unit Vectors", JCGT 3(2), 2014, as octahedral impostors use
+ * it): unit directions of the upper hemisphere (y ≥ 0, Y up) ↔ points of the unit square. The
+ * direction is projected onto the octahedron |x| + |y| + |z| = 1, its (x, z) rotated by 45° into
+ * the square:
  *
  *   encode(d) = ((px + pz, px − pz) + 1) / 2  with  (px, pz) = (dx, dz) / (|dx| + |dy| + |dz|)
  *

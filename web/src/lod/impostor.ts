@@ -1,5 +1,5 @@
 /**
- * Octahedral impostors (ANCHORS §6), baked in the browser:
+ * Octahedral impostors (docs/user-guide.md, Levels of detail), baked in the browser:
  *
  * * **Bake**: the LOD0 tree is rendered from the `n × n` view directions of a hemi-octahedral
  *   grid (`hemiOct.ts`) with an orthographic camera fitted to its bounding sphere, one frame per
@@ -36,12 +36,8 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import {
-  impostorLights,
-  type ImpostorLights,
-} from '../../../packages/sylva-trees/src/viewer/lighting';
+import { impostorLights, type ImpostorLights, wrapInstances } from 'sylva-trees/viewer';
 import { frameDirection, viewBasis } from './hemiOct';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
 import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
 import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
 import impostorVertex from './shaders/impostor.vert.glsl?raw';

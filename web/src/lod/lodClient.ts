@@ -5,14 +5,15 @@
  * with `superseded`); a crashed worker rejects what it held and is restarted on the next request
  * (all of it in [`WorkerClient`]; the worker starts with the first request).
  */
-import type { Params, VolumePrimitive } from '../../../packages/sylva-trees/src/core/types';
-import { WorkerClient, type DropReason } from '../../../packages/sylva-trees/src/worker/client';
-import type {
-  GeneratorWorkerFactory,
-  WorkerRequest,
-  WorkerResponse,
-} from '../../../packages/sylva-trees/src/worker/protocol';
-import type { LodBuffers } from '../../../packages/sylva-trees/src/lod/types';
+import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import {
+  type DropReason,
+  type GeneratorWorkerFactory,
+  type LodBuffers,
+  WorkerClient,
+  type WorkerRequest,
+  type WorkerResponse,
+} from 'sylva-trees/worker';
 
 /** Rejection reason of a request replaced by a newer one. */
 export const SUPERSEDED = 'superseded';
@@ -37,13 +38,21 @@ export class LodClient {
   private readonly client: WorkerClient<Waiting, WorkerRequest, WorkerResponse>;
   private nextId = 1;
 
-  /** `latestWins`: false queues every request (the forest asks for several trees in turn). */
-  constructor(factory: GeneratorWorkerFactory, latestWins = true) {
+  /**
+   * `latestWins`: false queues every request (the forest asks for several trees in turn).
+   * `bakeLeaves`: every level also comes with its leaves baked into one mesh, in the worker.
+   */
+  constructor(factory: GeneratorWorkerFactory, latestWins = true, bakeLeaves = false) {
     this.client = new WorkerClient<Waiting, WorkerRequest, WorkerResponse>(
       factory,
       {
-        message: ({ id, params, volumes }) =>
-          volumes?.length ? { type: 'lods', id, params, volumes } : { type: 'lods', id, params },
+        message: ({ id, params, volumes }) => ({
+          type: 'lods',
+          id,
+          params,
+          ...(volumes?.length ? { volumes } : {}),
+          ...(bakeLeaves ? { bakeLeaves } : {}),
+        }),
         ends: (response, job) =>
           (response.type === 'lods' || response.type === 'error') && response.id === job.id,
         receive: (response, answered) => {

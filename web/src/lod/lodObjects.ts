@@ -19,17 +19,15 @@ import {
   type Material,
   type Texture,
 } from 'three';
-import type { LeafTextureBuffers } from '../../../packages/sylva-trees/src/core/types';
-import { attachBarkAttributes } from '../../../packages/sylva-trees/src/viewer/barkLook';
-import { mulberry32 } from '../forest/layout';
+import type { LeafTextureBuffers } from 'sylva-trees/core';
 import {
-  QUAD_FLOATS,
-  type LodBuffers,
-  type LodLevelBuffers,
-} from '../../../packages/sylva-trees/src/lod/types';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
-import { LEAF_TRANSLUCENCY } from '../../../packages/sylva-trees/src/viewer/Foliage';
-import { srgbTexture } from '../../../packages/sylva-trees/src/viewer/leafTexture';
+  attachBarkAttributes,
+  LEAF_TRANSLUCENCY,
+  srgbTexture,
+  wrapInstances,
+} from 'sylva-trees/viewer';
+import { mulberry32 } from '../forest/layout';
+import { type LodBuffers, type LodLevelBuffers, QUAD_FLOATS } from 'sylva-trees/worker';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';
@@ -70,69 +68,15 @@ export function leafMesh(level: LodLevelBuffers, material: Material): InstancedM
 }
 
 /**
- * All leaf instances of a level merged into one geometry (positions and normals transformed,
- * the tint as a vertex colour): what the forest instances per tree, since three.js cannot
- * instance an instanced mesh.
+ * A level's leaves as one geometry (what the forest instances per tree, since three.js cannot
+ * instance an instanced mesh): the buffers the LOD worker baked with the core's exporter
+ * (`LodClient` with `bakeLeaves`), wrapped as they are, the tint as a vertex colour; null when
+ * the level has none.
  */
-export function mergedLeafGeometry(level: LodLevelBuffers): BufferGeometry | null {
-  const count = level.leafColors.length / 3;
-  const vp = level.leafPositions;
-  const vn = level.leafNormals;
-  const nv = vp.length / 3;
-  if (count === 0 || level.leafIndices.length === 0) return null;
-  const positions = new Float32Array(count * nv * 3);
-  const normals = new Float32Array(count * nv * 3);
-  const uvs = new Float32Array(count * nv * 2);
-  const colors = new Float32Array(count * nv * 3);
-  const indices = new Uint32Array(count * level.leafIndices.length);
-  const m = level.leafMatrices;
-  for (let k = 0; k < count; k++) {
-    const o = k * 16;
-    const [a0, a1, a2, b0, b1, b2, c0, c1, c2] = [
-      m[o]!,
-      m[o + 1]!,
-      m[o + 2]!,
-      m[o + 4]!,
-      m[o + 5]!,
-      m[o + 6]!,
-      m[o + 8]!,
-      m[o + 9]!,
-      m[o + 10]!,
-    ];
-    const [tx, ty, tz] = [m[o + 12]!, m[o + 13]!, m[o + 14]!];
-    // Normal matrix: the cofactor matrix (inverse transpose up to scale), rows = a×b etc.
-    const na = [b1 * c2 - b2 * c1, b2 * c0 - b0 * c2, b0 * c1 - b1 * c0];
-    const nb = [c1 * a2 - c2 * a1, c2 * a0 - c0 * a2, c0 * a1 - c1 * a0];
-    const nc = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0];
-    const base = k * nv;
-    for (let i = 0; i < nv; i++) {
-      const x = vp[i * 3]!;
-      const y = vp[i * 3 + 1]!;
-      const z = vp[i * 3 + 2]!;
-      const p = (base + i) * 3;
-      positions[p] = a0 * x + b0 * y + c0 * z + tx;
-      positions[p + 1] = a1 * x + b1 * y + c1 * z + ty;
-      positions[p + 2] = a2 * x + b2 * y + c2 * z + tz;
-      const nx = vn[i * 3]!;
-      const ny = vn[i * 3 + 1]!;
-      const nz = vn[i * 3 + 2]!;
-      const wx = na[0]! * nx + nb[0]! * ny + nc[0]! * nz;
-      const wy = na[1]! * nx + nb[1]! * ny + nc[1]! * nz;
-      const wz = na[2]! * nx + nb[2]! * ny + nc[2]! * nz;
-      const len = Math.hypot(wx, wy, wz) || 1;
-      normals[p] = wx / len;
-      normals[p + 1] = wy / len;
-      normals[p + 2] = wz / len;
-      colors[p] = level.leafColors[k * 3]!;
-      colors[p + 1] = level.leafColors[k * 3 + 1]!;
-      colors[p + 2] = level.leafColors[k * 3 + 2]!;
-      uvs[(base + i) * 2] = level.leafUvs[i * 2]!;
-      uvs[(base + i) * 2 + 1] = level.leafUvs[i * 2 + 1]!;
-    }
-    const li = level.leafIndices;
-    for (let t = 0; t < li.length; t++) indices[k * li.length + t] = li[t]! + base;
-  }
-  return coloredGeometry(positions, normals, uvs, colors, indices);
+export function bakedLeafGeometry(level: LodLevelBuffers): BufferGeometry | null {
+  const baked = level.bakedLeaves;
+  if (!baked || baked.indices.length === 0) return null;
+  return coloredGeometry(baked.positions, baked.normals, baked.uvs, baked.colors, baked.indices);
 }
 
 /**

@@ -1,6 +1,6 @@
 /** Error banner: generator errors (naming the parameter) and share-link notices, as plain text. */
 import { describeError } from '../core/describeError';
-import type { ParamSpec, SylvaError } from '../../../packages/sylva-trees/src/core/types';
+import type { ParamSpec, SylvaError } from 'sylva-trees/core';
 
 interface Props {
   error: SylvaError | null;

@@ -1,7 +1,6 @@
 /** Growth section controls: add spheres, boxes and cylinders, pick one for the gizmo, remove. */
 import { useState } from 'react';
-import type { VolumeGroup, VolumeKind } from '../../../packages/sylva-trees/src/core/types';
-import { MAX_VOLUMES } from '../../../packages/sylva-trees/src/core/volumes';
+import { MAX_VOLUMES, type VolumeGroup, type VolumeKind } from 'sylva-trees/core';
 import type { GrowthEditor } from '../app/useGrowthEditor';
 
 const KINDS: VolumeKind[] = ['sphere', 'box', 'cylinder'];

@@ -8,14 +8,15 @@
  * style attributes, so the CSP holds).
  */
 import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import { groupParams, normalizeValue } from '../../../packages/sylva-trees/src/core/params';
-import type {
-  LeafInspection,
-  ParamSpec,
-  Params,
-  Preset,
-  SylvaError,
-} from '../../../packages/sylva-trees/src/core/types';
+import {
+  groupParams,
+  type LeafInspection,
+  normalizeValue,
+  type Params,
+  type ParamSpec,
+  type LeafPreset,
+  type SylvaError,
+} from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { downloadBlob } from '../export/download';
 import { LeafClient } from '../leaf/leafClient';
@@ -27,7 +28,7 @@ export const LEAF_GROUPS = ['Leaf', 'Leaf Veins', 'Leaf Surface'];
 interface Props {
   registry: readonly ParamSpec[];
   params: Params;
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   /** Applies several values at once (a leaf preset). */
   onChangeMany: (values: Params) => void;
 }
@@ -51,7 +52,7 @@ function downloadSvg(text: string, name: string): void {
 interface LeafDrawing {
   leaf: LeafInspection | null;
   error: SylvaError | null;
-  presets: Preset[];
+  presets: LeafPreset[];
   /** The element the SVG is adopted into. */
   viewRef: RefObject<HTMLDivElement | null>;
 }
@@ -67,7 +68,7 @@ function useLeafDrawing(
   const viewRef = useRef<HTMLDivElement | null>(null);
   const [leaf, setLeaf] = useState<LeafInspection | null>(null);
   const [error, setError] = useState<SylvaError | null>(null);
-  const [presets, setPresets] = useState<Preset[]>([]);
+  const [presets, setPresets] = useState<LeafPreset[]>([]);
   const [ready, setReady] = useState(false);
 
   useEffect(() => {

@@ -1,7 +1,6 @@
 /** Numeric input bound to a param: keeps the typed text while editing, commits valid values. */
 import { useState } from 'react';
-import { displayValue, snapToStep } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
+import { displayValue, type ParamSpec, snapToStep } from 'sylva-trees/core';
 
 interface Props {
   spec: ParamSpec;

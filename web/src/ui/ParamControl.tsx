@@ -1,14 +1,13 @@
 /** One registry-generated control: slider + number (float/int), checkbox (bool) or select (enum). */
 import { memo } from 'react';
-import { snapToStep } from '../../../packages/sylva-trees/src/core/params';
-import type { ParamSpec } from '../../../packages/sylva-trees/src/core/types';
+import { type ParamSpec, snapToStep } from 'sylva-trees/core';
 import { NumberField } from './NumberField';
 
 interface Props {
   spec: ParamSpec;
   value: number;
   /** `interactive`: a step of a drag or of typing (the full tree follows when it settles). */
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
 }
 
 /**

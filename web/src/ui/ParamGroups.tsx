@@ -3,14 +3,14 @@
  * registry group, and the options of a preset picker.
  */
 import type { ReactNode } from 'react';
-import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
+import type { Params, ParamSpec, Preset } from 'sylva-trees/core';
 import { ParamControl } from './ParamControl';
 
 interface Props {
   /** The groups in order, each with its parameters (`groupParams`). */
   groups: [string, ParamSpec[]][];
   params: Params;
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   /** Whether the section of `group` (at `index`) starts open. */
   open: (group: string, index: number) => boolean;
   /** Extra controls shown at the top of a group's section (e.g. the growth editor's tools). */
@@ -36,7 +36,7 @@ export function ParamGroups({ groups, params, onChange, open, extras }: Props) {
 }
 
 /** One `<option>` per preset (its name as the value, the description as a tooltip). */
-export function PresetOptions({ presets }: { presets: readonly Preset[] }) {
+export function PresetOptions({ presets }: { presets: readonly Preset<string>[] }) {
   return presets.map((p) => (
     <option key={p.name} value={p.name} title={p.description}>
       {p.label}

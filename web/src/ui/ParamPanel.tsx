@@ -1,7 +1,6 @@
 /** Side panel generated from the registry: presets, seed, Reset, and one section per group. */
-import { groupParams } from '../../../packages/sylva-trees/src/core/params';
+import { groupParams, type Params, type ParamSpec, type Preset } from 'sylva-trees/core';
 import type { ReactNode } from 'react';
-import type { ParamSpec, Params, Preset } from '../../../packages/sylva-trees/src/core/types';
 import { NumberField } from './NumberField';
 import { ParamGroups, PresetOptions } from './ParamGroups';
 
@@ -9,9 +8,9 @@ interface Props {
   registry: readonly ParamSpec[];
   presets: readonly Preset[];
   params: Params;
-  activePreset: string | null;
+  activePreset: Preset['name'] | null;
   version: string;
-  onChange: (id: string, value: number, interactive?: boolean) => void;
+  onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   onPreset: (name: string) => void;
   onRandomize: () => void;
   onReset: () => void;

@@ -14,7 +14,7 @@ import {
   saveWind,
   WIND_LIMITS,
   type WindSettings,
-} from '../../../packages/sylva-trees/src/viewer/windSettings';
+} from 'sylva-trees/viewer';
 import './WindControls.css';
 
 type NumericKey = 'strength' | 'direction' | 'gust';

@@ -19,15 +19,15 @@ import {
   type Object3D,
 } from 'three';
 import { TransformControls } from 'three/addons/controls/TransformControls.js';
-import type {
-  Params,
-  TreeBuffers,
-  VolumeGroup,
-  VolumeKind,
-  VolumePrimitive,
-} from '../../../packages/sylva-trees/src/core/types';
-import { normalizeVolume } from '../../../packages/sylva-trees/src/core/volumes';
-import type { OverlayHost } from './TreeViewer';
+import {
+  normalizeVolume,
+  type Params,
+  type TreeBuffers,
+  type VolumeGroup,
+  type VolumeKind,
+  type VolumePrimitive,
+} from 'sylva-trees/core';
+import type { OverlayHost } from './overlayHost';
 
 /** Wireframe colour per group (crown green, shadow grey, exclusion red); the params' crown blue. */
 export const GROUP_COLORS: Record<VolumeGroup, string> = {
@@ -246,7 +246,7 @@ export class GrowthOverlay {
 
   /** The crown (per start point) and the wall, from the params; rebuilt when they change. */
   private rebuildParamShapes(p: Params): void {
-    const ids = [
+    const ids: (keyof Params)[] = [
       'crown_volume',
       'crown_base',
       'crown_height',
@@ -262,7 +262,7 @@ export class GrowthOverlay {
     if (key === this.paramKey) return;
     this.paramKey = key;
     this.disposeParamShapes();
-    const v = (id: string, fallback: number) => p[id] ?? fallback;
+    const v = (id: keyof Params, fallback: number) => p[id] ?? fallback;
     const kind = v('crown_volume', 0);
     const base = v('crown_base', 2.5);
     const height = v('crown_height', 6);

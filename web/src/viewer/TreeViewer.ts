@@ -1,5 +1,6 @@
 /** The three.js scene: renderer, orbit camera, lights, ground and the tree mesh (render on demand). */
 import { fitToContainer } from './cameraView';
+import type { OverlayHost } from './overlayHost';
 import {
   Color,
   Fog,
@@ -17,15 +18,17 @@ import {
   WebGLRenderer,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { TreeBuffers, TreeUpdate } from '../../../packages/sylva-trees/src/core/types';
-import { SceneLights } from '../../../packages/sylva-trees/src/viewer/lighting';
-import type { WindController } from '../../../packages/sylva-trees/src/viewer/wind';
-import { TreeObject } from '../../../packages/sylva-trees/src/viewer/TreeObject';
-import { applySoftShadows } from '../../../packages/sylva-trees/src/viewer/softShadows';
+import type { TreeBuffers, TreeUpdate } from 'sylva-trees/core';
+import {
+  applySoftShadows,
+  buildEnvelopeGeometry,
+  SceneLights,
+  TreeObject,
+  type WindController,
+} from 'sylva-trees/viewer';
 import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
-import { buildEnvelopeGeometry } from '../../../packages/sylva-trees/src/viewer/geometry';
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';
@@ -33,18 +36,6 @@ const GROUND_COLOR = '#b9b3a5';
 const VIEW_DIRECTION = new Vector3(0.75, 0.32, 1).normalize();
 /** Time after which the scene is drawn even without a tree (ms). */
 const EMPTY_SCENE_DELAY_MS = 3000;
-
-/** See [`TreeViewer.overlayHost`]. */
-export interface OverlayHost {
-  scene: Scene;
-  camera: PerspectiveCamera;
-  domElement: HTMLCanvasElement;
-  orbit: OrbitControls;
-  requestRender(): void;
-  onTree(listener: (buffers: TreeBuffers) => void): () => void;
-  /** Subscribes to the current tree's content hash, which arrives after its buffers. */
-  onHash(listener: (hash: string) => void): () => void;
-}
 
 /** Owns every three.js object of the viewer; mesh data lives here, never in React state. */
 export class TreeViewer {

@@ -3,7 +3,7 @@
  * close-ups), and a canvas and camera fitted to their container.
  */
 import type { PerspectiveCamera, WebGLRenderer } from 'three';
-import type { OverlayHost } from './TreeViewer';
+import type { OverlayHost } from './overlayHost';
 
 /** Camera at `from`, orbiting `to` (metres, Y up); lets the orbit come as close as 5 cm. */
 export function lookFrom(

@@ -19,9 +19,8 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import type { TreeBuffers } from '../../../packages/sylva-trees/src/core/types';
-import { applyLeafPull, LeafPullData } from '../../../packages/sylva-trees/src/viewer/leafPull';
-import { wrapInstances } from '../../../packages/sylva-trees/src/viewer/instances';
+import type { TreeBuffers } from 'sylva-trees/core';
+import { applyLeafPull, LeafPullData, wrapInstances } from 'sylva-trees/viewer';
 
 /** What the comparison found. */
 export interface LeafPullCheck {

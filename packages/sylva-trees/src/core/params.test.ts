@@ -16,7 +16,7 @@ import {
 import { realPresets, realRegistry } from '../testing/realWasm';
 
 const float: ParamSpec = {
-  id: 'len',
+  id: 'l1_length',
   group: 'A',
   label: 'Length',
   kind: 'float',

@@ -3,9 +3,11 @@ import type {
   Bounds,
   LeafInspection,
   MeshGroup,
+  ParamId,
   ParamKind,
   ParamSpec,
   Preset,
+  PresetId,
   SylvaError,
   SylvaErrorKind,
   Stage,
@@ -81,7 +83,8 @@ function parseParamSpec(value: unknown, index: number): ParamSpec {
     throw new ContractError(`${where}.kind: unknown kind "${kind}"`);
   }
   const spec: ParamSpec = {
-    id: str(o, 'id', where),
+    // The core's ids are `ParamId`'s (the generated types are checked against the core).
+    id: str(o, 'id', where) as ParamId,
     group: str(o, 'group', where),
     label: str(o, 'label', where),
     kind: kind as ParamKind,
@@ -110,13 +113,17 @@ export function parseRegistry(text: string): ParamSpec[] {
   return array(JSON.parse(text), 'registry').map(parseParamSpec);
 }
 
-/** Parses and validates `presets_json()` output. */
-export function parsePresets(text: string): Preset[] {
+/**
+ * Parses and validates `presets_json()` output (or, with `Name` = `LeafPresetId`,
+ * `leaf_presets_json()`'s). Names and value ids are the core's, which the generated
+ * `PresetId`, `LeafPresetId` and `ParamId` are checked against.
+ */
+export function parsePresets<Name extends string = PresetId>(text: string): Preset<Name>[] {
   return array(JSON.parse(text), 'presets').map((value, i) => {
     const where = `presets[${i}]`;
     const o = record(value, where);
     return {
-      name: str(o, 'name', where),
+      name: str(o, 'name', where) as Name,
       label: str(o, 'label', where),
       description: typeof o.description === 'string' ? o.description : '',
       values: numberRecord(o.values, `${where}.values`),

@@ -1,4 +1,15 @@
 /** Shared data types of the Sylva wasm contract (registry, presets, errors, mesh metadata). */
+import type { LeafPresetId, ParamId, PresetId } from './generated/params';
+
+// Generated from the core's registry and presets (`npm run docs`, `sylva params --typescript`).
+export type {
+  EnumParamId,
+  LeafPresetId,
+  ParamId,
+  ParamOptions,
+  PresetId,
+  PresetValues,
+} from './generated/params';
 
 /** Kind of a generator parameter; every value is a number on the wire (bool 0/1, enum index). */
 export type ParamKind = 'float' | 'int' | 'bool' | 'enum';
@@ -11,7 +22,7 @@ export type Stage = 'skeleton' | 'mesh' | 'foliage' | 'leaf' | 'viewer';
 
 /** One entry of `registry_json()`: describes a generator parameter and its valid range. */
 export interface ParamSpec {
-  id: string;
+  id: ParamId;
   group: string;
   label: string;
   kind: ParamKind;
@@ -26,16 +37,22 @@ export interface ParamSpec {
   stage?: Stage;
 }
 
-/** One entry of `presets_json()`: only the non-default values are listed. */
-export interface Preset {
-  name: string;
+/**
+ * One entry of `presets_json()` (a tree preset) or `leaf_presets_json()` (a leaf preset, with
+ * `Name` = `LeafPresetId`): only the non-default values are listed.
+ */
+export interface Preset<Name extends string = PresetId> {
+  name: Name;
   label: string;
   description: string;
-  values: Record<string, number>;
+  values: Params;
 }
 
-/** Parameter values keyed by param id. */
-export type Params = Record<string, number>;
+/** A leaf preset (`leaf_presets_json()`). */
+export type LeafPreset = Preset<LeafPresetId>;
+
+/** Parameter values keyed by param id (a full set, or some of them). */
+export type Params = Partial<Record<ParamId, number>>;
 
 /**
  * Error kinds the core reports (`panic` is also used for worker crashes; `timeout` is a
@@ -320,7 +337,6 @@ export interface WasmApi {
   /** `generate` calling `progress(fraction)` during growth (optional: fakes may omit it). */
   generate_with_progress?(paramsJson: string, progress: (fraction: number) => void): WasmTree;
   take_panic(): string | undefined;
-  debug_panic(): void;
   leaf_inspect?(paramsJson: string, step: number, triangulation: boolean): string;
   leaf_presets_json?(): string;
   /**

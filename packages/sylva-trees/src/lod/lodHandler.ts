@@ -2,13 +2,36 @@
 import type { WasmApi } from '../core/types';
 import { volumeToCore } from '../core/volumes';
 import type {
+  BakedLeafBuffers,
   LodBuffers,
   LodLevelBuffers,
   LodMeta,
   LodsRequest,
   LodsResponse,
   LodWasmApi,
+  WasmLods,
 } from './types';
+
+/** Level `level`'s leaves baked by the core (`GeneratedLods.baked_leaves`), or none. */
+function bakedLeaves(lods: WasmLods, level: number): BakedLeafBuffers | undefined {
+  if (typeof lods.baked_leaves !== 'function') {
+    throw new Error('this generator build cannot bake leaves');
+  }
+  const baked = lods.baked_leaves(level);
+  try {
+    const indices = baked.indices();
+    if (indices.length === 0) return undefined;
+    return {
+      positions: baked.positions(),
+      normals: baked.normals(),
+      uvs: baked.uvs(),
+      indices,
+      colors: baked.colors(),
+    };
+  } finally {
+    baked.free();
+  }
+}
 
 /** Parses and checks `GeneratedLods.meta_json()`. */
 export function parseLodMeta(text: string): LodMeta {
@@ -37,6 +60,7 @@ export function lodsResponse(
   try {
     const meta = parseLodMeta(lods.meta_json());
     const levels: LodLevelBuffers[] = [0, 1, 2].map((i) => ({
+      ...(request.bakeLeaves ? { bakedLeaves: bakedLeaves(lods, i) } : {}),
       positions: lods.positions(i),
       normals: lods.normals(i),
       uvs: lods.uvs(i),
@@ -57,9 +81,11 @@ export function lodsResponse(
         ? { width: size[0], height: size[1], rgba }
         : null;
     const buffers: LodBuffers = { meta, levels, leafTexture };
-    const transfer: Transferable[] = levels.flatMap((l) =>
-      Object.values(l).map((a: ArrayBufferView) => a.buffer as ArrayBuffer),
-    );
+    const transfer: Transferable[] = levels.flatMap(({ bakedLeaves: baked, ...arrays }) => {
+      const views: ArrayBufferView[] = Object.values(arrays);
+      if (baked) views.push(baked.positions, baked.normals, baked.uvs, baked.indices, baked.colors);
+      return views.map((a) => a.buffer as ArrayBuffer);
+    });
     if (leafTexture) transfer.push(leafTexture.rgba.buffer as ArrayBuffer);
     return [{ type: 'lods', id: request.id, lods: buffers }, transfer];
   } finally {

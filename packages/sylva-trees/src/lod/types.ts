@@ -42,6 +42,22 @@ export interface LodLevelBuffers {
   leafColors: Float32Array;
   /** 13 floats per quad: centre xyz, u xyz, v xyz (half-axes), rgb, leaf density 0.05..1. */
   cloud: Float32Array;
+  /** The leaves baked into one mesh, when the request asked for them (`bakeLeaves`). */
+  bakedLeaves?: BakedLeafBuffers;
+}
+
+/**
+ * A level's leaves as one mesh in tree space, baked in the worker by the core's exporter (what
+ * a GLB with `leaves: 'baked'` holds); the forest draws it, as three.js cannot instance an
+ * `InstancedMesh`.
+ */
+export interface BakedLeafBuffers {
+  positions: Float32Array;
+  normals: Float32Array;
+  uvs: Float32Array;
+  indices: Uint32Array;
+  /** RGB per vertex (its leaf's tint). */
+  colors: Float32Array;
 }
 
 /** A tree and its reduced levels, LOD0 first. */
@@ -60,6 +76,8 @@ export interface LodsRequest {
   id: number;
   params: Params;
   volumes?: VolumePrimitive[];
+  /** Also bake each level's leaves into one mesh (`LodLevelBuffers.bakedLeaves`). */
+  bakeLeaves?: boolean;
 }
 
 /** Worker → main thread: the levels (all arrays transferred). */
@@ -83,8 +101,20 @@ export interface WasmLods {
   leaf_colors(level: number): Float32Array;
   shade(level: number): Uint8Array;
   cloud(level: number): Float32Array;
+  /** The leaves of `level` baked into one mesh (optional: test fakes may lack it). */
+  baked_leaves?(level: number): WasmBakedLeaves;
   leaf_texture(): Uint8Array;
   meta_json(): string;
+  free(): void;
+}
+
+/** The `BakedLeafMesh` object of the wasm binding. */
+export interface WasmBakedLeaves {
+  positions(): Float32Array;
+  normals(): Float32Array;
+  uvs(): Float32Array;
+  indices(): Uint32Array;
+  colors(): Float32Array;
   free(): void;
 }
 

@@ -32,7 +32,7 @@ export interface Harness {
  */
 export function harness(
   wasm: WasmApi = loadWasm(),
-  options: HandlerOptions & { debug?: false } = {},
+  options: HandlerOptions & { debug?: undefined } = {},
 ): Harness {
   const sent: Sent[] = [];
   const handle = createHandler(wasm, (message, transfer) => sent.push({ message, transfer }), {

@@ -22,7 +22,7 @@ const NUM_RUNS = Number(process.env.SYLVA_FC_RUNS ?? 1000);
 const registry = realRegistry();
 const ids = registry.map((s) => s.id);
 const defaults = defaultParams(registry);
-const byId = new Map(registry.map((s) => [s.id, s]));
+const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
 const NUMBER_TEXT = /^[+-]?(\d+(\.\d*)?|\.\d+)(e[+-]?\d+)?$/i;
 /** Control, format (bidi, zero-width), surrogate and private-use characters. */
 const UNSHOWABLE = /\p{C}/u;

@@ -1,7 +1,7 @@
 /** URL codec tests over the real registry (loaded from the wasm module in Node). */
 import { describe, expect, it } from 'vitest';
 import { applyPreset, defaultParams, snapToStep } from '../core/params';
-import type { ParamSpec, Params } from '../core/types';
+import type { ParamId, ParamSpec, Params } from '../core/types';
 import { realPresets, realRegistry } from '../testing/realWasm';
 import {
   buildSearch,
@@ -114,7 +114,7 @@ describe('round trip', () => {
 });
 
 describe('decodeQuery with malformed input', () => {
-  const expectFallback = (query: string, id: string) => {
+  const expectFallback = (query: string, id: ParamId) => {
     const result = decodeQuery(registry, query);
     expect(result.params[id]).toBe(spec(id).default);
     expect(result.messages.length).toBeGreaterThan(0);

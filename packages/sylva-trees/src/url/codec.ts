@@ -140,7 +140,7 @@ export function decodeQuery(registry: readonly ParamSpec[], search: string): Dec
     return { params, messages: notices.done(), hasParams: true };
   }
   const pairs = splitQuery(query, notices);
-  const byId = new Map(registry.map((s) => [s.id, s]));
+  const byId = new Map<string, ParamSpec>(registry.map((s) => [s.id, s]));
   const versions = pairs.filter(([k]) => k === 'v');
   const version = versions[0];
   const hasParams = version !== undefined || pairs.some(([k]) => byId.has(k));

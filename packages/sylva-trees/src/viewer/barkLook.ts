@@ -1,6 +1,6 @@
 /**
- * The bark's look in the viewer, after the core's bark types (`sylva_core::mesh::bark`, ANCHORS
- * §10): the texture's tiling follows each stem's girth the way real bark does (`BarkStyle`:
+ * The bark's look in the viewer, after the core's bark types (`sylva_core::mesh::bark`;
+ * docs/look.md, Bark types): the texture's tiling follows each stem's girth the way real bark does (`BarkStyle`:
  * tiles around = girth / (tile_at_1m · √girth), blended between the two nearest powers of two so
  * the seam at u = 1 still meets u = 0), thin stems fade to smooth young bark of the type's
  * colour, and the core's per-vertex occlusion (`TreeMesh.shade`: crown depth, tree holes)

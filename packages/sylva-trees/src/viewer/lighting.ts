@@ -4,8 +4,9 @@
  * glow, no downloaded HDR) prefiltered once per page into a PMREM environment map
  * (`skyEnvironment.ts`, on the CPU: three's GPU bake took seconds of software WebGL), the
  * image-based light, a sun with soft shadows fitted to the tree, and leaf
- * translucency when the sun is behind a leaf (the WebGL maple notes' light-oriented leaves,
- * reference 003, face the sky; seen from below against the sun they glow). The crown-depth term
+ * translucency when the sun is behind a leaf (leaves oriented to the light, the "top oriented
+ * leaves" of the WebGL notes after Bloomenthal's *Modeling the Mighty Maple* (docs/user-guide.md,
+ * Foliage), face the sky; seen from below against the sun they glow). The crown-depth term
  * that darkens inner leaves and bark comes from the core (`crown_shade.rs`, `mesh::shade`).
  */
 import type { Scene } from 'three';

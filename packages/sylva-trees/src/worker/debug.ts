@@ -1,13 +1,15 @@
 /**
- * Test hooks of the generator worker, kept out of the production protocol: these messages are
- * accepted only by a worker started with the debug flag (the app's `?debug=1` or a dev build;
- * the flag travels as the worker's name), and only a scheduler created with `debug: true` sends
- * them. They drive the e2e tests of the crash recovery and of the time limit.
+ * Test hooks of the generator worker, kept out of the production protocol and out of the shipped
+ * worker: only the app's debug build (`npm run build:debug -w web`, web/dist-debug, which the
+ * e2e tests of the crash recovery and the time limit open) links them in, by resolving the
+ * worker's `./debugHooks` to this module and its wasm to the `debug-hooks` build of the core
+ * (packages/sylva-trees/src/wasm-debug, built by `scripts/setup.sh --test`). There they are
+ * accepted only by a worker started with the debug flag (`?debug=1`; the flag travels as the
+ * worker's name), and only a scheduler created with `debug: true` sends them.
  */
 import type { WasmApi } from '../core/types';
 
-/** The name a worker is started with when it accepts the debug messages. */
-export const DEBUG_WORKER_NAME = 'sylva-debug';
+export { DEBUG_WORKER_NAME } from './debugName';
 
 /** Ask the worker to panic on purpose (tests of the recovery path). */
 export interface DebugPanicRequest {
@@ -39,8 +41,48 @@ export function busyWait(ms: number, now: () => number): void {
   }
 }
 
-/** Makes the wasm core panic; throws its trap (the caller reports it as fatal). */
+/** The core built with the `debug-hooks` feature: the production API and `debug_panic`. */
+interface DebugWasm extends WasmApi {
+  debug_panic?: () => void;
+}
+
+/**
+ * Makes the wasm core panic; throws its trap (the caller reports it as fatal). A core without
+ * the hook (the shipped one) throws an error saying so, which is fatal as well.
+ */
 export function panicOnPurpose(wasm: WasmApi): never {
-  wasm.debug_panic();
+  const core = wasm as DebugWasm;
+  if (typeof core.debug_panic !== 'function') {
+    throw new Error('this core has no debug_panic (built without the debug-hooks feature)');
+  }
+  core.debug_panic();
   throw new Error('debug_panic() returned without panicking');
 }
+
+/** What the handler lends a debug request. */
+export interface DebugContext {
+  wasm: WasmApi;
+  /** Posts a debug response. */
+  post: (message: DebugResponse, transfer: Transferable[]) => void;
+  /** The handler's clock. */
+  now: () => number;
+  /** Runs `work` as the handler runs a request with no id: a throw is fatal. */
+  fatalOnThrow: (work: () => void) => void;
+}
+
+/** The debug messages' handling, which a debug worker passes to `createHandler`. */
+export interface DebugHooks {
+  handle(request: DebugRequest, context: DebugContext): void;
+}
+
+/** The test hooks: a busy loop answered with `idle`, and a deliberate panic. */
+export const debugHooks: DebugHooks = {
+  handle(request, { wasm, post, now, fatalOnThrow }) {
+    if (request.type === 'debug-hang') {
+      busyWait(request.ms, now);
+      post({ type: 'idle' }, []);
+    } else {
+      fatalOnThrow(() => panicOnPurpose(wasm));
+    }
+  },
+};

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import type { WasmApi, WasmSession } from '../core/types';
 import { createHandler, isTrap } from './handler';
-import type { DebugRequest, DebugResponse } from './debug';
+import { debugHooks, type DebugRequest, type DebugResponse } from './debug';
 import type { WorkerResponse } from './protocol';
 
 const META = JSON.stringify({
@@ -74,7 +74,6 @@ function fakeWasm(options: FakeOptions) {
       if (options.panic instanceof Error) throw options.panic;
       return options.panic;
     },
-    debug_panic: () => undefined,
   };
   return { wasm, state };
 }
@@ -190,7 +189,7 @@ describe('worker handler fault handling', () => {
     let clock = 0;
     let reads = 0;
     const handle = createHandler(wasm, (message) => sent.push(message), {
-      debug: true,
+      debug: debugHooks,
       now: () => {
         reads++;
         clock += 10;
@@ -208,9 +207,9 @@ describe('worker handler fault handling', () => {
   it('refuses the debug messages unless the worker was started with the debug flag', () => {
     const { wasm } = fakeWasm({});
     let panics = 0;
-    wasm.debug_panic = () => void panics++;
+    const core = Object.assign(wasm, { debug_panic: () => void panics++ });
     const sent: WorkerResponse[] = [];
-    const handle = createHandler(wasm, (message) => sent.push(message));
+    const handle = createHandler(core, (message) => sent.push(message));
     const debugHandle = handle as unknown as (request: DebugRequest) => void;
     expect(() => debugHandle({ type: 'debug-panic' })).toThrow(/debug flag/);
     expect(() => debugHandle({ type: 'debug-hang', ms: 5 })).toThrow(/debug flag/);

@@ -2,11 +2,12 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams } from '../core/params';
 import { buildTreeGeometry } from '../viewer/geometry';
-import { loadWasm, realRegistry } from '../testing/realWasm';
+import { loadDebugWasm, loadWasm, realRegistry } from '../testing/realWasm';
 import { harness } from '../testing/workerHarness';
-import type { DebugResponse } from './debug';
+import { debugHooks, type DebugResponse } from './debug';
 import { createHandler, readyMessage } from './handler';
 import type { WorkerResponse } from './protocol';
+import type { Params } from '../core/types';
 
 /** One request answered with a result and then its hash; the merged tree. */
 function onlyTree(h: ReturnType<typeof harness>) {
@@ -93,7 +94,7 @@ describe('real wasm through the worker handler', () => {
 
   it('an unknown param gives an unknown_param error', () => {
     const { sent, handle } = harness();
-    handle({ type: 'generate', id: 8, params: { no_such_param: 1 } });
+    handle({ type: 'generate', id: 8, params: { no_such_param: 1 } as Params });
     const message = sent[0]?.message;
     expect(message?.type === 'error' && message.error.kind).toBe('unknown_param');
   });
@@ -116,10 +117,15 @@ describe('real wasm through the worker handler', () => {
     }
   });
 
-  // Runs last in this file: the wasm instance is unusable after a panic.
-  it('debug-panic reports the panic message as fatal, then refuses further work', () => {
+  it('the shipped core has no test hook', () => {
+    expect('debug_panic' in loadWasm()).toBe(false);
+  });
+
+  it('debug-panic makes the debug core panic: reported as fatal, then further work refused', async () => {
     const sent: { message: WorkerResponse | DebugResponse }[] = [];
-    const handle = createHandler(loadWasm(), (message) => sent.push({ message }), { debug: true });
+    const handle = createHandler(await loadDebugWasm(), (message) => sent.push({ message }), {
+      debug: debugHooks,
+    });
     handle({ type: 'debug-panic' });
     const fatal = sent[0]?.message;
     expect(fatal?.type).toBe('fatal');

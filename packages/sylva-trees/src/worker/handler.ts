@@ -1,6 +1,6 @@
 /** Worker-side request handling over an initialised wasm API (no Worker globals; testable in Node). */
 import { parseLeafInspection, parsePresets, parseRegistry, toSylvaError } from '../core/parse';
-import type { Params, WasmApi } from '../core/types';
+import type { LeafPresetId, Params, WasmApi } from '../core/types';
 import { lodsResponse } from '../lod/lodHandler';
 import { exportFormatsOf, exportTree } from '../export/exportHandler';
 import {
@@ -10,7 +10,7 @@ import {
   type Defer,
   type Post,
 } from './generate';
-import { busyWait, panicOnPurpose, type DebugRequest, type DebugResponse } from './debug';
+import type { DebugHooks, DebugRequest, DebugResponse } from './debug';
 import type { LeafRequest, ReadyResponse, WorkerRequest, WorkerResponse } from './protocol';
 
 export type { Post } from './generate';
@@ -28,7 +28,7 @@ export function readyMessage(wasm: WasmApi): ReadyResponse {
     registry: parseRegistry(wasm.registry_json()),
     presets: parsePresets(wasm.presets_json()),
     version: wasm.core_version(),
-    leafPresets: wasm.leaf_presets_json ? parsePresets(wasm.leaf_presets_json()) : [],
+    leafPresets: wasm.leaf_presets_json ? parsePresets<LeafPresetId>(wasm.leaf_presets_json()) : [],
     exportFormats: exportFormatsOf(wasm),
   };
 }
@@ -75,8 +75,11 @@ function handleLeaf(wasm: WasmApi, request: LeafRequest, post: Post): void {
 export interface HandlerOptions {
   /** Clock of the debug hang (default `performance.now`). */
   now?: () => number;
-  /** Accept the debug messages (a worker started with the debug flag; tests). */
-  debug?: boolean;
+  /**
+   * Accept the debug messages, answered by these hooks (`debug.ts`: a debug build's worker
+   * started with the debug flag, and tests); without them they are refused.
+   */
+  debug?: DebugHooks;
   /** How a result's hash is scheduled after it (default: a zero-delay timer). */
   defer?: Defer;
   /** Bark time above which a drag gets a preview (ms; default [`PREVIEW_BUDGET_MS`]). */
@@ -97,7 +100,7 @@ export interface HandlerOptions {
 export function createHandler(
   wasm: WasmApi,
   post: Post,
-  options?: HandlerOptions & { debug?: false },
+  options?: HandlerOptions & { debug?: undefined },
 ): (request: WorkerRequest) => void;
 export function createHandler(
   wasm: WasmApi,
@@ -110,7 +113,7 @@ export function createHandler(
   options: HandlerOptions = {},
 ): (request: WorkerRequest | DebugRequest) => void {
   const now = options.now ?? (() => performance.now());
-  const debug = options.debug === true;
+  const debug = options.debug;
   let deadMessage: string | null = null;
   const die = (thrown: unknown): void => {
     deadMessage = panicMessage(wasm, thrown);
@@ -161,14 +164,15 @@ export function createHandler(
         run(request.id, () => post(...lodsResponse(wasm, request)));
         return;
       case 'debug-hang':
-        if (!debug) break;
-        busyWait(request.ms, now);
-        // A debug handler's `post` takes the debug responses (see the overloads).
-        (post as HandlerPost)({ type: 'idle' }, []);
-        return;
       case 'debug-panic':
         if (!debug) break;
-        run(null, () => panicOnPurpose(wasm));
+        // A debug handler's `post` takes the debug responses (see the overloads).
+        debug.handle(request, {
+          wasm,
+          post: post as HandlerPost,
+          now,
+          fatalOnThrow: (work) => run(null, work),
+        });
         return;
       default: {
         const unknown: never = request;

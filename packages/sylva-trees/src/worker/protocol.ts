@@ -4,6 +4,7 @@
  */
 import type {
   LeafInspection,
+  LeafPreset,
   ParamSpec,
   Params,
   Preset,
@@ -49,7 +50,7 @@ export interface ReadyResponse {
   presets: Preset[];
   version: string;
   /** The leaf presets (`leaf_presets_json`), for the leaf inspector. */
-  leafPresets?: Preset[];
+  leafPresets?: LeafPreset[];
   /** Mesh formats the core can export (absent: none). */
   exportFormats?: ExportFormat[];
 }

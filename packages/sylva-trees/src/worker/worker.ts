@@ -1,6 +1,8 @@
 /** Generator Web Worker: initialises the wasm once and answers requests with transferred buffers. */
 import init, * as wasm from '../wasm/sylva_wasm.js';
-import { DEBUG_WORKER_NAME, type DebugRequest, type DebugResponse } from './debug';
+import type { DebugRequest, DebugResponse } from './debug';
+import { DEBUG_WORKER_NAME } from './debugName';
+import { debugHooks } from './debugHooks';
 import { createHandler, readyMessage, type HandlerPost } from './handler';
 import type { WorkerRequest, WorkerResponse } from './protocol';
 import { wasmUrl } from '../runtime/urls';
@@ -15,7 +17,8 @@ interface WorkerScope {
 
 const scope = self as unknown as WorkerScope;
 const post: HandlerPost = (message, transfer) => scope.postMessage(message, transfer);
-const debug = scope.name === DEBUG_WORKER_NAME;
+// The test hooks: only in the app's debug build, and only for a worker started as a debug one.
+const debug = scope.name === DEBUG_WORKER_NAME ? (debugHooks ?? undefined) : undefined;
 
 const handlerPromise = init({ module_or_path: wasmUrl() })
   .then(() => {

@@ -1,19 +1,14 @@
 /** Mesh export, worker side (the real core's exporters), the client, and the ZIP writer. */
 import { unzipSync } from 'fflate';
 import { describe, expect, it } from 'vitest';
-import { loadWasm } from '../../../packages/sylva-trees/src/testing/realWasm';
-import { harness } from '../../../packages/sylva-trees/src/testing/workerHarness';
-import type { WasmApi } from '../../../packages/sylva-trees/src/core/types';
-import { createHandler } from '../../../packages/sylva-trees/src/worker/handler';
-import type { WorkerResponse } from '../../../packages/sylva-trees/src/worker/protocol';
-import { ExportClient } from '../../../packages/sylva-trees/src/export/exportClient';
-import {
-  exportFiles,
-  exportFormatsOf,
-  fileStem,
-  type ExportableTree,
-} from '../../../packages/sylva-trees/src/export/exportHandler';
-import { zipFiles } from '../../../packages/sylva-trees/src/export/zip';
+import { loadWasm } from '../testing/realWasm';
+import { harness } from '../testing/workerHarness';
+import type { WasmApi } from '../core/types';
+import { createHandler } from '../worker/handler';
+import type { WorkerResponse } from '../worker/protocol';
+import { ExportClient } from './exportClient';
+import { exportFiles, exportFormatsOf, fileStem, type ExportableTree } from './exportHandler';
+import { zipFiles } from './zip';
 
 /**
  * A member of a wasm object, methods bound to the object itself: called through the proxy,

@@ -1,19 +1,20 @@
-/** The shared lights: one sun for the viewer and the impostor, leaf translucency patch. */
+/**
+ * The shared lights: one sun for the viewer and the impostor, leaf translucency patch. (The web
+ * app's LOD preview lighting its impostors with these: web/src/lod/impostor.test.ts.)
+ */
 import { MeshStandardMaterial, ShaderLib } from 'three';
 import { describe, expect, it } from 'vitest';
-import { viewerLights } from '../lod/impostor';
 import {
   LEAF_TRANSLUCENCY,
   SUN_DIRECTION,
   SUN_INTENSITY,
   applyLeafTranslucency,
   impostorLights,
-} from '../../../packages/sylva-trees/src/viewer/lighting';
+} from './lighting';
 
 describe('lighting', () => {
   it('is one definition: the impostor lights with the viewer sun', () => {
-    const l = viewerLights();
-    expect(l).toEqual(impostorLights());
+    const l = impostorLights();
     expect(l.sunDir.toArray()).toEqual(SUN_DIRECTION.toArray());
     expect(l.sunColor.r).toBeGreaterThan(SUN_INTENSITY * 0.9);
     expect(l.sky.b).toBeGreaterThan(l.ground.b);

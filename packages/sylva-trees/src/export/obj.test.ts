@@ -7,8 +7,8 @@ import { describe, expect, it } from 'vitest';
 import { InstancedMesh, Mesh, type BufferGeometry, type Object3D } from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OBJLoader } from 'three/examples/jsm/loaders/OBJLoader.js';
-import { loadWasm, realPresets } from '../../../packages/sylva-trees/src/testing/realWasm';
-import type { WasmTree } from '../../../packages/sylva-trees/src/core/types';
+import { loadWasm, realPresets } from '../testing/realWasm';
+import type { WasmTree } from '../core/types';
 
 interface Exporting extends WasmTree {
   wind(): Float32Array;

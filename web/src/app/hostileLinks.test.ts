@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { loadInitialParams } from '../app/persistence';
-import { realRegistry } from '../../../packages/sylva-trees/src/testing/realWasm';
+import { realRegistry } from 'sylva-trees/testing';
 import { DEFAULT, HOSTILE, SEED5 } from './hostileLinks.fixture';
 
 const registry = realRegistry();

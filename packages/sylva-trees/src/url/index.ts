@@ -1,0 +1,19 @@
+/**
+ * `sylva-trees/url`: the share-link format. Parameters and growth volumes to and from a query
+ * string (versioned, length-capped, hostile input reported as notices, never thrown), and the
+ * number formatting and parsing it shares with preset files.
+ */
+export {
+  buildSearch,
+  decodeQuery,
+  decodeVolumes,
+  encodeParams,
+  encodeVolumes,
+  formatNumber,
+  parseValue,
+  shown,
+  FORMAT_VERSION,
+  MAX_QUERY_LENGTH,
+  VOLUMES_KEY,
+  type DecodeResult,
+} from './codec';
