@@ -4,6 +4,8 @@
 //!   pipeline stage (`SkeletonParams`, ..., `ViewerParams`, with `LevelParams`), their `Default`
 //!   and bitwise `PartialEq`, the registry's specs and the typed get / set by id.
 //! - `param_enum!` declares one enum parameter (variants, indices, labels) for `params/enums.rs`.
+//!
+//! The presets' `param_values!` is in `params/values.rs`.
 
 /// Declares the parameters (used once, in `params/registry.rs`). Tree-level entries read
 /// `id: Type = default; [min, max, step] "unit", "Group", "Label", Stage, "description";`
@@ -155,6 +157,13 @@ macro_rules! define_params {
                 LevelParams { $( $lf: [$d0, $d1, $d2, $d3][n], )* }
             }
 
+            /// Whether level 0 (the trunk) has per-level parameter `name` (false for an unknown
+            /// name): `param_values!` checks it at compile time.
+            pub const fn on_trunk(name: &str) -> bool {
+                $( if super::macros::same(name, stringify!($lf)) { return $ltrunk; } )*
+                false
+            }
+
             /// The wire value of per-level parameter `name` (the id without `l{n}_`).
             pub(super) fn get(&self, name: &str) -> Option<f64> {
                 match name {
@@ -226,6 +235,22 @@ macro_rules! define_params {
 }
 pub(super) use define_params;
 
+/// Whether two strings are equal, in a constant (`LevelParams::on_trunk`).
+pub(super) const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
 /// Declares an enum parameter once (variants, indices, labels) and derives what the registry
 /// needs from it: `ALL`, `LABELS`, `from_index`, `from_name`, `label` and the `ParamValue` wire
 /// conversion, so the panel's options, the URL codec and the CLI's name lookup cannot drift
@@ -271,6 +296,16 @@ macro_rules! param_enum {
             }
             fn options() -> Option<Vec<String>> {
                 Some(Self::LABELS.iter().map(|s| s.to_string()).collect())
+            }
+        }
+
+        impl $crate::params::Written for $name {
+            type Literal = $name;
+            fn from_literal(literal: $name) -> $name {
+                literal
+            }
+            fn wire(literal: $name) -> f64 {
+                $crate::params::ParamValue::to_wire(literal)
             }
         }
     };

@@ -12,12 +12,13 @@
 //! | `volumes.rs` | the growth volume primitives, structured data beside the table |
 //! | `spec.rs` | what the registry says of one parameter ([`ParamSpec`]) and the pipeline [`Stage`]s |
 //! | `stages.rs` | [`TreeParams`]: one struct per stage ([`SkeletonParams`], ...), the flat get / set by id |
+//! | `values.rs` | [`param_values!`](crate::param_values): a preset's values as typed assignments ([`ParamValues`]) |
 //!
 //! ## Wire values
 //!
 //! Every value is a number on the wire: floats and ints as themselves, booleans as 0/1, enums as
 //! their option index. Per-level parameters (Weber & Penn's `nLength`, ...) get ids `l{n}_{name}`
-//! (e.g. `l1_length`) and live in `TreeParams::level[n]`.
+//! (e.g. `l1_length`) and live in `TreeParams::skeleton.level[n]`.
 
 use crate::error::SylvaError;
 use std::collections::BTreeMap;
@@ -28,6 +29,7 @@ mod macros;
 mod registry;
 mod spec;
 mod stages;
+pub mod values;
 pub mod volumes;
 
 pub use enums::{
@@ -37,6 +39,7 @@ pub use enums::{
 pub use registry::{FoliageParams, LeafParams, LevelParams, MeshParams, SkeletonParams, ViewerParams};
 pub use spec::{ParamKind, ParamSpec, ParamValue, Stage, GROUPS};
 pub use stages::TreeParams;
+pub use values::{ParamValues, Written};
 pub use volumes::{Primitive, VolumeGroup, VolumePrimitive};
 
 /// Lower-case ASCII letters and digits only: enum labels compare without case or separators.
