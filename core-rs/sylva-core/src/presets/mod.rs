@@ -1,7 +1,11 @@
 //! # Named presets
 //!
-//! Sets of non-default parameter values. A preset is data, applied on top of the defaults, so
-//! the registry stays the one place that knows ranges and defaults.
+//! Sets of parameter values applied on top of the defaults, so the registry stays the one place
+//! that knows ranges and defaults. Each preset writes its values as typed assignments on the
+//! stage structs with [`param_values!`](crate::param_values) (`skeleton.shape = CrownShape::Conical`,
+//! `skeleton.level[1].length = 0.32`): an unknown id, a field of another stage or a value of the
+//! wrong type does not compile. The same values, as wire numbers by id in the order written, are
+//! what the presets' JSON and share links carry ([`Preset::all_values`]).
 //!
 //! | file | holds |
 //! |---|---|
@@ -14,11 +18,10 @@ mod shapes;
 mod species;
 
 use crate::error::SylvaError;
-use crate::params::TreeParams;
-use serde::Serialize;
+use crate::params::{ParamValues, TreeParams};
 
 /// A named set of parameter values.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug)]
 pub struct Preset {
     /// Id used in URLs and the CLI (`--preset`).
     pub name: &'static str,
@@ -29,8 +32,8 @@ pub struct Preset {
     /// The leaf preset it wears ([`crate::leaf::presets`]): its values come first, the
     /// tree's own values after them.
     pub leaf: &'static str,
-    /// Values that differ from the defaults, by parameter id.
-    pub values: &'static [(&'static str, f64)],
+    /// The tree's own values (mostly ones that differ from the defaults).
+    pub values: ParamValues,
 }
 
 /// All presets, the default tree first. The four Weber & Penn species use the paper's values (Weber
@@ -60,7 +63,7 @@ const DEFAULT: Preset = Preset {
     label: "Default (Cylindrical)",
     description: "Aspen-like broadleaf with the Cylindrical crown, the guide's starting point.",
     leaf: "aspen",
-    values: &[],
+    values: ParamValues::NONE,
 };
 
 /// Find a preset by name.
@@ -69,15 +72,26 @@ pub fn find(name: &str) -> Option<&'static Preset> {
 }
 
 impl Preset {
-    /// The preset's full parameters (defaults + its values).
+    /// The preset's full parameters: the defaults, the leaf preset's values, then the tree's own.
     pub fn params(&self) -> Result<TreeParams, SylvaError> {
-        TreeParams::from_values(self.all_values())
+        let mut params = TreeParams::default();
+        self.leaf_values().apply(&mut params);
+        self.values.apply(&mut params);
+        params.validate()?;
+        Ok(params)
     }
 
-    /// The leaf preset's values, then the tree's own (so a share link or the panel gets both).
+    /// The leaf preset's values, then the tree's own, as wire numbers by id (so a share link or
+    /// the panel gets both).
     pub fn all_values(&self) -> Vec<(&'static str, f64)> {
-        let leaf = crate::leaf::presets::find(self.leaf).map_or(&[][..], |l| l.values);
-        leaf.iter().chain(self.values).copied().collect()
+        let mut values = self.leaf_values().wire();
+        values.extend(self.values.wire());
+        values
+    }
+
+    /// The values of the leaf preset it wears (none for an unknown name).
+    fn leaf_values(&self) -> ParamValues {
+        crate::leaf::presets::find(self.leaf).map_or(ParamValues::NONE, |l| l.values)
     }
 }
 
@@ -94,3 +108,6 @@ pub fn presets_json() -> String {
         .collect();
     serde_json::Value::Array(list).to_string()
 }
+
+#[cfg(test)]
+mod tests;
