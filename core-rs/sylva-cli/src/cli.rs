@@ -60,8 +60,8 @@ pub enum Command {
     },
     /// Print the tree presets as JSON
     ///
-    /// One object per preset: `name`, `label`, `description` and `params`, the values that differ
-    /// from the defaults.
+    /// One object per preset: `name`, `label`, `description`, `leaf` (the leaf preset it
+    /// wears) and `values`, the values that differ from the defaults.
     Presets,
     /// Print the leaf presets as JSON
     ///

@@ -61,7 +61,7 @@ pub const PRESETS: &[Preset] = &[
 const DEFAULT: Preset = Preset {
     name: "default",
     label: "Default (Cylindrical)",
-    description: "Aspen-like broadleaf with the Cylindrical crown, the guide's starting point.",
+    description: "Aspen-like broadleaf with the Cylindrical crown, the starting point of Mtree's Crown Shape guide.",
     leaf: "aspen",
     values: ParamValues::NONE,
 };

@@ -223,7 +223,8 @@ pub(super) const UMBRELLA: Preset = Preset {
 pub(super) const WEEPING: Preset = Preset {
     name: "weeping",
     label: "Weeping Tree (Inverse Conical)",
-    description: "A weeping tree: Inverse Conical crown and negative Attraction Up, as the guide suggests.",
+    description:
+        "A weeping tree: Inverse Conical crown and negative Attraction Up, as Mtree's Crown Shape guide suggests.",
     leaf: "birch",
     values: param_values! {
         mesh.bark_type = BarkType::Fibrous,
