@@ -5,6 +5,8 @@
 //   web/src/docs/cli.json   `sylva cli-reference --json` (the docs page's Command line section)
 //   packages/sylva-trees/src/core/generated/params.ts   `sylva params --typescript` (ParamId,
 //                           PresetId, the registry and the presets as TypeScript)
+//   packages/sylva-trees/src/core/generated/payloads.ts `sylva params --payloads` (the JSON
+//                           the core returns beside the buffers, as TypeScript interfaces)
 import { execFileSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -17,6 +19,7 @@ const outputs = [
   ['docs/cli.md', ['cli-reference']],
   ['web/src/docs/cli.json', ['cli-reference', '--json']],
   ['packages/sylva-trees/src/core/generated/params.ts', ['params', '--typescript']],
+  ['packages/sylva-trees/src/core/generated/payloads.ts', ['params', '--payloads']],
 ];
 for (const [file, args] of outputs) {
   writeFileSync(`${root}/${file}`, execFileSync(sylva, args, { encoding: 'utf8' }));

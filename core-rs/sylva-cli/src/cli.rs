@@ -49,14 +49,20 @@ pub enum Command {
     /// `unit`, `description` and, for enums, `options`. With `--markdown`: the parameter reference
     /// docs/parameters.md. With `--typescript`: the registry and the presets as the TypeScript
     /// module packages/sylva-trees/src/core/generated/params.ts (`ParamId`, `PresetId`, ...).
+    /// With `--payloads`: the JSON objects the core returns beside the buffers (a tree's meta,
+    /// a session update's, the levels of detail's, errors, ...) as the TypeScript interfaces of
+    /// packages/sylva-trees/src/core/generated/payloads.ts.
     #[command(args_override_self = true)]
     Params {
         /// Print the parameter reference as Markdown instead
-        #[arg(long, conflicts_with = "typescript")]
+        #[arg(long, conflicts_with_all = ["typescript", "payloads"])]
         markdown: bool,
         /// Print the registry and the presets as a TypeScript module instead
-        #[arg(long)]
+        #[arg(long, conflicts_with = "payloads")]
         typescript: bool,
+        /// Print the TypeScript interfaces of the core's JSON payloads instead
+        #[arg(long)]
+        payloads: bool,
     },
     /// Print the tree presets as JSON
     ///
@@ -255,7 +261,7 @@ pub const EXAMPLES: &[(&str, &[&str])] = &[
             "sylva generate --preset oak --set hole_count=3 --report mesh",
         ],
     ),
-    ("params", &["sylva params --markdown", "sylva params --typescript"]),
+    ("params", &["sylva params --markdown", "sylva params --typescript", "sylva params --payloads"]),
     ("presets", &["sylva presets"]),
     ("leaf-presets", &["sylva leaf-presets"]),
     ("envelope", &["sylva envelope --shape flame --samples 11"]),

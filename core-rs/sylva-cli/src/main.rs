@@ -7,6 +7,7 @@
 
 mod cli;
 mod leaf;
+mod payloads;
 mod reference;
 mod synopsis;
 mod tree;
@@ -59,6 +60,7 @@ fn run(args: &[String]) -> Result<String, String> {
     match command {
         Command::Generate(a) => tree::generate(&a),
         Command::Params { typescript: true, .. } => Ok(typescript::params_module()),
+        Command::Params { payloads: true, .. } => Ok(payloads::payloads_module()),
         Command::Params { markdown: true, .. } => Ok(reference::params_markdown()),
         Command::Params { .. } => Ok(sylva_core::params::registry_json()),
         Command::Presets => Ok(presets::presets_json()),

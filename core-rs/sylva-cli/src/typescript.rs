@@ -11,7 +11,7 @@
 use serde_json::Value;
 
 /// Prettier's line width (`.prettierrc.json`).
-const WIDTH: usize = 100;
+pub(crate) const WIDTH: usize = 100;
 
 /// The module's text.
 pub fn params_module() -> String {
@@ -72,7 +72,7 @@ fn number(v: &Value) -> String {
 
 /// A string literal as Prettier writes it: single quotes unless the text has more of them than
 /// double quotes.
-fn string(s: &str) -> String {
+pub(crate) fn string(s: &str) -> String {
     let (single, double) = (s.matches('\'').count(), s.matches('"').count());
     if single > double {
         format!("\"{}\"", s.replace('\\', "\\\\").replace('"', "\\\""))
@@ -93,7 +93,7 @@ fn key(k: &str) -> String {
 }
 
 /// `export const NAME = [ ...one string per line... ] as const;`
-fn const_list(name: &str, items: &[&str]) -> String {
+pub(crate) fn const_list(name: &str, items: &[&str]) -> String {
     let inline =
         format!("export const {name} = [{}] as const;", items.iter().map(|s| string(s)).collect::<Vec<_>>().join(", "));
     if inline.len() <= WIDTH {

@@ -1,11 +1,13 @@
 //! What a generation returns: the buffers and what the UI and tools report about them
-//! ([`Generated`], [`Stats`]), and the meta object [`Generated::meta_json`] and the session's
-//! share. A module of its own so that the session builds these without importing back from the
+//! ([`Generated`], [`Stats`]), and the meta ([`Generated::meta`], a [`TreeMeta`]) it shares with
+//! the session's. A module of its own so that the session builds these without importing back from the
 //! crate root, which calls the session.
 
 use crate::mesh::{Bounds, TreeMesh};
+use crate::meta::TreeMeta;
 use crate::{foliage, mesh, params, skeleton};
 use serde::Serialize;
+use std::collections::BTreeMap;
 
 /// Counts and timings of one generation.
 #[derive(Clone, Debug, Serialize)]
@@ -58,22 +60,27 @@ impl Generated {
         format!("{:016x}", self.hash)
     }
 
-    /// Everything but the buffers as a JSON object (what `meta_json()` returns in wasm).
+    /// Everything but the buffers ([`TreeMeta`] with the hash), as the JSON `meta_json()`
+    /// returns in wasm.
     pub fn meta_json(&self) -> String {
+        crate::meta::to_json(&self.meta())
+    }
+
+    /// Everything but the buffers: counts, bounds, groups, envelope, leaf facts, the bark type,
+    /// the hash and the stage times.
+    pub fn meta(&self) -> TreeMeta {
         let mut meta =
             tree_meta(&self.mesh, &self.foliage, &self.bounds, &self.envelope, self.stats.stems, self.stats.holes);
-        meta["bark_type"] = serde_json::json!(self.bark as u8);
-        meta["hash"] = serde_json::json!(self.hash_hex());
-        let stage_ms: serde_json::Map<String, serde_json::Value> =
-            self.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
-        meta["stage_ms"] = serde_json::Value::Object(stage_ms);
-        meta["total_ms"] = serde_json::json!(self.stats.total_ms);
-        meta.to_string()
+        meta.bark_type = self.bark as u8;
+        meta.hash = Some(self.hash_hex());
+        meta.stage_ms = self.stats.stage_ms.iter().copied().collect();
+        meta.total_ms = self.stats.total_ms;
+        meta
     }
 }
 
-/// The meta object shared by [`Generated::meta_json`] and the session's: counts, bounds,
-/// material groups, envelope and leaf facts (no hash, no timings).
+/// The meta shared by [`Generated::meta`] and the session's: counts, bounds, material groups,
+/// envelope and leaf facts (bark type 0, no hash, no timings: the caller sets them).
 pub(crate) fn tree_meta(
     mesh: &TreeMesh,
     foliage: &foliage::Foliage,
@@ -81,19 +88,26 @@ pub(crate) fn tree_meta(
     envelope: &[[f32; 2]],
     stems: usize,
     holes: usize,
-) -> serde_json::Value {
-    serde_json::json!({
-        "vertices": mesh.vertex_count(),
-        "triangles": mesh.triangle_count(),
-        "stems": stems,
-        "holes": holes,
-        "bounds": bounds,
-        "groups": mesh.groups,
-        "envelope": envelope,
-        "leaves": foliage.count(),
-        "leaf_hash": format!("{:016x}", foliage.leaf_hash()),
-        "leaf_texture": foliage.texture().map(|t| [t.width, t.height]),
-    })
+) -> TreeMeta {
+    TreeMeta {
+        vertices: mesh.vertex_count(),
+        triangles: mesh.triangle_count(),
+        stems,
+        holes,
+        bounds: *bounds,
+        groups: mesh.groups.clone(),
+        envelope: envelope.to_vec(),
+        leaves: foliage.count(),
+        leaf_hash: format!("{:016x}", foliage.leaf_hash()),
+        leaf_texture: foliage.texture().map(|t| [t.width, t.height]),
+        bark_type: 0,
+        stage_ms: BTreeMap::new(),
+        total_ms: 0.0,
+        hash: None,
+        preview: None,
+        from: None,
+        changes: None,
+    }
 }
 
 /// Number of heights in the envelope preview profile.

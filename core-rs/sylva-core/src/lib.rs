@@ -36,6 +36,7 @@ pub mod leaf;
 pub mod lod;
 pub mod math;
 pub mod mesh;
+pub mod meta;
 pub mod par;
 pub mod params;
 pub mod presets;

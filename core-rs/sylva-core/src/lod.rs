@@ -29,6 +29,7 @@ use crate::error::SylvaError;
 use crate::foliage::Foliage;
 use crate::mesh::shade::occlusion_with;
 use crate::mesh::{tube, TreeMesh};
+use crate::meta::{LodLevelMeta, LodMeta};
 use crate::params::{MeshParams, TreeParams};
 use crate::skeleton::Skeleton;
 use crate::Generated;
@@ -142,30 +143,34 @@ impl TreeLods {
 
     /// Counts per level as JSON (what `GeneratedLods.meta_json()` returns in wasm).
     pub fn meta_json(&self) -> String {
-        let levels: Vec<serde_json::Value> = (0..3)
+        crate::meta::to_json(&self.meta())
+    }
+
+    /// The hash, bounds and leaf facts of LOD0 and the counts of every level.
+    pub fn meta(&self) -> LodMeta {
+        let levels = (0..3)
             .map(|i| {
                 let l = self.level(i);
-                serde_json::json!({
-                    "triangles": l.triangles(),
-                    "vertices": l.mesh.vertex_count(),
-                    "bark_triangles": l.mesh.triangle_count(),
-                    "leaves": l.foliage.count(),
-                    "leaf_triangles": l.foliage.mesh.triangle_count(),
-                    "quads": l.cloud.len() / QUAD_FLOATS,
-                    "stems": l.stems,
-                    "groups": l.mesh.groups,
-                })
+                LodLevelMeta {
+                    triangles: l.triangles(),
+                    vertices: l.mesh.vertex_count(),
+                    bark_triangles: l.mesh.triangle_count(),
+                    leaves: l.foliage.count(),
+                    leaf_triangles: l.foliage.mesh.triangle_count(),
+                    quads: l.cloud.len() / QUAD_FLOATS,
+                    stems: l.stems,
+                    groups: l.mesh.groups.clone(),
+                }
             })
             .collect();
         let g = &self.lod0;
-        serde_json::json!({
-            "hash": g.hash_hex(),
-            "bounds": g.bounds,
-            "levels": levels,
-            "leaf_hash": format!("{:016x}", g.foliage.leaf_hash()),
-            "leaf_texture": g.foliage.texture().map(|t| [t.width, t.height]),
-        })
-        .to_string()
+        LodMeta {
+            hash: g.hash_hex(),
+            bounds: g.bounds,
+            levels,
+            leaf_hash: format!("{:016x}", g.foliage.leaf_hash()),
+            leaf_texture: g.foliage.texture().map(|t| [t.width, t.height]),
+        }
     }
 }
 

@@ -13,6 +13,8 @@ import type {
   Preset,
   PresetId,
   SylvaError,
+  SylvaErrorKind,
+  TreeMeta,
   VolumePrimitive,
 } from './core/types';
 import { ExportClient, ExportError } from './export/exportClient';
@@ -64,11 +66,8 @@ export interface SylvaTreeOptions {
   volumes?: VolumePrimitive[];
 }
 
-/** Counts and content hash of the tree shown. */
-export interface SylvaTreeStats {
-  vertices: number;
-  triangles: number;
-  leaves: number;
+/** Counts and content hash of the tree shown (fields of the core's `TreeMeta`). */
+export interface SylvaTreeStats extends Pick<TreeMeta, 'vertices' | 'triangles' | 'leaves'> {
   /** The core's content hash: the same parameters give the same hash everywhere. */
   hash: string;
 }
@@ -76,8 +75,8 @@ export interface SylvaTreeStats {
 /** A generation that failed: the core's message (`l1_length (Length) is 3: allowed range is 0 to 2`). */
 export class SylvaTreeError extends Error {
   override name = 'SylvaTreeError';
-  /** `invalid_param`, `unknown_param`, `budget`, `panic`, `timeout`, `internal`. */
-  readonly kind: string;
+  /** `invalid_param`, `unknown_param`, `budget`, `input`, `panic`, `timeout`, `internal`. */
+  readonly kind: SylvaErrorKind;
   /** The parameter at fault, if any. */
   readonly param: string | undefined;
 

@@ -6,6 +6,7 @@
 
 use crate::leaf::veins::NONE;
 use crate::leaf::Leaf;
+use crate::meta::LeafInspection;
 use glam::Vec2;
 use std::fmt::Write;
 
@@ -183,19 +184,23 @@ pub fn segments_at(leaf: &Leaf, step: Option<u32>) -> usize {
     g.nodes.iter().filter(|n| n.parent != NONE && n.born <= s).count() + g.links.iter().filter(|l| l.born <= s).count()
 }
 
-/// The inspector's answer as JSON: `{"svg", "iterations", "nodes", "links", "segments",
-/// "auxins", "triangles", "hash"}`, where `segments` is [`segments_at`] the options' step.
+/// The inspector's answer as JSON ([`inspection`]).
 pub fn inspect_json(leaf: &Leaf, opts: &SvgOptions) -> String {
+    crate::meta::to_json(&inspection(leaf, opts))
+}
+
+/// The inspector's answer: the drawing and the vein and blade counts, where `segments` is
+/// [`segments_at`] the options' step.
+pub fn inspection(leaf: &Leaf, opts: &SvgOptions) -> LeafInspection {
     let g = &leaf.veins.graph;
-    serde_json::json!({
-        "svg": render(leaf, opts),
-        "iterations": g.iterations,
-        "nodes": g.nodes.len(),
-        "links": g.links.len(),
-        "segments": segments_at(leaf, opts.step),
-        "auxins": leaf.veins.auxins.len(),
-        "triangles": leaf.triangulation.triangles.len(),
-        "hash": leaf.hash_hex(),
-    })
-    .to_string()
+    LeafInspection {
+        svg: render(leaf, opts),
+        iterations: g.iterations,
+        nodes: g.nodes.len(),
+        links: g.links.len(),
+        segments: segments_at(leaf, opts.step),
+        auxins: leaf.veins.auxins.len(),
+        triangles: leaf.triangulation.triangles.len(),
+        hash: leaf.hash_hex(),
+    }
 }

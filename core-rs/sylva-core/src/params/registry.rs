@@ -99,7 +99,7 @@ define_params! {
         hole_seed: u32 = 0; [0, 4_294_967_295u32, 1] "", "Trunk", "Hole Seed", Mesh,
             "Random seed of the hole placement: picks other candidate spots without changing the tree.";
         bark_type: BarkType = BarkType::Furrowed; [0, 3, 1] "", "Trunk", "Bark Type", Mesh,
-            "Bark pattern (ANCHORS 10): Furrowed ridges (oak), Plated with dark cracks (pine, fir), Smooth-banded pale skin with lenticels (birch, aspen) or Fibrous criss-cross strips (willow, cypress); its size follows each stem's girth and thin stems turn smooth young bark.";
+            "Bark pattern: Furrowed ridges (oak), Plated with dark cracks (pine, fir), Smooth-banded pale skin with lenticels (birch, aspen) or Fibrous criss-cross strips (willow, cypress); its size follows each stem's girth and thin stems turn smooth young bark.";
         twig_detail: TwigDetail = TwigDetail::Four; [0, 3, 1] "", "Quality", "Twig Detail", Mesh,
             "Bezier twigs (the thinnest stems): step along the control circle, 1 = four times the sides a tube of that radius gets, 4 = the same, 8 = half.";
         growth_mode: GrowthMode = GrowthMode::Parametric; [0, 1, 1] "", "Growth", "Growth Mode", Skeleton,

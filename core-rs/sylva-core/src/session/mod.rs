@@ -39,6 +39,7 @@ use crate::generated::{Generated, Stats};
 use crate::mesh::holes::Hole;
 use crate::mesh::tube::WeldStats;
 use crate::mesh::{self, Bounds, TreeMesh};
+use crate::meta::TreeMeta;
 use crate::params::{LeafParams, Stage, TreeParams};
 use crate::skeleton::Skeleton;
 
@@ -72,29 +73,7 @@ impl Quality {
     }
 }
 
-/// What an update changed, relative to the previous successful update of the session.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Changes {
-    /// The stems (and envelope, markers) were rebuilt.
-    pub skeleton: bool,
-    /// The bark buffers differ.
-    pub bark: bool,
-    /// The leaf matrices or tints differ.
-    pub placements: bool,
-    /// The leaf mesh drawn per leaf differs.
-    pub leaf_mesh: bool,
-    /// The leaf shape (texture) differs.
-    pub leaf: bool,
-    /// The bark's occlusion ([`TreeMesh::shade`]) was computed again (new bark or new leaves).
-    pub shade: bool,
-}
-
-impl Changes {
-    /// Whether anything at all changed.
-    pub fn any(&self) -> bool {
-        self.skeleton || self.bark || self.placements || self.leaf_mesh || self.leaf || self.shade
-    }
-}
+pub use crate::meta::Changes;
 
 /// The stems and what the viewer draws of them.
 #[derive(Clone, Debug)]
@@ -169,11 +148,16 @@ impl Current {
         self.bark.preview || self.bark.shade_stale || self.leaves_preview || self.leaf_preview
     }
 
-    /// Everything but the buffers as JSON: the fields of [`Generated::meta_json`] except the
-    /// hash ([`Session::hash`] comes after the buffers), the stage times of this update, and
+    /// Everything but the buffers as JSON: [`Current::meta`].
+    pub fn meta_json(&self) -> String {
+        crate::meta::to_json(&self.meta())
+    }
+
+    /// Everything but the buffers: the fields of [`Generated::meta`] except the hash
+    /// ([`Session::hash`] comes after the buffers), the stage times of this update, and
     /// `preview`, `from` (the first stage rerun) and `changes` (which buffers differ from the
     /// previous update's).
-    pub fn meta_json(&self) -> String {
+    pub fn meta(&self) -> TreeMeta {
         let b = &self.bark;
         let stems = self.skeleton.skeleton.stems.len();
         let mut meta = crate::generated::tree_meta(
@@ -185,17 +169,13 @@ impl Current {
             b.holes.len(),
         );
         let t = self.times;
-        let c = self.changes;
-        meta["stage_ms"] = serde_json::json!({ "skeleton": t.skeleton, "mesh": t.mesh, "foliage": t.foliage });
-        meta["total_ms"] = serde_json::json!(t.skeleton + t.mesh + t.foliage);
-        meta["preview"] = serde_json::json!(self.is_preview());
-        meta["bark_type"] = serde_json::json!(self.params.mesh.bark_type as u8);
-        meta["from"] = serde_json::json!(self.from);
-        meta["changes"] = serde_json::json!({
-            "skeleton": c.skeleton, "bark": c.bark, "placements": c.placements, "leaf_mesh": c.leaf_mesh, "leaf": c.leaf,
-            "shade": c.shade,
-        });
-        meta.to_string()
+        meta.stage_ms = [("skeleton", t.skeleton), ("mesh", t.mesh), ("foliage", t.foliage)].into_iter().collect();
+        meta.total_ms = t.skeleton + t.mesh + t.foliage;
+        meta.preview = Some(self.is_preview());
+        meta.bark_type = self.params.mesh.bark_type as u8;
+        meta.from = Some(self.from);
+        meta.changes = Some(self.changes);
+        meta
     }
 }
 

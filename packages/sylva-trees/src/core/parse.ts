@@ -1,7 +1,13 @@
-/** Runtime validation of the JSON the wasm core returns (registry, presets, meta, errors). */
+/**
+ * Runtime validation of the JSON the wasm core returns (registry, presets, meta, errors): it
+ * guards against a corrupted worker message. The shapes are the generated payload interfaces
+ * (`generated/payloads.ts`), which a Rust test keeps equal to what the core sends.
+ */
+import { CORE_ERROR_KINDS, MATERIALS, STAGES } from './generated/payloads';
 import type {
   Bounds,
   LeafInspection,
+  MaterialName,
   MeshGroup,
   ParamId,
   ParamKind,
@@ -18,14 +24,7 @@ import type {
 type Json = Record<string, unknown>;
 
 const PARAM_KINDS: readonly ParamKind[] = ['float', 'int', 'bool', 'enum'];
-const STAGES: readonly Stage[] = ['skeleton', 'mesh', 'foliage', 'leaf', 'viewer'];
-const ERROR_KINDS: readonly SylvaErrorKind[] = [
-  'invalid_param',
-  'unknown_param',
-  'budget',
-  'panic',
-  'internal',
-];
+const ERROR_KINDS: readonly SylvaErrorKind[] = [...CORE_ERROR_KINDS, 'panic', 'internal'];
 
 /** Thrown when core JSON does not match the contract. */
 export class ContractError extends Error {
@@ -98,13 +97,7 @@ function parseParamSpec(value: unknown, index: number): ParamSpec {
   if (o.options !== undefined && o.options !== null) {
     spec.options = array(o.options, `${where}.options`).map((x) => String(x));
   }
-  if (o.stage !== undefined) {
-    const stage = str(o, 'stage', where);
-    if (!STAGES.includes(stage as Stage)) {
-      throw new ContractError(`${where}.stage: unknown stage "${stage}"`);
-    }
-    spec.stage = stage as Stage;
-  }
+  if (o.stage !== undefined) spec.stage = oneOf<Stage>(o, 'stage', where, STAGES);
   return spec;
 }
 
@@ -131,34 +124,47 @@ export function parsePresets<Name extends string = PresetId>(text: string): Pres
   });
 }
 
+function bool(obj: Json, key: string, where: string): boolean {
+  const v = obj[key];
+  if (typeof v !== 'boolean') throw new ContractError(`${where}.${key}: expected a boolean`);
+  return v;
+}
+
+function pair(value: unknown, where: string): [number, number] {
+  const a = array(value, where);
+  if (a.length !== 2 || !a.every((x) => typeof x === 'number' && Number.isFinite(x))) {
+    throw new ContractError(`${where}: expected [a, b]`);
+  }
+  return [a[0] as number, a[1] as number];
+}
+
+function oneOf<T extends string>(obj: Json, key: string, where: string, values: readonly T[]): T {
+  const v = str(obj, key, where);
+  if (!values.includes(v as T)) throw new ContractError(`${where}.${key}: unknown value "${v}"`);
+  return v as T;
+}
+
 function parseGroup(value: unknown, i: number): MeshGroup {
   const where = `meta.groups[${i}]`;
   const o = record(value, where);
-  const material = str(o, 'material', where);
-  if (material !== 'bark' && material !== 'leaves') {
-    throw new ContractError(`${where}.material: unknown material "${material}"`);
-  }
+  const material: MaterialName = oneOf(o, 'material', where, MATERIALS);
   return { material, start: num(o, 'start', where), count: num(o, 'count', where) };
 }
 
 function parseChanges(value: unknown): TreeChanges {
-  const o = record(value, 'meta.changes');
-  const flag = (key: keyof TreeChanges): boolean => {
-    if (typeof o[key] !== 'boolean')
-      throw new ContractError(`meta.changes.${key}: expected a boolean`);
-    return o[key];
-  };
+  const where = 'meta.changes';
+  const o = record(value, where);
   return {
-    skeleton: flag('skeleton'),
-    bark: flag('bark'),
-    placements: flag('placements'),
-    leaf_mesh: flag('leaf_mesh'),
-    leaf: flag('leaf'),
-    ...(typeof o.shade === 'boolean' ? { shade: o.shade } : {}),
+    skeleton: bool(o, 'skeleton', where),
+    bark: bool(o, 'bark', where),
+    placements: bool(o, 'placements', where),
+    leaf_mesh: bool(o, 'leaf_mesh', where),
+    leaf: bool(o, 'leaf', where),
+    shade: bool(o, 'shade', where),
   };
 }
 
-/** Parses and validates a tree's `meta_json()` output. */
+/** A tree's `meta_json()` or a session's `update()`: the generated `TreeMeta`, all checked. */
 export function parseMeta(text: string): TreeMeta {
   const o = record(JSON.parse(text), 'meta');
   const b = record(o.bounds, 'meta.bounds');
@@ -166,23 +172,25 @@ export function parseMeta(text: string): TreeMeta {
     min: vec3(b.min, 'meta.bounds.min'),
     max: vec3(b.max, 'meta.bounds.max'),
   };
+  const at = 'meta';
   return {
-    vertices: num(o, 'vertices', 'meta'),
-    triangles: num(o, 'triangles', 'meta'),
-    hash: typeof o.hash === 'string' ? o.hash : '',
-    ...(typeof o.preview === 'boolean' ? { preview: o.preview } : {}),
-    ...(o.changes !== undefined ? { changes: parseChanges(o.changes) } : {}),
+    vertices: num(o, 'vertices', at),
+    triangles: num(o, 'triangles', at),
+    stems: num(o, 'stems', at),
+    holes: num(o, 'holes', at),
     bounds,
     groups: array(o.groups, 'meta.groups').map(parseGroup),
-    stage_ms: o.stage_ms === undefined ? {} : numberRecord(o.stage_ms, 'meta.stage_ms'),
-    total_ms: num(o, 'total_ms', 'meta'),
-    stems: typeof o.stems === 'number' ? o.stems : 0,
-    leaves: typeof o.leaves === 'number' ? o.leaves : 0,
-    leaf_hash: typeof o.leaf_hash === 'string' ? o.leaf_hash : '',
-    leaf_texture: Array.isArray(o.leaf_texture)
-      ? [Number(o.leaf_texture[0]), Number(o.leaf_texture[1])]
-      : null,
-    bark_type: typeof o.bark_type === 'number' ? o.bark_type : 0,
+    envelope: array(o.envelope, 'meta.envelope').map((p, i) => pair(p, `meta.envelope[${i}]`)),
+    leaves: num(o, 'leaves', at),
+    leaf_hash: str(o, 'leaf_hash', at),
+    leaf_texture: o.leaf_texture === null ? null : pair(o.leaf_texture, 'meta.leaf_texture'),
+    bark_type: num(o, 'bark_type', at),
+    stage_ms: numberRecord(o.stage_ms, 'meta.stage_ms'),
+    total_ms: num(o, 'total_ms', at),
+    hash: o.hash === undefined ? '' : str(o, 'hash', at),
+    ...(o.preview !== undefined ? { preview: bool(o, 'preview', at) } : {}),
+    ...(o.from !== undefined ? { from: oneOf<Stage>(o, 'from', at, STAGES) } : {}),
+    ...(o.changes !== undefined ? { changes: parseChanges(o.changes) } : {}),
   };
 }
 

@@ -1,5 +1,12 @@
 /** Shared data types of the Sylva wasm contract (registry, presets, errors, mesh metadata). */
 import type { LeafPresetId, ParamId, PresetId } from './generated/params';
+import type {
+  CoreError,
+  CoreErrorKind,
+  BarkStyle,
+  Stage,
+  TreeMeta as CoreTreeMeta,
+} from './generated/payloads';
 
 // Generated from the core's registry and presets (`npm run docs`, `sylva params --typescript`).
 export type {
@@ -11,14 +18,23 @@ export type {
   PresetValues,
 } from './generated/params';
 
+// Generated from the core's payload structs (`npm run docs`, `sylva params --payloads`).
+export type {
+  BarkStyle,
+  Bounds,
+  CoreError,
+  CoreErrorKind,
+  LeafInspection,
+  LodLevelMeta,
+  LodMeta,
+  MaterialName,
+  MeshGroup,
+  Stage,
+  TreeChanges,
+} from './generated/payloads';
+
 /** Kind of a generator parameter; every value is a number on the wire (bool 0/1, enum index). */
 export type ParamKind = 'float' | 'int' | 'bool' | 'enum';
-
-/**
- * The first pipeline stage a parameter affects (the core's `params::Stage`): an edit reruns
- * that stage and the later ones in the worker's session; `viewer` regenerates nothing.
- */
-export type Stage = 'skeleton' | 'mesh' | 'foliage' | 'leaf' | 'viewer';
 
 /** One entry of `registry_json()`: describes a generator parameter and its valid range. */
 export interface ParamSpec {
@@ -55,69 +71,23 @@ export type LeafPreset = Preset<LeafPresetId>;
 export type Params = Partial<Record<ParamId, number>>;
 
 /**
- * Error kinds the core reports (`panic` is also used for worker crashes; `timeout` is a
- * generation stopped by the scheduler's time limit).
+ * Error kinds: the core's (`CoreErrorKind`), plus `panic` (also used for worker crashes),
+ * `timeout` (a generation stopped by the scheduler's time limit) and `internal` (anything else
+ * the worker pipeline caught).
  */
-export type SylvaErrorKind =
-  'invalid_param' | 'unknown_param' | 'budget' | 'panic' | 'timeout' | 'internal';
+export type SylvaErrorKind = CoreErrorKind | 'panic' | 'timeout' | 'internal';
 
 /** Structured error thrown (as JSON text) by `generate`, or synthesised by the worker pipeline. */
-export interface SylvaError {
+export interface SylvaError extends Omit<CoreError, 'kind'> {
   kind: SylvaErrorKind;
-  param?: string;
-  message: string;
 }
 
-/** Material of an index range in the generated mesh. */
-export type MaterialName = 'bark' | 'leaves';
-
-/** An index range of the mesh drawn with one material. */
-export interface MeshGroup {
-  material: MaterialName;
-  start: number;
-  count: number;
-}
-
-/** Axis-aligned bounds in metres (Y up). */
-export interface Bounds {
-  min: [number, number, number];
-  max: [number, number, number];
-}
-
-/** Which buffers of a session update differ from the previous update's (`meta.changes`). */
-export interface TreeChanges {
-  skeleton: boolean;
-  bark: boolean;
-  placements: boolean;
-  leaf_mesh: boolean;
-  leaf: boolean;
-  /** The bark's occlusion was computed again (absent from older cores). */
-  shade?: boolean;
-}
-
-/** Parsed `meta_json()` of a generated tree. */
-export interface TreeMeta {
-  vertices: number;
-  triangles: number;
-  /** Content hash (16 hex digits); '' while it is computed, and for a preview. */
+/**
+ * A tree's parsed meta (the core's `TreeMeta`), its `hash` always a string: a session update
+ * has none, so it is '' while it is computed, and for a preview.
+ */
+export interface TreeMeta extends CoreTreeMeta {
   hash: string;
-  /** The bark is a quick preview (during a drag), not the full tree. */
-  preview?: boolean;
-  /** Session updates: what changed since the previous update. */
-  changes?: TreeChanges;
-  bounds: Bounds;
-  groups: MeshGroup[];
-  stage_ms: Record<string, number>;
-  total_ms: number;
-  stems: number;
-  /** Number of leaves (instances); 0 for a bare tree. */
-  leaves?: number;
-  /** Hash of the leaf shape: changes exactly when the leaf parameters change. */
-  leaf_hash?: string;
-  /** Size of the baked leaf texture `[width, height]`, null when bare. */
-  leaf_texture?: [number, number] | null;
-  /** The `bark_type` parameter's index: which bark maps the tree wears. */
-  bark_type?: number;
 }
 
 /** The leaf texture (RGBA8, row 0 = v 0), sent only when the leaf shape changed. */
@@ -205,18 +175,6 @@ export interface TreeBuffers {
   bark?: BarkTextureBuffers;
   /** Bark occlusion, one byte per vertex (0 dark .. 255 open sky; `TreeMesh.shade`); may be empty. */
   shade?: Uint8Array;
-}
-
-/** How a bark type lies on a stem (`sylva_core::mesh::bark::BarkStyle`). */
-export interface BarkStyle {
-  /** Tile width (m) on a stem of 1 m girth; `tile_at_1m * sqrt(girth)` on others. */
-  tile_at_1m: number;
-  /** Below this stem radius (m) the bark is young: smooth, of `young_rgb`. */
-  young_radius: number;
-  /** Linear RGB of young bark. */
-  young_rgb: [number, number, number];
-  /** Strength of the normal map on old bark. */
-  relief: number;
 }
 
 /** The core's procedural bark maps (`bark_maps`): RGBA8, `size`², row 0 = v 0. */
@@ -346,17 +304,4 @@ export interface WasmApi {
   bark_maps?(kind: number, size: number): Uint8Array;
   /** How bark type `kind` lies on a stem, as JSON (`BarkStyle`). */
   bark_style_json?(kind: number): string;
-}
-
-/** The inspector's view of one leaf (`leaf_inspect()`). */
-export interface LeafInspection {
-  svg: string;
-  iterations: number;
-  nodes: number;
-  links: number;
-  /** Vein segments drawn at the requested step. */
-  segments: number;
-  auxins: number;
-  triangles: number;
-  hash: string;
 }

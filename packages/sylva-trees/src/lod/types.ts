@@ -1,28 +1,7 @@
 /** Levels of detail as they cross the worker boundary (`generate_lods` in the wasm binding). */
-import type { Bounds, LeafTextureBuffers, MeshGroup, Params, VolumePrimitive } from '../core/types';
+import type { LeafTextureBuffers, LodMeta, Params, VolumePrimitive } from '../core/types';
 
-/** Per-level counts from `GeneratedLods.meta_json()`. */
-export interface LodLevelMeta {
-  /** Triangles drawn: bark + leaf mesh × leaves + 2 per cloud quad. */
-  triangles: number;
-  vertices: number;
-  bark_triangles: number;
-  leaves: number;
-  leaf_triangles: number;
-  quads: number;
-  stems: number;
-  groups: MeshGroup[];
-}
-
-/** `GeneratedLods.meta_json()`. */
-export interface LodMeta {
-  /** Hash of LOD0 (equals the `generate` hash of the same params). */
-  hash: string;
-  bounds: Bounds;
-  levels: LodLevelMeta[];
-  leaf_hash: string;
-  leaf_texture: [number, number] | null;
-}
+export type { LodLevelMeta, LodMeta } from '../core/types';
 
 /** One level's buffers (bark tubes, instanced leaves, billboard-cloud quads). */
 export interface LodLevelBuffers {

@@ -55,7 +55,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     matrices: instances?.matrices ?? EMPTY_F32,
     colors: instances?.colors ?? EMPTY_F32,
     texture: update.leafTexture ?? null,
-    leafHash: update.meta.leaf_texture ? (update.meta.leaf_hash ?? '') : '',
+    leafHash: update.meta.leaf_texture ? update.meta.leaf_hash : '',
   };
   const wind = update.bark ? update.bark.wind : current?.wind;
   const markers = update.markers ?? current?.markers;

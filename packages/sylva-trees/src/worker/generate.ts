@@ -170,7 +170,7 @@ export class SessionGenerator {
   prime(params: Params): void {
     const meta = parseMeta(this.session.update(JSON.stringify(params), -1));
     // Its bark maps too (about 50 ms): the first result then only copies arrays out.
-    this.barkBaked = barkOf(this.wasm, meta.bark_type ?? 0) ?? null;
+    this.barkBaked = barkOf(this.wasm, meta.bark_type) ?? null;
   }
 
   /** Forgets the cached stages (the next request generates cold). */
@@ -228,7 +228,7 @@ export class SessionGenerator {
         indices: s.leaf_indices(),
       };
     }
-    const leafHash = meta.leaf_texture ? (meta.leaf_hash ?? '') : '';
+    const leafHash = meta.leaf_texture ? meta.leaf_hash : '';
     if (leafHash !== this.sentLeafHash && meta.leaf_texture) {
       const [width, height] = meta.leaf_texture;
       const rgba = s.leaf_texture();
@@ -237,7 +237,7 @@ export class SessionGenerator {
     // A bare tree sent no texture: the next leafy tree must send one.
     this.sentLeafHash = leafHash;
     // The bark maps go out with the first result and again when the bark type changes.
-    const kind = meta.bark_type ?? 0;
+    const kind = meta.bark_type;
     if (this.barkSent !== kind) {
       this.barkSent = kind;
       const baked = this.barkBaked;

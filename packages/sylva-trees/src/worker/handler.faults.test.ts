@@ -1,6 +1,6 @@
 /** Worker handler fault paths over a fake wasm API: traps other than a panic, OOM, hangs. */
 import { describe, expect, it } from 'vitest';
-import type { WasmApi, WasmSession } from '../core/types';
+import type { TreeMeta, WasmApi, WasmSession } from '../core/types';
 import { createHandler, isTrap } from './handler';
 import { debugHooks, type DebugRequest, type DebugResponse } from './debug';
 import type { WorkerResponse } from './protocol';
@@ -14,7 +14,13 @@ const META = JSON.stringify({
   stage_ms: {},
   total_ms: 1,
   stems: 1,
-});
+  holes: 0,
+  envelope: [],
+  leaves: 0,
+  leaf_hash: '0000000000000000',
+  leaf_texture: null,
+  bark_type: 0,
+} satisfies TreeMeta);
 
 interface FakeOptions {
   /** What `generate` throws (nothing: it returns a tree). */

@@ -58,6 +58,12 @@ const META: TreeMeta = {
   stage_ms: {},
   total_ms: 1,
   stems: 0,
+  holes: 0,
+  envelope: [],
+  leaves: 0,
+  leaf_hash: '0000000000000000',
+  leaf_texture: null,
+  bark_type: 0,
 };
 
 /** An empty result for request `id`. */
