@@ -50,6 +50,8 @@ pub struct Generated {
     pub holes: Vec<mesh::holes::Hole>,
     /// The bark pattern ([`mesh::bark`]): the exporters bake its textures.
     pub bark: params::BarkType,
+    /// What became of each hand edit ([`crate::edits`]): resolved or not, in list order.
+    pub edits: Vec<crate::edits::EditReport>,
 }
 
 impl Generated {
@@ -64,6 +66,7 @@ impl Generated {
             tree_meta(&self.mesh, &self.foliage, &self.bounds, &self.envelope, self.stats.stems, self.stats.holes);
         meta["bark_type"] = serde_json::json!(self.bark as u8);
         meta["hash"] = serde_json::json!(self.hash_hex());
+        meta["edits"] = serde_json::json!(self.edits);
         let stage_ms: serde_json::Map<String, serde_json::Value> =
             self.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
         meta["stage_ms"] = serde_json::Value::Object(stage_ms);

@@ -105,6 +105,8 @@ pub struct SkeletonOut {
     pub markers: Vec<glam::Vec3>,
     /// Crown envelope profile ([`crate::skeleton::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
+    /// What became of each hand edit ([`crate::edits`]), in list order.
+    pub edits: Vec<crate::edits::EditReport>,
 }
 
 /// The bark of the current tree.
@@ -191,6 +193,7 @@ impl Current {
         meta["preview"] = serde_json::json!(self.is_preview());
         meta["bark_type"] = serde_json::json!(self.params.mesh.bark_type as u8);
         meta["from"] = serde_json::json!(self.from);
+        meta["edits"] = serde_json::json!(self.skeleton.edits);
         meta["changes"] = serde_json::json!({
             "skeleton": c.skeleton, "bark": c.bark, "placements": c.placements, "leaf_mesh": c.leaf_mesh, "leaf": c.leaf,
             "shade": c.shade,
@@ -453,6 +456,7 @@ impl Session {
             stats,
             envelope: c.skeleton.envelope,
             markers: c.skeleton.markers,
+            edits: c.skeleton.edits,
             foliage: c.foliage,
             holes: c.bark.holes,
             bark: c.params.mesh.bark_type,
