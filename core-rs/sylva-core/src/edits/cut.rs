@@ -9,6 +9,9 @@ use super::{remove, subtree, transform};
 use crate::skeleton::{Points, Skeleton};
 use glam::Quat;
 
+/// A child whose base lies within this many of its radii of the cut goes too: its footprint on
+/// the stump (about a radius over the sine of its angle) would reach past the cut face.
+pub const FOOTPRINT: f32 = 3.0;
 /// Fewest segments a stump's centre polyline gets.
 const MIN_SEGMENTS: usize = 4;
 
@@ -28,7 +31,7 @@ pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32) {
     for c in i + 1..n {
         let child = &skeleton.stems[c];
         match child.parent {
-            Some(p) if p as usize == i => gone[c] = child.offset + child.radius > along,
+            Some(p) if p as usize == i => gone[c] = child.offset + FOOTPRINT * child.radius > along,
             Some(p) => gone[c] = gone[p as usize],
             None => {}
         }
