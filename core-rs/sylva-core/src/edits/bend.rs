@@ -10,7 +10,7 @@
 //! rigidly by the bend's rotation at its attachment point and moves with that point; base
 //! normals turn with their stems.
 
-use super::{subtree, transform};
+use super::stems::{subtree, transform};
 use crate::error::SylvaError;
 use crate::math::pow;
 use crate::params::edits::bad;

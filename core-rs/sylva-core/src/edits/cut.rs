@@ -5,7 +5,7 @@
 //! goes, with all its descendants, and so with their leaves. A cut so near a branch's base that
 //! the stump would sit inside its parent removes the whole branch.
 
-use super::{remove, subtree, transform};
+use super::stems::{remove, subtree, transform};
 use crate::skeleton::{Points, Skeleton};
 use glam::Quat;
 

@@ -3,9 +3,9 @@
 //! bevel ring in the cut plane, and inside it a flat face in the [`Material::CutFace`] group
 //! shows the end grain. The face's vertices copy the bevel ring's positions exactly (the surface
 //! stays closed when welded by position, as [`super::topology`] counts it) and carry disc
-//! coordinates: `uv = 0.5 + 0.49 (x, y) / r` in the cut plane's frame, so the baked end-grain
-//! texture puts the pith at the stem's centre and its growth rings
-//! concentric around it.
+//! coordinates: `uv = 0.5 + 0.49 (x, y) / r` in the cut plane's frame, so an end-grain texture
+//! drawn as a disc (pith at its centre, growth rings concentric around it, radial checks) maps
+//! onto the face with the pith on the stem's axis.
 
 use super::stem::{Frame, StemMesh};
 use super::{Material, MeshBuilder, VertexBlock, WIND_STRIDE};

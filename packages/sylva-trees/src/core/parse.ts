@@ -135,7 +135,7 @@ function parseGroup(value: unknown, i: number): MeshGroup {
   const where = `meta.groups[${i}]`;
   const o = record(value, where);
   const material = str(o, 'material', where);
-  if (material !== 'bark' && material !== 'leaves') {
+  if (material !== 'bark' && material !== 'leaves' && material !== 'cut_face') {
     throw new ContractError(`${where}.material: unknown material "${material}"`);
   }
   return { material, start: num(o, 'start', where), count: num(o, 'count', where) };

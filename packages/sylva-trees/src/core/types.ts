@@ -69,7 +69,7 @@ export interface SylvaError {
 }
 
 /** Material of an index range in the generated mesh. */
-export type MaterialName = 'bark' | 'leaves';
+export type MaterialName = 'bark' | 'leaves' | 'cut_face';
 
 /** An index range of the mesh drawn with one material. */
 export interface MeshGroup {
