@@ -1,7 +1,9 @@
 // Standing rule 5: the wasm build (run in Node) must give byte-identical buffers to the native
 // build. Compares the content hash of every preset and a spread of seeds with `sylva generate`.
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { nativeCli } from './native-cli.mjs';
 
 const wasm = await import(
@@ -28,6 +30,16 @@ for (const preset of JSON.parse(wasm.presets_json())) {
 for (const seed of [0, 7, 123456, 4294967295]) {
   cases.push({ name: `seed ${seed}`, values: { seed }, args: ['--seed', String(seed)] });
 }
+// Hand edits (a cut and a bend on two main branches of the default tree): the same edits give
+// the same bytes natively (`--edits FILE`) and in wasm (the `edits` array of the parameters).
+const edits = [
+  { op: 'bend', at: [1.4077538, 5.961102, -1.6150186], to: [1.4077538, 6.461102, -1.3150186] },
+  { op: 'cut', at: [-1.8003398, 5.9014244, 0.38097703] },
+  { op: 'cut', at: [30, 4, 0] },
+];
+const editsFile = join(mkdtempSync(join(tmpdir(), 'sylva-parity-')), 'edits.json');
+writeFileSync(editsFile, JSON.stringify({ version: 1, edits }));
+cases.push({ name: 'edits', values: { edits }, args: ['--edits', editsFile] });
 let passed = 0;
 let failed = 0;
 for (const c of cases) {

@@ -40,7 +40,8 @@ pub enum Command {
     /// leaf meshes, PBR materials, embedded PNG textures, tangents, vertex colours, the wind
     /// attributes `_WIND_PIVOT` and `_WIND_PARAMS`) or as Wavefront OBJ (`.obj`, plus `NAME.mtl` and
     /// `NAME_*.png` textures next to it, leaves baked), and adds `written`: `[file, bytes]` per
-    /// file (docs/formats.md).
+    /// file (docs/formats.md). With edits (`--edits`), `edits` lists each edit's `op` and whether
+    /// it `resolved` (with `why` not); each unresolved edit is also printed on stderr.
     #[command(args_override_self = true)]
     Generate(GenerateArgs),
     /// Print the parameter registry as JSON
@@ -126,7 +127,7 @@ pub enum Command {
     },
 }
 
-/// The tree: a preset, then the seed and `--set` values in command-line order, and volumes.
+/// The tree: a preset, then the seed and `--set` values in command-line order, volumes and edits.
 #[derive(Args, Debug)]
 pub struct TreeArgs {
     /// Start from this tree preset (`sylva presets` lists them) instead of the defaults
@@ -141,6 +142,9 @@ pub struct TreeArgs {
     /// Growth volume primitives: a JSON array of spheres, boxes and cylinders (docs/formats.md)
     #[arg(long, value_name = "FILE.json")]
     pub volumes: Option<String>,
+    /// Hand edits (paint, crown, cut, bend): a JSON document `{"version": 1, "edits": [...]}` (docs/formats.md)
+    #[arg(long, value_name = "FILE.json")]
+    pub edits: Option<String>,
     /// `--seed` and `--set` in the order they were given (filled in by `main`).
     #[arg(skip)]
     pub in_order: Vec<(String, String)>,

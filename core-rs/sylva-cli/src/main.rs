@@ -118,7 +118,7 @@ fn ordered_sets(m: &ArgMatches) -> Vec<(String, String)> {
 }
 
 /// The tree of a command line: the preset (or the defaults), the `--seed`/`--set` values in
-/// order, and the volume primitives.
+/// order, the volume primitives and the hand edits.
 fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
     let known: Vec<&str> = presets::PRESETS.iter().map(|p| p.name).collect();
     let find = |name: &str| presets::find(name).map(|p| p.params());
@@ -126,6 +126,11 @@ fn tree_params(a: &TreeArgs) -> Result<TreeParams, String> {
     if let Some(path) = &a.volumes {
         let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --volumes {path}: {e}"))?;
         params.skeleton.volumes = sylva_core::params::volumes::from_json(&text).map_err(|e| e.to_string())?;
+    }
+    if let Some(path) = &a.edits {
+        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read --edits {path}: {e}"))?;
+        params.skeleton.edits =
+            sylva_core::params::edits::from_json(&text).map_err(|e| format!("--edits {path}: {e}"))?;
     }
     Ok(params)
 }

@@ -160,6 +160,20 @@ pub const INTERFACES: &[Interface] = &[
             opt("preview", Ty::Bool, "A session update: the tree is a drag's quick preview, not the full tree."),
             opt("from", Ty::Named("Stage"), "A session update: the first stage it reran."),
             opt("changes", Ty::Named("TreeChanges"), "A session update: what changed since the previous update."),
+            opt(
+                "edits",
+                Ty::Array(&Ty::Named("EditReport")),
+                "What became of each hand edit, in list order (absent without edits).",
+            ),
+        ],
+    },
+    Interface {
+        name: "EditReport",
+        doc: "What became of one hand edit (`sylva_core::edits::EditReport`).",
+        fields: &[
+            f("op", Ty::String, "The edit's op: `paint`, `crown`, `cut` or `bend`."),
+            f("resolved", Ty::Bool, "Whether the edit found its stem and was applied."),
+            opt("why", Ty::String, "Why not, when unresolved."),
         ],
     },
     Interface {
@@ -242,9 +256,9 @@ fn stages() -> Vec<String> {
 }
 
 fn materials() -> Vec<String> {
-    let all = [Material::Bark, Material::Leaves];
+    let all = [Material::Bark, Material::Leaves, Material::CutFace];
     all.iter().for_each(|m| match m {
-        Material::Bark | Material::Leaves => {}
+        Material::Bark | Material::Leaves | Material::CutFace => {}
     });
     all.iter().map(|v| json_str(serde_json::to_value(v))).collect()
 }

@@ -190,7 +190,7 @@ mod tests {
         assert_eq!(
             synopsis(generate),
             "sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] \
-             [--out FILE.glb|FILE.obj] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
+             [--edits FILE.json] [--out FILE.glb|FILE.obj] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
              [--no-wind] [--report skeleton|mesh]..."
         );
         let envelope = cmd.find_subcommand("envelope").expect("envelope");

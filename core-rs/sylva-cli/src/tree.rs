@@ -20,7 +20,13 @@ fn export_options(a: &ExportArgs) -> ExportOptions {
 /// `sylva generate`: one JSON object, and the export files of `--out`.
 pub fn generate(a: &GenerateArgs) -> Result<String, String> {
     let params = tree_params(&a.tree)?;
-    let g = sylva_core::generate(&params).map_err(|e| e.to_string())?;
+    let g = sylva_core::generate(&params).map_err(|e| match &a.tree.edits {
+        Some(path) if e.message().starts_with("edits") => format!("--edits {path}: {e}"),
+        _ => e.to_string(),
+    })?;
+    for (i, r) in g.edits.iter().enumerate().filter(|(_, r)| !r.resolved) {
+        eprintln!("edits[{i}] ({}) is unresolved: {}", r.op, r.why.as_deref().unwrap_or("no stem found"));
+    }
     let written = match &a.out {
         Some(path) => Some(write_export(&g, &export_options(&a.export), path)?),
         None => None,
@@ -35,6 +41,9 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
         "ms": ms,
         "total_ms": g.stats.total_ms,
     });
+    if !g.edits.is_empty() {
+        out["edits"] = serde_json::json!(g.edits);
+    }
     if let Some(files) = written {
         out["written"] = serde_json::json!(files);
     }

@@ -52,6 +52,8 @@ pub struct Generated {
     pub holes: Vec<mesh::holes::Hole>,
     /// The bark pattern ([`mesh::bark`]): the exporters bake its textures.
     pub bark: params::BarkType,
+    /// What became of each hand edit ([`crate::edits`]): resolved or not, in list order.
+    pub edits: Vec<crate::edits::EditReport>,
 }
 
 impl Generated {
@@ -75,6 +77,7 @@ impl Generated {
         meta.hash = Some(self.hash_hex());
         meta.stage_ms = self.stats.stage_ms.iter().copied().collect();
         meta.total_ms = self.stats.total_ms;
+        meta.edits = self.edits.clone();
         meta
     }
 }
@@ -107,6 +110,7 @@ pub(crate) fn tree_meta(
         preview: None,
         from: None,
         changes: None,
+        edits: Vec::new(),
     }
 }
 

@@ -91,6 +91,9 @@ pub struct TreeMeta {
     /// A session update: which buffers differ from the previous update's.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub changes: Option<Changes>,
+    /// What became of each hand edit, in list order (absent when the tree has no edits).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub edits: Vec<crate::edits::EditReport>,
 }
 
 /// One level of detail's counts ([`LodMeta::levels`]).

@@ -85,7 +85,8 @@ fn params(json: &str) -> TreeParams {
 fn samples() -> Vec<(&'static str, Value)> {
     let mut out = Vec::new();
     let (leafy, bare) = (params(r#"{"levels": 2}"#), params(r#"{"levels": 2, "leaves": 0}"#));
-    for p in [&leafy, &bare] {
+    let cut = params(r#"{"levels": 2, "edits": [{"op": "cut", "at": [0, 30, 0]}]}"#);
+    for p in [&leafy, &bare, &cut] {
         let g = sylva_core::generate(p).expect("a tree");
         out.push(("TreeMeta", parse(&g.meta_json())));
         let lods = sylva_core::lod::lods_of(g, &p.mesh).expect("levels");
@@ -148,7 +149,7 @@ fn the_checker_reports_a_renamed_missing_or_mistyped_field() {
 #[test]
 fn the_unions_are_the_rust_enums_values() {
     assert_eq!(stages(), ["skeleton", "mesh", "foliage", "leaf", "viewer"]);
-    assert_eq!(materials(), ["bark", "leaves"]);
+    assert_eq!(materials(), ["bark", "leaves", "cut_face"]);
     assert_eq!(error_kinds(), ["invalid_param", "unknown_param", "budget", "input"]);
     // The registry's stages are the union's.
     let registry = serde_json::to_value(sylva_core::params::registry()).expect("the registry serialises");

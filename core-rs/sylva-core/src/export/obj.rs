@@ -88,7 +88,8 @@ fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first
         let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
     }
     for g in m.groups.iter().filter(|g| g.count > 0) {
-        let mat = if g.material == crate::mesh::Material::Bark { "bark" } else { "leaves" };
+        // Cut faces use the bark's material until the exporters bake an end-grain one.
+        let mat = if g.material == crate::mesh::Material::Leaves { "leaves" } else { "bark" };
         let _ = writeln!(s, "usemtl {mat}");
         for t in m.indices[g.start as usize..(g.start + g.count) as usize].chunks_exact(3) {
             let (a, b, c) = (u64::from(t[0]) + first, u64::from(t[1]) + first, u64::from(t[2]) + first);

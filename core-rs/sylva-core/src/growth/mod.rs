@@ -216,6 +216,7 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
             chain_start: 0.0,
             lobed: false,
             radii: Some(r),
+            cut_end: false,
             points,
         });
     }

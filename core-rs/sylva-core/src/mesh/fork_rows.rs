@@ -58,6 +58,7 @@ mod tests {
             chain_start: 0.0,
             lobed: false,
             radii: Some(vec![0.1, 0.1]),
+            cut_end: false,
             points: [Vec3::ZERO, Vec3::Y * 10.0].into_iter().collect(),
         };
         let short = fork(0.1, 0.1 + 2.5 * 0.1 / 10.0);

@@ -4,6 +4,7 @@
 
 pub mod bark;
 mod builder;
+pub mod cut_face;
 pub mod fork;
 pub mod fork_rows;
 pub mod holes;
@@ -28,6 +29,20 @@ pub enum Material {
     Bark,
     /// Leaf blades.
     Leaves,
+    /// The end grain of a cut stem's face ([`cut_face`]), inside its bark rim.
+    #[serde(rename = "cut_face")]
+    CutFace,
+}
+
+impl Material {
+    /// The material's name in exports (OBJ groups and materials, glTF materials).
+    pub fn name(self) -> &'static str {
+        match self {
+            Material::Bark => "bark",
+            Material::Leaves => "leaves",
+            Material::CutFace => "cut_face",
+        }
+    }
 }
 
 /// A contiguous range of `indices` drawn with one material.
@@ -209,7 +224,7 @@ impl TreeMesh {
             let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
         }
         for g in &self.groups {
-            let _ = writeln!(s, "g {}", if g.material == Material::Bark { "bark" } else { "leaves" });
+            let _ = writeln!(s, "g {}", g.material.name());
             let range = g.start as usize..(g.start + g.count) as usize;
             for t in self.indices[range].chunks_exact(3) {
                 let (a, b, c) = (t[0] + 1, t[1] + 1, t[2] + 1);

@@ -27,6 +27,9 @@ pub(crate) struct StemMesh {
     pub claim: usize,
     /// `v` of ring 0.
     pub v0: f32,
+    /// A cut end ([`super::cut_face`]): the first vertex of its bevel ring (the face ring
+    /// follows; `apex` is the face's centre).
+    pub cut: Option<u32>,
 }
 
 impl StemMesh {

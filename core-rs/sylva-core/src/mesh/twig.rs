@@ -118,6 +118,7 @@ pub fn mask(skeleton: &Skeleton) -> Vec<bool> {
                 && s.taper <= 1.0
                 && s.flare == 0.0
                 && s.radii.is_none()
+                && !s.cut_end
                 && faithful(s)
         })
         .collect()
@@ -254,7 +255,17 @@ pub(crate) fn sweep(
     let cap = out.vertex_with_wind(centre.to_array(), (-d0).to_array(), [0.5, 0.0], &wind.record(stem, 0.0, r0));
     out.rings(first, rings as u32, stride as u32);
     // Indices come later from the tube's emitter, like every swept stem.
-    StemMesh { first, rings: rings as u32, sides: sides as u32, ring0, apex, base: Base::Cap(cap), claim: 0, v0: 0.0 }
+    StemMesh {
+        first,
+        rings: rings as u32,
+        sides: sides as u32,
+        ring0,
+        apex,
+        base: Base::Cap(cap),
+        claim: 0,
+        v0: 0.0,
+        cut: None,
+    }
 }
 
 #[cfg(test)]

@@ -54,7 +54,7 @@ macro_rules! define_params {
     (@split [$($s:tt)*] [$($m:tt)*] [$($f:tt)*] [$($l:tt)*] [$($v:tt)*]) => {
         define_params!(@stage SkeletonParams, Skeleton,
             "The skeleton stage's parameters: the stems (Weber & Penn or space colonization), the crown \
-             envelope, the per-level parameters and the growth volumes. What later stages need of them \
+             envelope, the per-level parameters, the growth volumes and the hand edits. What later stages need of them \
              travels on the [`crate::skeleton::Skeleton`].",
             [$($s)*]
             {
@@ -63,9 +63,13 @@ macro_rules! define_params {
                 /// Growth mode: the user's volume primitives (crown, shadow and exclusion groups);
                 /// structured data beside the registry, JSON key `"volumes"` (see [`crate::params::volumes`]).
                 pub volumes: Vec<$crate::params::VolumePrimitive>,
+                /// The hand edits (paint, crown, cut, bend), applied in order after the stems are
+                /// built; structured data beside the registry, JSON key `"edits"` (see
+                /// [`crate::params::edits`]).
+                pub edits: Vec<$crate::params::Edit>,
             }
-            { level: [0, 1, 2, 3].map(LevelParams::of_level), volumes: Vec::new(), }
-            (|a: &Self, b: &Self| a.level == b.level && a.volumes == b.volumes));
+            { level: [0, 1, 2, 3].map(LevelParams::of_level), volumes: Vec::new(), edits: Vec::new(), }
+            (|a: &Self, b: &Self| a.level == b.level && a.volumes == b.volumes && a.edits == b.edits));
         define_params!(@stage MeshParams, Mesh,
             "The mesh stage's parameters: how the bark is swept, welded, fluted and cut.",
             [$($m)*] {} {} (|_: &Self, _: &Self| true));

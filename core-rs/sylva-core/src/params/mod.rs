@@ -10,6 +10,7 @@
 //! | `macros.rs` | `define_params!` (the table → [`TreeParams`], the specs) and `param_enum!` |
 //! | `enums.rs` | the enum parameters ([`CrownShape`], [`GrowthMode`], the leaf's options, ...) |
 //! | `volumes.rs` | the growth volume primitives, structured data beside the table |
+//! | `edits.rs` | the hand edit list (paint, crown, cut, bend), structured data beside the table |
 //! | `spec.rs` | what the registry says of one parameter ([`ParamSpec`]) and the pipeline [`Stage`]s |
 //! | `stages.rs` | [`TreeParams`]: one struct per stage ([`SkeletonParams`], ...), the flat get / set by id |
 //! | `values.rs` | [`param_values!`](crate::param_values): a preset's values as typed assignments ([`ParamValues`]) |
@@ -24,6 +25,7 @@ use crate::error::SylvaError;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
+pub mod edits;
 mod enums;
 mod macros;
 mod registry;
@@ -32,6 +34,7 @@ mod stages;
 pub mod values;
 pub mod volumes;
 
+pub use edits::{Bend, Crown, Cut, Edit, Paint};
 pub use enums::{
     BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPrimaries, LeafVenation,
     TwigDetail,
@@ -113,6 +116,10 @@ impl TreeParams {
                 p.skeleton.volumes = volumes::from_json_value(value)?;
                 continue;
             }
+            if id == "edits" {
+                p.skeleton.edits = edits::from_json_value(value)?;
+                continue;
+            }
             let v = match value {
                 serde_json::Value::Number(n) => n.as_f64().unwrap_or(f64::NAN),
                 serde_json::Value::Bool(b) => f64::from(u8::from(*b)),
@@ -135,7 +142,8 @@ impl TreeParams {
             let v = self.get(&spec.id).expect("every registry id is gettable");
             spec.check(v)?;
         }
-        volumes::validate(&self.skeleton.volumes)
+        volumes::validate(&self.skeleton.volumes)?;
+        edits::validate(&self.skeleton.edits)
     }
 
     /// The values that differ from the defaults, by id in registry order. Compared by their

@@ -84,6 +84,8 @@ pub struct SkeletonOut {
     pub markers: Vec<glam::Vec3>,
     /// Crown envelope profile ([`crate::skeleton::preview_profile`]).
     pub envelope: Vec<[f32; 2]>,
+    /// What became of each hand edit ([`crate::edits`]), in list order.
+    pub edits: Vec<crate::edits::EditReport>,
 }
 
 /// The bark of the current tree.
@@ -175,6 +177,7 @@ impl Current {
         meta.bark_type = self.params.mesh.bark_type as u8;
         meta.from = Some(self.from);
         meta.changes = Some(self.changes);
+        meta.edits = self.skeleton.edits.clone();
         meta
     }
 }
@@ -433,6 +436,7 @@ impl Session {
             stats,
             envelope: c.skeleton.envelope,
             markers: c.skeleton.markers,
+            edits: c.skeleton.edits,
             foliage: c.foliage,
             holes: c.bark.holes,
             bark: c.params.mesh.bark_type,

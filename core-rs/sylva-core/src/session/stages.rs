@@ -83,20 +83,22 @@ pub(super) fn preview_leaf_params(p: &LeafParams) -> LeafParams {
 /// Smallest Texture Size level a preview leaf goes down to (16 texels).
 const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
 
-/// The skeleton stage: Weber & Penn stems or space-colonization growth, and the envelope.
+/// The skeleton stage: Weber & Penn stems or space-colonization growth, then the hand edits
+/// ([`crate::edits`]), and the envelope.
 pub(super) fn build_skeleton(
     p: &SkeletonParams,
     progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<SkeletonOut, SylvaError> {
-    let (skeleton, markers) = match p.growth_mode {
+    let (mut skeleton, markers) = match p.growth_mode {
         GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
         GrowthMode::SpaceColonization => {
             let grown = growth::grow_with_progress(p, progress)?;
             (growth::skeleton(p, &grown), grown.markers)
         }
     };
+    let edits = crate::edits::apply(&mut skeleton, &p.edits)?;
     let envelope = skeleton::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
-    Ok(SkeletonOut { skeleton, markers, envelope })
+    Ok(SkeletonOut { skeleton, markers, envelope, edits })
 }
 
 /// The mesh stage at full quality: sweep and weld, then cut the holes.

@@ -212,6 +212,7 @@ impl Builder<'_> {
             chain_start: z0,
             lobed: trunk,
             radii: None,
+            cut_end: false,
         });
         if s.level + 1 < p.levels as usize {
             self.grow_children(s.level, index, &mut rng)?;

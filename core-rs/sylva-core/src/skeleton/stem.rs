@@ -61,6 +61,9 @@ pub struct Stem {
     /// Radius at each of [`Stem::points`] when the profile is given point by point (grown
     /// trees, pipe model) instead of by Weber & Penn's taper.
     pub radii: Option<Vec<f32>>,
+    /// The stem was cut at its tip by a hand edit ([`crate::edits`]): the mesh stage closes it
+    /// with a cut face (a bark rim around end grain) instead of a pointed tip.
+    pub cut_end: bool,
 }
 
 impl Stem {

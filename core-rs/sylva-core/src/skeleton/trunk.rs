@@ -69,6 +69,7 @@ pub(super) fn add_roots(p: &SkeletonParams, stems: &mut Vec<Stem>) {
             chain_start: 0.0,
             lobed: false,
             radii: None,
+            cut_end: false,
         });
     }
 }

@@ -6,6 +6,7 @@
 import { CORE_ERROR_KINDS, MATERIALS, STAGES } from './generated/payloads';
 import type {
   Bounds,
+  EditReport,
   LeafInspection,
   MaterialName,
   MeshGroup,
@@ -191,6 +192,17 @@ export function parseMeta(text: string): TreeMeta {
     ...(o.preview !== undefined ? { preview: bool(o, 'preview', at) } : {}),
     ...(o.from !== undefined ? { from: oneOf<Stage>(o, 'from', at, STAGES) } : {}),
     ...(o.changes !== undefined ? { changes: parseChanges(o.changes) } : {}),
+    ...(o.edits !== undefined ? { edits: array(o.edits, 'meta.edits').map(parseEditReport) } : {}),
+  };
+}
+
+function parseEditReport(value: unknown, i: number): EditReport {
+  const where = `meta.edits[${i}]`;
+  const o = record(value, where);
+  return {
+    op: str(o, 'op', where),
+    resolved: bool(o, 'resolved', where),
+    ...(o.why !== undefined ? { why: str(o, 'why', where) } : {}),
   };
 }
 

@@ -24,6 +24,7 @@ export type {
   Bounds,
   CoreError,
   CoreErrorKind,
+  EditReport,
   LeafInspection,
   LodLevelMeta,
   LodMeta,

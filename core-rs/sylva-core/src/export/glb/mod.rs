@@ -174,7 +174,8 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let leaf_material = (has_leaves || bark.groups.iter().any(|g| g.material == Material::Leaves))
         .then(|| material(&mut doc, &LEAVES, owned.leaf_pngs.as_deref(), normal_maps, &mut used_samplers));
     let pick = |m: Material| match m {
-        Material::Bark => bark_material.or(leaf_material).unwrap_or(0),
+        // Cut faces draw with the bark's material until the exporters bake an end-grain one.
+        Material::Bark | Material::CutFace => bark_material.or(leaf_material).unwrap_or(0),
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
     };
     let mut bark_wind = None;

@@ -137,7 +137,11 @@ pub fn eligible(skeleton: &Skeleton, p: &MeshParams, twigs: &[bool]) -> Vec<bool
         .enumerate()
         .map(|(i, s)| {
             let min = if s.level == 0 { p.hole_min_radius } else { 2.0 * p.hole_min_radius };
-            s.level <= 1 && i < roots && !twigs.get(i).copied().unwrap_or(false) && s.radius_at(0.0) >= min
+            s.level <= 1
+                && i < roots
+                && !s.cut_end
+                && !twigs.get(i).copied().unwrap_or(false)
+                && s.radius_at(0.0) >= min
         })
         .chain(std::iter::repeat(false))
         .take(n)

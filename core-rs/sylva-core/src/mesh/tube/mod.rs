@@ -109,6 +109,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
         emit(m, &claimed, &mut out);
     }
     out.extend_indices(&bridges);
+    super::cut_face::emit_faces(&meshes, &mut out);
     Ok(Built { mesh: out.finish(), welds: stats, blocks })
 }
 

@@ -133,6 +133,11 @@ impl Plan {
             self.vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
             // Quads, tip fan and base fan; a junction's zip and collar quads.
             self.indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
+            if s.cut_end {
+                // A cut end's bevel and face rings, its rim quads and face fan.
+                self.vertices += crate::mesh::cut_face::extra_vertices(plan.sides);
+                self.indices += u64::from(plan.sides) * 9;
+            }
             if let Some(j) = self.junctions[i] {
                 // Either the footprint loop and the collar loops, or a fallback swept from the
                 // parent's axis: planned here as it would be (densified for holes too), so that

@@ -97,6 +97,15 @@ pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
         out.drain(first..keep);
         out.insert(first, start);
     }
+    if stem.cut_end {
+        // A cut end: the last ring a bevel short of the cut plane (see `crate::mesh::cut_face`).
+        let end = 1.0 - crate::mesh::cut_face::bevel(stem) / stem.length.max(1e-6);
+        let keep = out[first..].partition_point(|&t| t < end - 1e-4).max(1) + first;
+        out.truncate(keep);
+        let last = out[out.len() - 1];
+        out.push(if end > last + 1e-4 { end } else { last + 0.75 * (1.0 - last) });
+        return;
+    }
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));

@@ -10,7 +10,7 @@
 use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
 use crate::mesh::stem::{Base, Frame, StemMesh, StemWind};
 use crate::mesh::trunk::{ring_circles, union_outline};
-use crate::mesh::{MeshBuilder, VertexBlock, WIND_STRIDE};
+use crate::mesh::{cut_face, MeshBuilder, VertexBlock, WIND_STRIDE};
 use crate::params::MeshParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
@@ -38,7 +38,9 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
     let claims = &claimed[m.claim..m.claim + rows * s as usize];
     let free = claims.iter().filter(|&&c| !c).count();
     debug_assert!(m.base != Base::Open, "a base is welded or closed before the index pass");
-    let fans = s as usize * if matches!(m.base, Base::Welded | Base::Open) { 1 } else { 2 };
+    // The tip's fan (or a cut end's rim: two triangles a side) and the base's.
+    let tip = s as usize * if m.cut.is_some() { 2 } else { 1 };
+    let fans = tip + s as usize * if matches!(m.base, Base::Welded | Base::Open) { 0 } else { 1 };
     let idx = out.alloc_indices(free * 6 + fans * 3);
     let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
     let mut q = quad_idx.chunks_exact_mut(6);
@@ -53,11 +55,17 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
             q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
         }
     }
-    let mut f = fan_idx.chunks_exact_mut(3);
+    let (tip_idx, base_idx) = fan_idx.split_at_mut(tip * 3);
     let row = m.first + (m.rings - 1) * st;
-    for j in 0..s {
-        f.next().expect("sized above").copy_from_slice(&[row + j, row + j + 1, m.apex]);
+    match m.cut {
+        Some(bevel) => cut_face::rim_indices(m, bevel, tip_idx),
+        None => {
+            for (j, f) in (0..s).zip(tip_idx.chunks_exact_mut(3)) {
+                f.copy_from_slice(&[row + j, row + j + 1, m.apex]);
+            }
+        }
     }
+    let mut f = base_idx.chunks_exact_mut(3);
     match m.base {
         Base::Trunk(cap) => {
             let centre = cap + st;
@@ -138,7 +146,8 @@ fn sweep_with(
     let stride = sides + 1;
     let rings = ts.len();
     let trunk = stem.parent.is_none();
-    let count = rings * stride + 1 + if trunk { stride + 1 } else { 0 };
+    let cap = if trunk { stride + 1 } else { 0 };
+    let count = rings * stride + 1 + cap + if stem.cut_end { 2 * stride } else { 0 };
     let mut block = out.alloc_vertices(count);
     let first = block.first;
     let mut ring_factor = vec![1.0f32; stride];
@@ -154,6 +163,7 @@ fn sweep_with(
     let mut prev: Option<(f32, f32)> = None; // (t, radius) of the previous ring
     let mut last_center = Vec3::ZERO;
     let mut last_radius = stem.radius;
+    let mut last_nominal = stem.radius;
     for (r, &t) in ts.iter().enumerate() {
         let (i, u) = stem.locate(t);
         if seg.0 != i {
@@ -184,6 +194,7 @@ fn sweep_with(
             &wind.record(stem, t, radius),
         );
         prev = Some((t, radius));
+        last_nominal = radius;
         last_center = c;
         last_radius = radius;
     }
@@ -203,6 +214,14 @@ fn sweep_with(
     if trunk {
         write_trunk_cap(&mut block, apex_slot + 1, circle, stem.base(), -t0);
     }
+    let cut = stem.cut_end.then(|| {
+        let slot = apex_slot + 1 + cap;
+        let last = (rings - 1) * stride;
+        let record = wind.record(stem, 1.0, end_r);
+        let frame = &frames[rings - 1];
+        cut_face::write(&mut block, slot, apex_slot, (last, stride), frame, last_nominal, v, (tip, tip_tan), &record);
+        first + slot as u32
+    });
     out.rings(first, rings as u32, stride as u32);
     StemMesh {
         first,
@@ -213,6 +232,7 @@ fn sweep_with(
         base: if trunk { Base::Trunk(apex + 1) } else { Base::Open },
         claim: 0,
         v0,
+        cut,
     }
 }
 

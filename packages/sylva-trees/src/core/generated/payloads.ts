@@ -15,7 +15,7 @@ export const STAGES = ['skeleton', 'mesh', 'foliage', 'leaf', 'viewer'] as const
 export type Stage = (typeof STAGES)[number];
 
 /** Every value of `MaterialName`, in the core's order. */
-export const MATERIALS = ['bark', 'leaves'] as const;
+export const MATERIALS = ['bark', 'leaves', 'cut_face'] as const;
 
 /** The material of an index range of the bark mesh (`sylva_core::Material`). */
 export type MaterialName = (typeof MATERIALS)[number];
@@ -102,6 +102,18 @@ export interface TreeMeta {
   from?: Stage;
   /** A session update: what changed since the previous update. */
   changes?: TreeChanges;
+  /** What became of each hand edit, in list order (absent without edits). */
+  edits?: EditReport[];
+}
+
+/** What became of one hand edit (`sylva_core::edits::EditReport`). */
+export interface EditReport {
+  /** The edit's op: `paint`, `crown`, `cut` or `bend`. */
+  op: string;
+  /** Whether the edit found its stem and was applied. */
+  resolved: boolean;
+  /** Why not, when unresolved. */
+  why?: string;
 }
 
 /** One level's counts in `GeneratedLods.meta_json()` (`sylva_core::meta::LodLevelMeta`). */

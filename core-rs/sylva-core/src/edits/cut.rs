@@ -1,0 +1,68 @@
+//! Cutting a stem at a fraction of its length: the stem keeps its centre curve and radius
+//! profile up to the cut (resampled, so the stump ends with the radius it had there, not with a
+//! tip) and is marked [`Stem::cut_end`](crate::skeleton::Stem::cut_end), which the mesh stage
+//! closes with a cut face; every child attached beyond the cut (its footprint reaching past it)
+//! goes, with all its descendants, and so with their leaves. A cut so near a branch's base that
+//! the stump would sit inside its parent removes the whole branch.
+
+use super::stems::{remove, subtree, transform};
+use crate::skeleton::{Points, Skeleton};
+use glam::Quat;
+
+/// A child whose base lies within this many of its radii of the cut goes too: its footprint on
+/// the stump (about a radius over the sine of its angle) would reach past the cut face.
+pub const FOOTPRINT: f32 = 3.0;
+/// Fewest segments a stump's centre polyline gets.
+const MIN_SEGMENTS: usize = 4;
+
+/// Cut stem `i` at fraction `t` of its length.
+pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32) {
+    let s = &skeleton.stems[i];
+    let t = t.clamp(0.0, 1.0);
+    let along = t * s.length;
+    let n = skeleton.stems.len();
+    if s.parent.is_some() && along < 2.0 * s.radius {
+        // The stump would sit inside its parent: the whole branch goes.
+        remove(skeleton, &subtree(skeleton, i));
+        return;
+    }
+    // Children whose footprint reaches past the cut go, with their descendants.
+    let mut gone = vec![false; n];
+    for c in i + 1..n {
+        let child = &skeleton.stems[c];
+        match child.parent {
+            Some(p) if p as usize == i => gone[c] = child.offset + FOOTPRINT * child.radius > along,
+            Some(p) => gone[c] = gone[p as usize],
+            None => {}
+        }
+    }
+    let old = skeleton.stems[i].clone();
+    let segs = (old.points.len() - 1).max(MIN_SEGMENTS) * if old.flare > 0.0 { 4 } else { 1 };
+    let mut cursor = old.points();
+    let points: Points = (0..=segs).map(|k| cursor.at(t * k as f32 / segs as f32)).collect();
+    let radii: Vec<f32> = (0..=segs).map(|k| old.radius_at(t * k as f32 / segs as f32)).collect();
+    let stem = &mut skeleton.stems[i];
+    stem.points = points;
+    stem.radii = Some(radii);
+    stem.length = along.max(1e-3);
+    stem.cut_end = true;
+    // The kept children sit on the resampled curve exactly (it differs from the old one by
+    // rounding between the samples).
+    reattach_children(skeleton, i, &gone);
+    remove(skeleton, &gone);
+}
+
+/// Moves each kept child of stem `i` (with its subtree) so that its base lies on `i`'s curve at
+/// its offset.
+pub(crate) fn reattach_children(skeleton: &mut Skeleton, i: usize, gone: &[bool]) {
+    for c in i + 1..skeleton.stems.len() {
+        if skeleton.stems[c].parent != Some(i as u32) || gone.get(c) == Some(&true) {
+            continue;
+        }
+        let (on, _) = skeleton.stems[i].point_at(skeleton.stems[c].offset);
+        let base = skeleton.stems[c].base();
+        if on != base {
+            transform(skeleton, &subtree(skeleton, c), Quat::IDENTITY, base, on);
+        }
+    }
+}
