@@ -27,6 +27,7 @@
 pub mod clock;
 pub mod crown;
 pub mod crown_shade;
+pub mod edits;
 pub mod error;
 pub mod export;
 pub mod foliage;

@@ -23,6 +23,7 @@ use crate::error::SylvaError;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
+pub mod edits;
 mod enums;
 mod macros;
 mod registry;
@@ -30,6 +31,7 @@ mod spec;
 mod stages;
 pub mod volumes;
 
+pub use edits::{Bend, Crown, Cut, Edit, Paint};
 pub use enums::{
     BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPrimaries, LeafVenation,
     TwigDetail,
