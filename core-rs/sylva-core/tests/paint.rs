@@ -211,13 +211,15 @@ fn runaway_strokes_stop_with_a_message_naming_the_field() {
     let (p, mut sk) = default_tree();
     let mut stroke = side_stroke(&sk, 2.0, 0.25, 0.4);
     stroke.density = 1e6;
-    let e = paint(&mut sk, &stroke, 1, 4, p.skeleton.max_vertices).err().expect("a marker cap error");
+    let Err(e) = paint(&mut sk, &stroke, 1, 4, p.skeleton.max_vertices) else { panic!("a marker cap error expected") };
     assert!(matches!(&e, SylvaError::Budget { param, .. } if param == "edits[4].density"), "{e:?}");
     let stroke = side_stroke(&sk, 2.0, 0.25, 0.4);
     // A budget that holds the tree and ten new nodes.
     let tree: u64 = sk.stems.iter().map(|s| skeleton::min_vertices(s.points.len() as u32 - 1)).sum();
-    let e = paint(&mut sk, &stroke, 1, 0, tree as u32 + 40).err().expect("a budget error");
+    let Err(e) = paint(&mut sk, &stroke, 1, 0, tree as u32 + 40) else { panic!("a budget error expected") };
     assert!(matches!(&e, SylvaError::Budget { param, .. } if param == "max_vertices"), "{e:?}");
-    let e = paint(&mut sk, &Paint { segment: 0.0, ..stroke }, 1, 7, p.skeleton.max_vertices).err().expect("an error");
+    let Err(e) = paint(&mut sk, &Paint { segment: 0.0, ..stroke }, 1, 7, p.skeleton.max_vertices) else {
+        panic!("an error expected")
+    };
     assert!(matches!(&e, SylvaError::InvalidParam { param, .. } if param == "edits[7].segment"), "{e:?}");
 }
