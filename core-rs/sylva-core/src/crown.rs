@@ -14,7 +14,9 @@ impl CrownShape {
             CrownShape::Conical => 0.2 + 0.8 * r,
             CrownShape::Spherical => 0.2 + 0.8 * sin(PI * r),
             CrownShape::Hemispherical => 0.2 + 0.8 * sin(0.5 * PI * r),
-            CrownShape::Cylindrical => 1.0,
+            // Drawn: the outline's ratio comes from `crate::edits::crown::DrawnCrown` where a crown
+            // edit is given; without one the shape is Cylindrical.
+            CrownShape::Cylindrical | CrownShape::Drawn => 1.0,
             CrownShape::TaperedCylindrical => 0.5 + 0.5 * r,
             CrownShape::Flame => {
                 if r <= 0.7 {

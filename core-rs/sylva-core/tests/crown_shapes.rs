@@ -31,6 +31,8 @@ fn reference(shape: usize, r: f64) -> f64 {
                 0.5 + 0.5 * (1.0 - r) / 0.3
             }
         }
+        // Drawn without an outline: Cylindrical.
+        8 => 1.0,
         _ => unreachable!(),
     }
 }

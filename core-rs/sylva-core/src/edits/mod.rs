@@ -1,18 +1,23 @@
-//! Applying the hand edit list ([`crate::params::edits`]) to a built skeleton, in order: each
-//! cut or bend first finds its stem by position ([`resolve`]), then truncates it ([`cut`]) or
-//! bends it ([`bend`]). The skeleton stage runs this right after the stems are built, so every
+//! Applying the hand edit list ([`crate::params::edits`]) to a built skeleton, in order: a paint
+//! stroke grows new shoots toward it by space colonization from the existing stems ([`paint`]);
+//! each cut or bend first finds its stem by position ([`resolve`]), then truncates it ([`cut`])
+//! or bends it ([`bend`]). A drawn crown ([`crown`]) acts before the stems are built instead:
+//! the skeleton stage passes the list's last crown edit to the builders (the *Drawn* crown
+//! shape of a Weber & Penn tree, the marker volume of a grown one). The skeleton stage runs this right after the stems are built, so every
 //! later stage (bark, leaves) sees the edited stems, and a session reruns it whenever the
 //! skeleton stage reruns. Each edit is reported as resolved or not ([`EditReport`]): an edit
 //! whose point no longer lies on a branch (after a change of seed or parameters) is listed as
 //! unresolved and leaves the tree as it was, never dropped silently.
 
 pub mod bend;
+pub mod crown;
 pub mod cut;
+pub mod paint;
 pub mod resolve;
 mod stems;
 
 use crate::error::SylvaError;
-use crate::params::Edit;
+use crate::params::{Crown, Edit};
 use crate::skeleton::Skeleton;
 use serde::Serialize;
 
@@ -34,15 +39,32 @@ impl EditReport {
     }
 }
 
-/// Apply `edits` to `skeleton` in order. Unresolved cuts and bends are reported and change
-/// nothing; a bend whose target is further from its stem's base than the stem is long (a bend
-/// across the tree) is an error naming the edit.
-pub fn apply(skeleton: &mut Skeleton, edits: &[Edit]) -> Result<Vec<EditReport>, SylvaError> {
+/// The crown drawn by hand: the last crown edit of the list (it shapes the crown before the
+/// stems are built, wherever it stands in the list).
+pub fn drawn_crown(edits: &[Edit]) -> Option<&Crown> {
+    edits.iter().rev().find_map(|e| if let Edit::Crown(c) = e { Some(c) } else { None })
+}
+
+/// Apply `edits` to `skeleton` in order; the markers of paint strokes are appended to
+/// `markers` (for Show Markers). Unresolved cuts and bends are reported and change nothing; a
+/// bend whose target is further from its stem's base than the stem is long (a bend across the
+/// tree) is an error naming the edit, and so is a stroke past the budgets.
+pub fn apply(
+    skeleton: &mut Skeleton,
+    edits: &[Edit],
+    markers: &mut Vec<glam::Vec3>,
+) -> Result<Vec<EditReport>, SylvaError> {
     let mut reports = Vec::with_capacity(edits.len());
     for (i, e) in edits.iter().enumerate() {
         let report = match e {
-            // Applied by edits::paint (paint-growth branch).
-            Edit::Paint(_) | Edit::Crown(_) => EditReport::resolved(e.op()),
+            Edit::Paint(stroke) => {
+                let (seed, budget) = (skeleton.seed, skeleton.max_vertices);
+                let grown = paint::paint(skeleton, stroke, seed, i, budget)?;
+                markers.extend(grown.markers);
+                EditReport::resolved(e.op())
+            }
+            // Applied before the stems are built (`drawn_crown`).
+            Edit::Crown(_) => EditReport::resolved(e.op()),
             Edit::Cut(c) => match resolve::nearest(skeleton, c.at) {
                 Ok(hit) => {
                     cut::cut(skeleton, hit.stem, hit.t);

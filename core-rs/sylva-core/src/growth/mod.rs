@@ -10,8 +10,9 @@ pub mod grid;
 pub mod sca;
 pub mod volume;
 
+use crate::edits::crown::DrawnCrown;
 use crate::error::SylvaError;
-use crate::params::{CrownVolumeKind, GrowthMode, SkeletonParams, VolumeGroup};
+use crate::params::{Crown, CrownVolumeKind, GrowthMode, SkeletonParams, VolumeGroup};
 use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
@@ -21,7 +22,14 @@ use volume::{Aabb, CrownVolume, Environment};
 
 /// The environment described by the parameters: crown (one copy per start point), the wall.
 pub fn environment(p: &SkeletonParams) -> Environment {
-    let crown = match p.crown_volume {
+    environment_with_crown(p, None)
+}
+
+/// [`environment`] with a crown drawn by hand: when `crown` is given (and usable), its solid of
+/// revolution is the crown volume in place of the ellipsoid or envelope ([`crate::edits::crown`]);
+/// the user's crown-group primitives still win where Crown Volume is Primitives.
+pub fn environment_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Environment {
+    let parametric = match p.crown_volume {
         CrownVolumeKind::Ellipsoid | CrownVolumeKind::Primitives => {
             CrownVolume::Ellipsoid { base: p.crown_base, height: p.crown_height, radius: p.crown_radius }
         }
@@ -29,6 +37,7 @@ pub fn environment(p: &SkeletonParams) -> Environment {
             CrownVolume::Envelope { base: p.crown_base, height: p.crown_height, radius: p.crown_radius, shape: p.shape }
         }
     };
+    let crown = crown.and_then(DrawnCrown::new).map_or(parametric, CrownVolume::Drawn);
     let mut env = Environment {
         crown,
         crown_offsets: starts(p),
@@ -94,8 +103,18 @@ pub fn grow(p: &SkeletonParams) -> Result<Growth, SylvaError> {
 /// [`grow`] reporting progress (the fraction of the iteration cap run so far, 0..1) to
 /// `progress` every [`sca::PROGRESS_EVERY`] iterations; the result is the same.
 pub fn grow_with_progress(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<Growth, SylvaError> {
+    grow_with_crown(p, None, progress)
+}
+
+/// [`grow_with_progress`] in the crown drawn by hand, when one is given
+/// ([`environment_with_crown`]).
+pub fn grow_with_crown(
+    p: &SkeletonParams,
+    crown: Option<&Crown>,
+    progress: Option<&mut dyn FnMut(f32)>,
+) -> Result<Growth, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "growth");
-    sca::grow_with_progress(&environment(p), &config(p), &mut rng, progress)
+    sca::grow_with_progress(&environment_with_crown(p, crown), &config(p), &mut rng, progress)
 }
 
 /// Pipe-model radius of every node of `nodes` (parents before children): tips get `tip`,

@@ -1,9 +1,10 @@
 //! Growth volumes (the SCA add-on's groups): the **crown** holds the markers (an ellipsoid, or
 //! one of the eight crown envelopes as a solid of revolution, same ShapeRatio as the parametric
-//! model); the **shadow** group holds no markers; the **exclusion** group stops branches at its
+//! model, or a crown outline drawn by hand, revolved); the **shadow** group holds no markers; the **exclusion** group stops branches at its
 //! surface. An optional wall box is both: nothing grows into it, and markers it hides from the
 //! sky are removed, so the tree grows away from it.
 
+use crate::edits::crown::DrawnCrown;
 use crate::params::{CrownShape, Primitive};
 use crate::rng::Rng;
 use glam::Vec3;
@@ -49,7 +50,7 @@ impl Aabb {
 }
 
 /// The shape of the crown volume.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum CrownVolume {
     /// An ellipsoid of horizontal radius `radius` and height `height`, bottom at `base`.
     Ellipsoid {
@@ -72,6 +73,8 @@ pub enum CrownVolume {
         /// Which envelope.
         shape: CrownShape,
     },
+    /// A crown outline drawn by hand, revolved about the trunk axis (`crate::edits::crown`).
+    Drawn(DrawnCrown),
 }
 
 impl CrownVolume {
@@ -94,6 +97,7 @@ impl CrownVolume {
                     radius * shape.ratio(1.0 - f)
                 }
             }
+            CrownVolume::Drawn(ref d) => d.width_at(y),
         }
     }
 
@@ -103,12 +107,19 @@ impl CrownVolume {
             CrownVolume::Ellipsoid { base, height, radius } | CrownVolume::Envelope { base, height, radius, .. } => {
                 (base, height, radius)
             }
+            CrownVolume::Drawn(ref d) => {
+                let (min, max) = d.bounds();
+                return Aabb { min, max };
+            }
         };
         Aabb { min: Vec3::new(-radius, base, -radius), max: Vec3::new(radius, base + height, radius) }
     }
 
     /// Whether `p` is inside.
     pub fn contains(&self, p: Vec3) -> bool {
+        if let CrownVolume::Drawn(d) = self {
+            return d.contains(p);
+        }
         let r = self.radius_at(p.y);
         p.x * p.x + p.z * p.z <= r * r
     }

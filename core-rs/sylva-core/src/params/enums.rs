@@ -8,7 +8,8 @@ use super::macros::param_enum;
 // Crown (Weber & Penn ShapeRatio, `crown.rs`).
 
 param_enum! {
-    /// The eight crown envelopes of Mtree's *Crown Shape User Guide*, in Weber & Penn's numbering.
+    /// The eight crown envelopes of Mtree's *Crown Shape User Guide*, in Weber & Penn's numbering,
+    /// and the drawn one.
     CrownShape {
         /// Christmas tree: longest branches at the crown base (fir, spruce).
         Conical = 0, "Conical";
@@ -26,6 +27,8 @@ param_enum! {
         InverseConical = 6, "Inverse Conical";
         /// A softer flame.
         TendFlame = 7, "Tend Flame";
+        /// The outline drawn by hand (a crown edit, `crate::edits::crown`); Cylindrical without one.
+        Drawn = 8, "Drawn";
     }
 }
 

@@ -38,8 +38,8 @@ define_params! {
             "How fast child radii shrink with their length relative to the parent (r_child = r_parent (L/L_parent)^power).";
         attraction_up: f32 = 0.5; [-10.0, 10.0, 0.05] "", "Tree", "Attraction Up", Skeleton,
             "Bends branches of level 2 and deeper toward the sky (positive) or the ground (negative: weeping).";
-        shape: CrownShape = CrownShape::Cylindrical; [0, 7, 1] "", "Crown", "Crown Shape", Skeleton,
-            "Envelope that sets level-1 branch length by height on the trunk (Weber & Penn ShapeRatio).";
+        shape: CrownShape = CrownShape::Cylindrical; [0, 8, 1] "", "Crown", "Crown Shape", Skeleton,
+            "Envelope that sets level-1 branch length by height on the trunk (Weber & Penn ShapeRatio); Drawn follows the crown outline drawn by hand (Cylindrical until one is drawn).";
         base_size: f32 = 0.4; [0.0, 1.0, 0.01] "", "Crown", "Base Size", Skeleton,
             "Fraction of the trunk, from the ground, that carries no branches; the crown starts above it.";
         angle_spread: f32 = 0.0; [-45.0, 45.0, 0.5] "°", "Crown", "Angle Spread", Skeleton,

@@ -89,15 +89,16 @@ pub(super) fn build_skeleton(
     p: &SkeletonParams,
     progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<SkeletonOut, SylvaError> {
-    let (mut skeleton, markers) = match p.growth_mode {
-        GrowthMode::Parametric => (skeleton::build(p)?, Vec::new()),
+    let crown = crate::edits::drawn_crown(&p.edits);
+    let (mut skeleton, mut markers) = match p.growth_mode {
+        GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
         GrowthMode::SpaceColonization => {
-            let grown = growth::grow_with_progress(p, progress)?;
+            let grown = growth::grow_with_crown(p, crown, progress)?;
             (growth::skeleton(p, &grown), grown.markers)
         }
     };
-    let edits = crate::edits::apply(&mut skeleton, &p.edits)?;
-    let envelope = skeleton::preview_profile(&skeleton, p, ENVELOPE_SAMPLES);
+    let edits = crate::edits::apply(&mut skeleton, &p.edits, &mut markers)?;
+    let envelope = skeleton::preview_profile_with_crown(&skeleton, p, crown, ENVELOPE_SAMPLES);
     Ok(SkeletonOut { skeleton, markers, envelope, edits })
 }
 

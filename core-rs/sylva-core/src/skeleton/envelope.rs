@@ -3,7 +3,7 @@
 //! ([`crate::crown`]).
 
 use super::Skeleton;
-use crate::params::SkeletonParams;
+use crate::params::{Crown, SkeletonParams};
 
 /// The crown envelope of a generated tree for the viewer's Show Preview: pairs
 /// `[height, radius]` (m, bottom to top) of a solid of revolution around the vertical axis that
@@ -13,6 +13,19 @@ use crate::params::SkeletonParams;
 /// sphere of that radius around its attachment point, and the profile is the outline of the
 /// union of those spheres.
 pub fn preview_profile(skeleton: &Skeleton, p: &SkeletonParams, samples: usize) -> Vec<[f32; 2]> {
+    preview_profile_with_crown(skeleton, p, None, samples)
+}
+
+/// [`preview_profile`] of a tree built with a crown drawn by hand
+/// ([`super::build_with_crown`]): with Crown Shape Drawn, the reach at each attachment point
+/// comes from the outline's ratio at that point's height, as the generator's does.
+pub fn preview_profile_with_crown(
+    skeleton: &Skeleton,
+    p: &SkeletonParams,
+    crown: Option<&Crown>,
+    samples: usize,
+) -> Vec<[f32; 2]> {
+    let drawn = super::drawn_crown(p, crown);
     let l1 = &p.level[1];
     let max_len = l1.length + l1.length_v;
     // (centre, reach) of the attachment spheres.
@@ -29,7 +42,8 @@ pub fn preview_profile(skeleton: &Skeleton, p: &SkeletonParams, samples: usize) 
             let r = (chain - along) / span;
             let (c, _) = stem.sample(z);
             // Inflated by the sampling step, so attachment points between samples are covered.
-            spheres.push((c, chain * max_len * p.shape.ratio(r) + stem.length / 48.0));
+            let ratio = drawn.as_ref().map_or_else(|| p.shape.ratio(r), |d| d.ratio_at_height(c.y));
+            spheres.push((c, chain * max_len * ratio + stem.length / 48.0));
         }
     }
     if spheres.is_empty() || p.levels < 2 {

@@ -13,14 +13,15 @@ mod stem;
 mod trace;
 mod trunk;
 
-pub use envelope::preview_profile;
+pub use envelope::{preview_profile, preview_profile_with_crown};
 pub use stem::{flare_factor, taper_radius, Points, Segment, Stem, StemKind, StemPoints};
 use trace::{inside_prune_envelope, trace};
 use trunk::{add_roots, guide_curve};
 
+use crate::edits::crown::DrawnCrown;
 use crate::error::SylvaError;
 use crate::math::{pow, rad, unit_or, HwSqrt};
-use crate::params::{CrownShape, GrowthMode, SkeletonParams};
+use crate::params::{Crown, CrownShape, GrowthMode, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
 
@@ -83,6 +84,8 @@ struct Builder<'a> {
     vertex_floor: u64,
     scale: f32,
     crown_base: f32,
+    /// The drawn crown when Crown Shape is Drawn and a crown edit gives the outline.
+    drawn: Option<DrawnCrown>,
 }
 
 /// Where and how a stem (or a clone made by a split) starts.
@@ -108,6 +111,13 @@ struct StemStart {
 
 /// Build the skeleton. Fails only on the vertex budget (parameters are validated before).
 pub fn build(p: &SkeletonParams) -> Result<Skeleton, SylvaError> {
+    build_with_crown(p, None)
+}
+
+/// [`build`] with a crown drawn by hand: with Crown Shape *Drawn*, the level-1 branch lengths
+/// follow `crown`'s outline ([`DrawnCrown::ratio_at_height`] at each attachment point's height);
+/// without a crown (or with another shape) the tree is [`build`]'s.
+pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Skeleton, SylvaError> {
     let mut rng = Rng::new(u64::from(p.seed), "skeleton");
     let scale = (p.scale + rng.var(p.scale_v)).max(0.1);
     let l0 = &p.level[0];
@@ -121,6 +131,7 @@ pub fn build(p: &SkeletonParams) -> Result<Skeleton, SylvaError> {
         vertex_floor: 0,
         scale,
         crown_base: p.base_size * length,
+        drawn: drawn_crown(p, crown),
     };
     b.grow(StemStart {
         level: 0,
@@ -145,6 +156,11 @@ pub fn build(p: &SkeletonParams) -> Result<Skeleton, SylvaError> {
         levels: p.levels,
         max_vertices: p.max_vertices,
     })
+}
+
+/// The drawn crown that shapes `p`'s tree: `crown`'s, when Crown Shape is Drawn.
+pub(crate) fn drawn_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Option<DrawnCrown> {
+    crown.filter(|_| p.shape == CrownShape::Drawn).and_then(DrawnCrown::new)
 }
 
 impl Skeleton {
@@ -296,7 +312,11 @@ impl Builder<'_> {
             let crown_span = stem_len - self.crown_base;
             let crown_r = if crown_span > 0.0 { (stem_len - along) / crown_span } else { 0.0 };
             let length = if child == 1 {
-                stem_len * (cp.length + crng.var(cp.length_v)) * p.shape.ratio(crown_r)
+                let ratio = match &self.drawn {
+                    Some(d) => d.ratio_at_height(stem.point(offset / stem.length).y),
+                    None => p.shape.ratio(crown_r),
+                };
+                stem_len * (cp.length + crng.var(cp.length_v)) * ratio
             } else {
                 (cp.length + crng.var(cp.length_v)) * (stem_len - 0.6 * along)
             };

@@ -95,7 +95,7 @@ export const PARAM_SPECS = {
     stage: 'skeleton',
     default: 3,
     min: 0,
-    max: 7,
+    max: 8,
     step: 1,
     unit: '',
     options: [
@@ -107,6 +107,7 @@ export const PARAM_SPECS = {
       'Flame',
       'Inverse Conical',
       'Tend Flame',
+      'Drawn',
     ],
   },
   base_size: {
@@ -2168,7 +2169,8 @@ export interface ParamOptions {
     | 'Tapered Cylindrical'
     | 'Flame'
     | 'Inverse Conical'
-    | 'Tend Flame';
+    | 'Tend Flame'
+    | 'Drawn';
   bark_type: 'Furrowed' | 'Plated' | 'Smooth-banded' | 'Fibrous';
   growth_mode: 'Parametric (Weber & Penn)' | 'Space Colonization';
   crown_volume: 'Ellipsoid' | 'Crown Shape envelope' | 'Primitives (user volumes)';
