@@ -14,6 +14,7 @@ import type {
   TreeChanges,
   TreeMeta,
 } from './types';
+import type { EditReport } from './edits';
 
 type Json = Record<string, unknown>;
 
@@ -183,6 +184,17 @@ export function parseMeta(text: string): TreeMeta {
       ? [Number(o.leaf_texture[0]), Number(o.leaf_texture[1])]
       : null,
     bark_type: typeof o.bark_type === 'number' ? o.bark_type : 0,
+    ...(Array.isArray(o.edits) ? { edits: o.edits.map(parseEditReport) } : {}),
+  };
+}
+
+/** One entry of the meta's `edits`: the op, whether it resolved and why not. */
+function parseEditReport(value: unknown, i: number): EditReport {
+  const o = record(value, `meta.edits[${i}]`);
+  return {
+    op: typeof o.op === 'string' ? o.op : '',
+    resolved: o.resolved !== false,
+    ...(typeof o.why === 'string' ? { why: o.why } : {}),
   };
 }
 

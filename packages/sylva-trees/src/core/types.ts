@@ -1,4 +1,5 @@
 /** Shared data types of the Sylva wasm contract (registry, presets, errors, mesh metadata). */
+import type { EditReport } from './edits';
 import type { LeafPresetId, ParamId, PresetId } from './generated/params';
 
 // Generated from the core's registry and presets (`npm run docs`, `sylva params --typescript`).
@@ -118,6 +119,8 @@ export interface TreeMeta {
   leaf_texture?: [number, number] | null;
   /** The `bark_type` parameter's index: which bark maps the tree wears. */
   bark_type?: number;
+  /** What became of each hand edit, in list order (absent from a core without edits). */
+  edits?: EditReport[];
 }
 
 /** The leaf texture (RGBA8, row 0 = v 0), sent only when the leaf shape changed. */
