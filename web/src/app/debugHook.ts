@@ -43,6 +43,12 @@ export interface SylvaDebugHook {
   view(from: [number, number, number], to: [number, number, number]): void;
   /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */
   growth(): { markers: number; volumes: number; dragging: boolean };
+  /** Hand edits: the active tool, whether it drags, and how many edits the list holds. */
+  edits(): { tool: string | null; dragging: boolean; count: number };
+  /** The bark point under client pixel `(x, y)` (tree space), or null (e2e: find a branch). */
+  pickBark(x: number, y: number): [number, number, number] | null;
+  /** Client pixel of tree-space point `p` (e2e: aim the mouse). */
+  project(p: [number, number, number]): [number, number];
   /** Levels of detail: level on screen (3 = impostor), triangles per level, screen size. */
   lod(): LodState;
   /** Moves the viewer's camera to `distance` m from the orbit target (LOD tests). */

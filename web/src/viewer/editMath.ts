@@ -5,7 +5,7 @@
  * from the side becomes the crown's `[radius, height]` profile. Tree space is the scene's world
  * space: metres, y up, the trunk's base at the origin (docs/formats.md).
  */
-import { Plane, Ray, Vector3, type Camera } from 'three';
+import { Plane, Vector3, type Camera, type Ray } from 'three';
 
 /** Heights at which a drawn outline's half-width is measured. */
 export const OUTLINE_SAMPLES = 16;
