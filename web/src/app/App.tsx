@@ -93,6 +93,7 @@ export function App() {
           viewerRef={viewerRef}
           paramsRef={editor.paramsRef}
           volumesRef={editor.volumesRef}
+          editsRef={editor.editsRef}
           info={info}
         />
         {/* Stats, toolbar and wind in one row that wraps on a narrow stage: never on top of each other. */}
