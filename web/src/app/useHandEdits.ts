@@ -116,12 +116,17 @@ export function useHandEdits(
       notice: (text) => latest.current.onNotice(text),
     });
     toolsRef.current = tools;
-    const unsubscribe = host.onTree((buffers) => setReports(buffers.meta.edits ?? []));
+    let bounds: { min: number[]; max: number[] } | null = null;
+    const unsubscribe = host.onTree((buffers) => {
+      bounds = buffers.meta.bounds;
+      setReports(buffers.meta.edits ?? []);
+    });
     const uninstall = installDebugHook({
       edits: () => ({
         tool: tools.active,
         dragging: tools.dragging,
         count: latest.current.editor.editsRef.current?.length ?? 0,
+        bounds,
       }),
       pickBark: (x, y) => tools.pick(x, y),
       project: (p) => tools.project(p),
