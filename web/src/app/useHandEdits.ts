@@ -46,6 +46,15 @@ export interface HandEdits {
 /** Keyboard shortcuts of the tools. */
 export const TOOL_KEYS: Record<string, EditTool> = { p: 'paint', o: 'crown', c: 'cut', b: 'bend' };
 
+/**
+ * `list` with a new `edit` at its end; a crown outline replaces the crown edit before it (one
+ * drawn crown per tree).
+ */
+export function appendEdit(list: readonly Edit[], edit: Edit): Edit[] {
+  const kept = edit.op === 'crown' ? list.filter((e) => e.op !== 'crown') : list;
+  return [...kept, edit];
+}
+
 /** The `e=` edits of a page query, with a notice if they were ignored. */
 export function editsFromSearch(search: string): { edits: Edit[]; messages: string[] } {
   return decodeEdits(new URLSearchParams(search).get(EDITS_KEY));
@@ -103,9 +112,9 @@ export function useHandEdits(
     let base: Edit[] | null = null;
     const start = () => (base ??= latest.current.editor.editsRef.current ?? []);
     const tools = new HandEditTools(host, {
-      draft: (edit) => latest.current.editor.draft([...start(), edit]),
+      draft: (edit) => latest.current.editor.draft(appendEdit(start(), edit)),
       commit: (edit) => {
-        const list = [...start(), edit];
+        const list = appendEdit(start(), edit);
         base = null;
         latest.current.editor.change({ edits: list, key: null });
       },

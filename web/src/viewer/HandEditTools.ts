@@ -104,7 +104,10 @@ export class HandEditTools {
     const onUp = (e: Event) => this.up(e as PointerEvent);
     const onLeave = () => this.hideRing();
     const onKey = (e: Event) => {
-      if ((e as KeyboardEvent).key === 'Escape' && this.drag) this.finish(false);
+      if ((e as KeyboardEvent).key !== 'Escape' || !this.drag) return;
+      // The first Esc only cancels the drag; the next one puts the tool away.
+      e.stopImmediatePropagation();
+      this.finish(false);
     };
     this.listeners = [
       ['pointerdown', onDown],
