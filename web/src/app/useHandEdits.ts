@@ -88,22 +88,22 @@ function typing(event: KeyboardEvent): boolean {
   );
 }
 
-/** See the module comment. `onNotice` shows a message in the app's banner. */
-export function useHandEdits(
-  viewerRef: RefObject<TreeViewer | null>,
-  editor: Editor,
-  onNotice: (text: string) => void,
-): HandEdits {
-  const [tool, setTool] = useState<EditTool | null>(null);
-  const [brush, setBrush] = useState<Brush>({ ...DEFAULT_BRUSH });
-  const [reports, setReports] = useState<EditReport[]>([]);
-  const toolsRef = useRef<HandEditTools | null>(null);
-  const latest = useRef({ editor, onNotice });
-  useEffect(() => {
-    latest.current = { editor, onNotice };
-  });
-  const { edits } = editor.state;
+/** What the tools' callbacks read at the time they run. */
+interface Latest {
+  editor: Editor;
+  onNotice: (text: string) => void;
+}
 
+/**
+ * The tools in the viewer, wired to the editor (a drag is a draft on top of the list it began
+ * with, then one change), the meta's per-edit reports, and the debug hook. Returns the tools.
+ */
+function useToolsInViewer(
+  viewerRef: RefObject<TreeViewer | null>,
+  latest: RefObject<Latest>,
+  setReports: (reports: EditReport[]) => void,
+): RefObject<HandEditTools | null> {
+  const toolsRef = useRef<HandEditTools | null>(null);
   useEffect(() => {
     const viewer = viewerRef.current;
     if (!viewer) return;
@@ -146,9 +146,28 @@ export function useHandEdits(
       tools.dispose();
       if (toolsRef.current === tools) toolsRef.current = null;
     };
-  }, [viewerRef]);
+  }, [viewerRef, latest, setReports]);
+  return toolsRef;
+}
 
-  useEffect(() => toolsRef.current?.set(tool, brush), [tool, brush]);
+/** See the module comment. `onNotice` shows a message in the app's banner. */
+export function useHandEdits(
+  viewerRef: RefObject<TreeViewer | null>,
+  editor: Editor,
+  onNotice: (text: string) => void,
+): HandEdits {
+  const [tool, setTool] = useState<EditTool | null>(null);
+  const [brush, setBrush] = useState<Brush>({ ...DEFAULT_BRUSH });
+  const [reports, setReports] = useState<EditReport[]>([]);
+  const latest = useRef<Latest>({ editor, onNotice });
+  useEffect(() => {
+    latest.current = { editor, onNotice };
+  });
+  const { edits } = editor.state;
+
+  const toolsRef = useToolsInViewer(viewerRef, latest, setReports);
+
+  useEffect(() => toolsRef.current?.set(tool, brush), [toolsRef, tool, brush]);
 
   useEffect(() => {
     const onKey = (event: KeyboardEvent) => {
@@ -159,7 +178,7 @@ export function useHandEdits(
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
-  }, []);
+  }, [toolsRef]);
 
   // The share URL follows the edits (debounced like the params); too long: no `e=` at all.
   const text = linkText(edits);

@@ -51,12 +51,7 @@ export type Edit = PaintEdit | CrownEdit | CutEdit | BendEdit;
 /** The op names, in the order the messages list them. */
 export const EDIT_OPS = ['paint', 'crown', 'cut', 'bend'] as const;
 
-/** What became of one edit (the tree meta's `edits[i]`): `why` says why it did not resolve. */
-export interface EditReport {
-  op: string;
-  resolved: boolean;
-  why?: string;
-}
+export type { EditReport } from './types';
 
 // The core's limits (core-rs/sylva-core/src/params/edits.rs); keep in step with it.
 /** Most edits one tree may carry. */

@@ -43,7 +43,6 @@ export {
   type CutEdit,
   type Edit,
   type EditPoint,
-  type EditReport,
   type PaintEdit,
 } from './edits';
 export { editsDocument, parseEditsDocument, parseEditsValue } from './editsJson';

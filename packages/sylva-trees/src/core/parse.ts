@@ -13,8 +13,8 @@ import type {
   Stage,
   TreeChanges,
   TreeMeta,
+  EditReport,
 } from './types';
-import type { EditReport } from './edits';
 
 type Json = Record<string, unknown>;
 

@@ -1,5 +1,4 @@
 /** Shared data types of the Sylva wasm contract (registry, presets, errors, mesh metadata). */
-import type { EditReport } from './edits';
 import type { LeafPresetId, ParamId, PresetId } from './generated/params';
 
 // Generated from the core's registry and presets (`npm run docs`, `sylva params --typescript`).
@@ -94,6 +93,13 @@ export interface TreeChanges {
   leaf: boolean;
   /** The bark's occlusion was computed again (absent from older cores). */
   shade?: boolean;
+}
+
+/** What became of one hand edit (the tree meta's `edits[i]`): `why` says why it did not resolve. */
+export interface EditReport {
+  op: string;
+  resolved: boolean;
+  why?: string;
 }
 
 /** Parsed `meta_json()` of a generated tree. */
