@@ -212,6 +212,8 @@ export class HandEditTools {
       this.drag = { tool, at, to: at.clone() };
     }
     this.host.orbit.enabled = false;
+    // No text selection or focus change from the drag (the orbit, now off, would prevent it).
+    event.preventDefault();
     this.pointerId = event.pointerId;
     this.host.domElement.setPointerCapture?.(event.pointerId);
     this.showDrag();
