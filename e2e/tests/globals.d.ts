@@ -10,6 +10,15 @@ interface Window {
     probeFrame?(): number | null;
     leafPullCheck?(): { covered: number; differing: number } | null;
     growth?(): { markers: number; volumes: number; dragging: boolean };
+    view?(from: [number, number, number], to: [number, number, number]): void;
+    edits?(): {
+      tool: string | null;
+      dragging: boolean;
+      count: number;
+      bounds: { min: number[]; max: number[] } | null;
+    };
+    pickBark?(x: number, y: number): [number, number, number] | null;
+    project?(p: [number, number, number]): [number, number];
   };
   /** The embed page's camera hook. */
   __sylvaEmbed?: { view(from: number[], to: number[]): void };

@@ -67,6 +67,34 @@ describe('sylva-trees', () => {
     tree.dispose();
   });
 
+  it('checks hand edits like the core and keeps the tree when they are bad', async () => {
+    const bad = [
+      {
+        op: 'paint' as const,
+        points: [[1, 5, 0]] as [number, number, number][],
+        radius: 0,
+        density: 400,
+        segment: 0.25,
+        kill: 0.4,
+      },
+    ];
+    await expect(SylvaTree.create({ edits: bad, worker: false })).rejects.toMatchObject({
+      kind: 'invalid_param',
+      param: 'edits[0].radius',
+      message: 'edits[0].radius is 0: allowed range is 0.02 to 10 m',
+    });
+    const tree = await SylvaTree.create({ worker: false, edits: [] });
+    const hash = tree.stats.hash;
+    await expect(tree.set({ edits: [{ op: 'cut', at: [1, 0, 0] }] })).rejects.toThrow(
+      /edits\[0\]\.at is on the ground/,
+    );
+    expect(tree.edits).toEqual([]);
+    // No edits: the same request as before edits existed, the same tree.
+    await tree.set({ edits: [], seed: tree.params.seed });
+    expect(tree.stats.hash).toBe(hash);
+    tree.dispose();
+  });
+
   it('reads a share link as the app does', async () => {
     const tree = await SylvaTree.fromShareLink('https://x.org/?v=1&seed=7&levels=2&nope=1', {
       worker: false,

@@ -4,6 +4,8 @@
  * stages it touches, latest call wins) and shown as a `THREE.Group` the caller adds to a scene.
  */
 import type { Group } from 'three';
+import { EditsError, type Edit } from './core/edits';
+import { parseEditsValue } from './core/editsJson';
 import { applyPreset, defaultParams } from './core/params';
 import { parsePresets, parseRegistry } from './core/parse';
 import type {
@@ -22,6 +24,7 @@ import { startGeneratorWorker } from './runtime/startWorker';
 import { inProcessFactory } from './runtime/inProcess';
 import { adaptWorker } from './runtime/workerHandle';
 import { decodeQuery, decodeVolumes, VOLUMES_KEY } from './url/codec';
+import { decodeEdits, EDITS_KEY } from './url/editsCodec';
 import { TreeObject } from './viewer/TreeObject';
 import type { GeneratorWorkerFactory } from './worker/protocol';
 import { GenerationScheduler } from './worker/scheduler';
@@ -64,7 +67,15 @@ export interface SylvaTreeOptions {
   worker?: boolean;
   /** Growth volumes (from a share link's `vol=`). */
   volumes?: VolumePrimitive[];
+  /**
+   * The hand edit list (paint, crown, cut, bend; the `edits` of an exported `sylva-edits.json`),
+   * checked against the core's limits: a bad edit rejects with a message naming it.
+   */
+  edits?: readonly Edit[];
 }
+
+/** What `set` takes: parameter values and, optionally, a new edit list (replacing the old). */
+export type SylvaTreeChange = SylvaParams & { edits?: readonly Edit[] };
 
 /** Counts and content hash of the tree shown (fields of the core's `TreeMeta`). */
 export interface SylvaTreeStats extends Pick<TreeMeta, 'vertices' | 'triangles' | 'leaves'> {
@@ -131,6 +142,20 @@ function toNumbers(values: SylvaParams | undefined): Params {
   return out;
 }
 
+/**
+ * A copy of `edits` after the core's checks (structure, as for JSON, then the limits); throws a
+ * `SylvaTreeError` naming a bad edit and field.
+ */
+function checkedEdits(edits: readonly Edit[] | undefined): readonly Edit[] {
+  if (edits === undefined) return [];
+  try {
+    return Object.freeze(parseEditsValue(edits));
+  } catch (error) {
+    if (error instanceof EditsError) throw new SylvaTreeError(error.toSylvaError());
+    throw error;
+  }
+}
+
 /** The full parameter set of `options` (defaults, then the preset, the seed and the values). */
 function resolveParams(options: SylvaTreeOptions): Params {
   let base = defaultParams(registry);
@@ -170,9 +195,11 @@ export class SylvaTree {
   private readonly factory: GeneratorWorkerFactory;
   private exporter: ExportClient | null = null;
   private readonly volumes: VolumePrimitive[];
-  /** Parameters of the tree shown, and of the latest request. */
+  /** Parameters and edits of the tree shown, and of the latest request. */
   private shown: Params;
   private requested: Params;
+  private shownEdits: readonly Edit[];
+  private requestedEdits: readonly Edit[];
   private latestId = 0;
   private waiting: Waiter[] = [];
   private disposed = false;
@@ -183,6 +210,8 @@ export class SylvaTree {
     this.volumes = options.volumes ?? [];
     this.requested = resolveParams(options);
     this.shown = this.requested;
+    this.requestedEdits = checkedEdits(options.edits);
+    this.shownEdits = this.requestedEdits;
     this.factory = starter(options.worker !== false);
     this.scheduler = new GenerationScheduler(this.factory, {
       onReady: () => undefined,
@@ -196,6 +225,7 @@ export class SylvaTree {
       onError: (error, id) => {
         if (id !== null && id !== this.latestId) return;
         this.requested = this.shown;
+        this.requestedEdits = this.shownEdits;
         this.settle(new SylvaTreeError(error));
       },
       onBusyChange: () => undefined,
@@ -213,16 +243,18 @@ export class SylvaTree {
    */
   static async fromShareLink(
     link: string,
-    options: Omit<SylvaTreeOptions, 'preset' | 'params' | 'seed' | 'volumes'> = {},
+    options: Omit<SylvaTreeOptions, 'preset' | 'params' | 'seed' | 'volumes' | 'edits'> = {},
   ): Promise<SylvaTree> {
     const query = link.includes('?') ? link.slice(link.indexOf('?') + 1) : link;
     const search = query.split('#')[0] ?? '';
     const decoded = decodeQuery(registry, search);
-    const volumes = decodeVolumes(new URLSearchParams(search).get(VOLUMES_KEY));
-    return SylvaTree.start({ ...options, params: decoded.params, volumes: volumes.volumes }, [
-      ...decoded.messages,
-      ...volumes.messages,
-    ]);
+    const entries = new URLSearchParams(search);
+    const volumes = decodeVolumes(entries.get(VOLUMES_KEY));
+    const edits = decodeEdits(entries.get(EDITS_KEY));
+    return SylvaTree.start(
+      { ...options, params: decoded.params, volumes: volumes.volumes, edits: edits.edits },
+      [...decoded.messages, ...volumes.messages, ...edits.messages],
+    );
   }
 
   private static async start(options: SylvaTreeOptions, messages: string[]): Promise<SylvaTree> {
@@ -234,6 +266,11 @@ export class SylvaTree {
       throw error;
     }
     return tree;
+  }
+
+  /** The hand edit list of the tree shown. */
+  get edits(): readonly Edit[] {
+    return this.shownEdits;
   }
 
   /** The full parameter values of the tree shown. */
@@ -255,28 +292,36 @@ export class SylvaTree {
   /**
    * Changes some parameters and regenerates (only the stages they touch). The latest call wins:
    * a call superseded by a later one settles when the later one does, with its outcome. An
-   * invalid value rejects with the core's message and the tree stays as it was.
+   * invalid value rejects with the core's message and the tree stays as it was. `edits`, when
+   * given, replaces the edit list (`[]` removes every edit).
    */
-  set(values: SylvaParams): Promise<void> {
+  set(values: SylvaTreeChange): Promise<void> {
     if (this.disposed) return Promise.reject(new Error('this SylvaTree was disposed'));
     let next: Params;
+    let edits: readonly Edit[];
     try {
-      next = { ...this.requested, ...toNumbers(values) };
+      const { edits: newEdits, ...rest } = values;
+      next = { ...this.requested, ...toNumbers(rest) };
+      edits = newEdits === undefined ? this.requestedEdits : checkedEdits(newEdits);
     } catch (error) {
       return Promise.reject(error instanceof Error ? error : new Error(String(error)));
     }
-    return this.request(next);
+    return this.request(next, edits);
   }
 
-  private request(next: Params): Promise<void> {
+  private request(next: Params, edits: readonly Edit[] = this.requestedEdits): Promise<void> {
     this.requested = next;
+    this.requestedEdits = edits;
     const done = new Promise<void>((resolve, reject) => this.waiting.push({ resolve, reject }));
-    this.latestId = this.scheduler.request(next, this.volumes);
+    this.latestId = this.scheduler.request(next, this.volumes, { edits });
     return done;
   }
 
   private settle(error: SylvaTreeError | null): void {
-    if (error === null) this.shown = this.requested;
+    if (error === null) {
+      this.shown = this.requested;
+      this.shownEdits = this.requestedEdits;
+    }
     const waiting = this.waiting;
     this.waiting = [];
     for (const waiter of waiting) {
@@ -309,7 +354,10 @@ export class SylvaTree {
     if (this.disposed) throw new Error('this SylvaTree was disposed');
     this.exporter ??= new ExportClient(this.factory);
     try {
-      const response = await this.exporter.export(this.shown, this.volumes, 'glb', options);
+      const response = await this.exporter.export(this.shown, this.volumes, 'glb', {
+        ...options,
+        edits: this.shownEdits,
+      });
       const file = response.files[0];
       if (!file) throw new Error('the exporter returned no file');
       return 'bytes' in file ? file.bytes : new Uint8Array(await file.blob.arrayBuffer());

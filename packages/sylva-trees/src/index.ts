@@ -17,7 +17,9 @@ export {
   type SylvaParamInfo,
   type SylvaParams,
   type SylvaPresetId,
+  type SylvaTreeChange,
   type SylvaTreeOptions,
   type SylvaTreeStats,
 } from './SylvaTree';
+export type { Edit as SylvaEdit } from './core/edits';
 export { SceneLights as SylvaLights } from './viewer/lighting';

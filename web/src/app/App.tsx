@@ -4,7 +4,7 @@
  * shows each new state: a generation request, or only a viewer change.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { firstStage, matchingPreset, type Params } from 'sylva-trees/core';
+import { matchingPreset, type Params } from 'sylva-trees/core';
 import { Toolbar } from '../export/Toolbar';
 import { LodPanel } from '../lod/LodPanel';
 import { ErrorBanner } from '../ui/ErrorBanner';
@@ -14,14 +14,14 @@ import { Viewport } from '../ui/Viewport';
 import { WindControls } from '../ui/WindControls';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from 'sylva-trees/worker';
-import { useSettleOnRelease, useViewerDebugHook } from './appEffects';
-import { emitDebug } from './debugHook';
-import type { EditorState } from './editor';
+import { useSettleOnRelease, useShowState, useViewerDebugHook } from './appEffects';
 import { browserStorage, loadInitialParams, ParamsSync } from './persistence';
 import { SidePanel } from './SidePanel';
 import { useEditor } from './useEditor';
 import { useGenerator, type Generator } from './useGenerator';
 import { useGrowthEditor, volumesFromUrl } from './useGrowthEditor';
+import { editsFromUrl, useHandEdits } from './useHandEdits';
+import { HandEditPanel } from '../ui/HandEditPanel';
 
 /** The whole application. */
 export function App() {
@@ -30,38 +30,21 @@ export function App() {
   const generatorRef = useRef<Generator | null>(null);
   const [info, setInfo] = useState<ReadyInfo | null>(null);
   const [notices, setNotices] = useState<string[]>([]);
-  // The growth volumes of the share link (`vol=`), sent with every request.
+  // The growth volumes (`vol=`) and hand edits (`e=`) of the share link, sent with every request.
   const [volumesInUrl] = useState(volumesFromUrl);
+  const [editsInUrl] = useState(editsFromUrl);
   const registry = useMemo(() => info?.registry ?? [], [info]);
   const presets = useMemo(() => info?.presets ?? [], [info]);
 
-  /**
-   * Shows a new state: a generation request (none when only viewer parameters changed;
-   * `interactive` while a slider is dragged), and the debounced URL/storage save. The request
-   * goes out first, so the worker runs while React renders.
-   */
-  const show = useCallback(
-    (previous: EditorState, next: EditorState, interactive: boolean) => {
-      const params = next.params;
-      if (params === null) return;
-      const stage = previous.params ? firstStage(registry, previous.params, params) : 'skeleton';
-      const regrow = next.volumes !== previous.volumes;
-      if (regrow || (stage !== 'viewer' && (stage !== null || next.frame))) {
-        generatorRef.current?.request(params, next.frame, next.volumes, interactive && !regrow);
-      } else if (stage === 'viewer') {
-        // Nothing to regenerate: the viewer shows or hides what it already has.
-        viewerRef.current?.setPreviewVisible(params.show_preview === 1);
-        emitDebug('applied', { kind: 'viewer', at: performance.now(), preview: false });
-      }
-      syncRef.current?.schedule(registry, params);
-    },
-    [registry],
-  );
-  const editor = useEditor(volumesInUrl.volumes, show);
+  const show = useShowState(registry, generatorRef, viewerRef, syncRef);
+  const editor = useEditor(volumesInUrl.volumes, editsInUrl.edits, show);
   const { params, volumes } = editor.state;
 
   const { load } = editor;
-  const growthMessages = volumesInUrl.messages;
+  const growthMessages = useMemo(
+    () => [...volumesInUrl.messages, ...editsInUrl.messages],
+    [volumesInUrl, editsInUrl],
+  );
   const onReady = useCallback(
     (ready: ReadyInfo): Params => {
       const initial = loadInitialParams(ready.registry, window.location.search, browserStorage());
@@ -75,11 +58,15 @@ export function App() {
     [growthMessages, load],
   );
 
-  const generator = useGenerator(viewerRef, onReady, editor.volumesRef);
+  const { volumesRef, editsRef } = editor;
+  const initialShape = useMemo(() => ({ volumesRef, editsRef }), [volumesRef, editsRef]);
+  const generator = useGenerator(viewerRef, onReady, initialShape);
   useEffect(() => {
     generatorRef.current = generator;
   });
   const growth = useGrowthEditor(viewerRef, params, volumes, editor.change);
+  const addNotice = useCallback((text: string) => setNotices((list) => [...list, text]), []);
+  const hand = useHandEdits(viewerRef, editor, addNotice);
   useViewerDebugHook(viewerRef);
   useSettleOnRelease(generatorRef);
 
@@ -106,6 +93,7 @@ export function App() {
           viewerRef={viewerRef}
           paramsRef={editor.paramsRef}
           volumesRef={editor.volumesRef}
+          editsRef={editor.editsRef}
           info={info}
         />
         {/* Stats, toolbar and wind in one row that wraps on a narrow stage: never on top of each other. */}
@@ -118,11 +106,13 @@ export function App() {
               presetName={activePreset}
               viewerRef={viewerRef}
               volumesRef={editor.volumesRef}
+              editsRef={editor.editsRef}
               onLoadParams={(next) => editor.change({ params: next, key: null, frame: true })}
             />
           ) : null}
           <WindControls viewerRef={viewerRef} />
         </div>
+        {info && params ? <HandEditPanel hand={hand} /> : null}
         <GrowthProgress progress={generator.progress} onCancel={() => generator.cancel()} />
         <ErrorBanner
           error={generator.error}

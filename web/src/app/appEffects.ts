@@ -1,9 +1,15 @@
-/** The app's window-wide effects: the viewer's debug hook and settling a drag on release. */
-import { useEffect, type RefObject } from 'react';
+/**
+ * The app's effects: showing each new editor state (a generation request or a viewer change),
+ * the viewer's debug hook and settling a drag on release.
+ */
+import { useCallback, useEffect, type RefObject } from 'react';
+import { firstStage, type ParamSpec } from 'sylva-trees/core';
 import { lookFrom } from '../viewer/cameraView';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import { installDebugHook } from './debugHook';
-import type { Generator } from './useGenerator';
+import { emitDebug, installDebugHook } from './debugHook';
+import type { EditorState } from './editor';
+import type { ParamsSync } from './persistence';
+import type { Generator, TreeShape } from './useGenerator';
 
 /** The viewer's part of `window.__sylva` (debug pages only). */
 export function useViewerDebugHook(viewerRef: RefObject<TreeViewer | null>): void {
@@ -47,4 +53,66 @@ export function useSettleOnRelease(generatorRef: RefObject<Generator | null>): v
       window.removeEventListener('change', onChangeEvent);
     };
   }, [generatorRef]);
+}
+
+/** What showing a new state takes: a generation request, a viewer-only change, or nothing. */
+export interface ShowPlan {
+  request: TreeShape | null;
+  viewer: boolean;
+}
+
+/**
+ * Whether `next` (after `previous`) needs a tree, and the request's volumes, edits and whether
+ * it is interactive. A new volume list or edit list always regenerates (the skeleton stage); a
+ * drag of a volume never asks for a preview, a stroke or bend being drawn does.
+ */
+export function planShow(
+  registry: readonly ParamSpec[],
+  previous: EditorState,
+  next: EditorState,
+  interactive: boolean,
+): ShowPlan {
+  const params = next.params;
+  if (params === null) return { request: null, viewer: false };
+  const stage = previous.params ? firstStage(registry, previous.params, params) : 'skeleton';
+  const regrow = next.volumes !== previous.volumes;
+  const reshaped = next.edits !== previous.edits;
+  if (regrow || reshaped || (stage !== 'viewer' && (stage !== null || next.frame))) {
+    const { volumes, edits } = next;
+    return { request: { volumes, edits, interactive: interactive && !regrow }, viewer: false };
+  }
+  return { request: null, viewer: stage === 'viewer' };
+}
+
+/** Shows `next`, the editor state after `previous`. */
+export type ShowStateFn = (previous: EditorState, next: EditorState, interactive: boolean) => void;
+
+/**
+ * Shows a new state: a generation request (none when only viewer parameters changed;
+ * `interactive` while a slider is dragged or a stroke drawn), and the debounced URL/storage
+ * save. The request goes out first, so the worker runs while React renders. A change of the
+ * growth volumes or of the edit list always regenerates (the skeleton stage).
+ */
+export function useShowState(
+  registry: readonly ParamSpec[],
+  generatorRef: RefObject<Generator | null>,
+  viewerRef: RefObject<TreeViewer | null>,
+  syncRef: RefObject<ParamsSync | null>,
+): ShowStateFn {
+  return useCallback(
+    (previous: EditorState, next: EditorState, interactive: boolean) => {
+      const params = next.params;
+      if (params === null) return;
+      const plan = planShow(registry, previous, next, interactive);
+      if (plan.request) {
+        generatorRef.current?.request(params, next.frame, plan.request);
+      } else if (plan.viewer) {
+        // Nothing to regenerate: the viewer shows or hides what it already has.
+        viewerRef.current?.setPreviewVisible(params.show_preview === 1);
+        emitDebug('applied', { kind: 'viewer', at: performance.now(), preview: false });
+      }
+      syncRef.current?.schedule(registry, params);
+    },
+    [registry, generatorRef, viewerRef, syncRef],
+  );
 }

@@ -43,6 +43,20 @@ export interface SylvaDebugHook {
   view(from: [number, number, number], to: [number, number, number]): void;
   /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */
   growth(): { markers: number; volumes: number; dragging: boolean };
+  /**
+   * Hand edits: the active tool, whether it drags, how many edits the list holds, and the
+   * bounds of the tree shown (tree space, from its meta; null before the first tree).
+   */
+  edits(): {
+    tool: string | null;
+    dragging: boolean;
+    count: number;
+    bounds: { min: number[]; max: number[] } | null;
+  };
+  /** The bark point under client pixel `(x, y)` (tree space), or null (e2e: find a branch). */
+  pickBark(x: number, y: number): [number, number, number] | null;
+  /** Client pixel of tree-space point `p` (e2e: aim the mouse). */
+  project(p: [number, number, number]): [number, number];
   /** Levels of detail: level on screen (3 = impostor), triangles per level, screen size. */
   lod(): LodState;
   /** Moves the viewer's camera to `distance` m from the orbit target (LOD tests). */

@@ -18,7 +18,7 @@ import {
 class ParamsHistory {
   h: History;
   constructor(initial: Params, limit?: number) {
-    this.h = startHistory({ params: initial, volumes: [] }, limit);
+    this.h = startHistory({ params: initial, volumes: [], edits: [] }, limit);
   }
   get current(): Params {
     return this.h.present.params;
@@ -33,7 +33,7 @@ class ParamsHistory {
     return this.h.past.length;
   }
   record(params: Params, options: ChangeOptions): void {
-    this.h = record(this.h, { params, volumes: this.h.present.volumes }, options);
+    this.h = record(this.h, { ...this.h.present, params }, options);
   }
   private travel(step: Travel | null): { params: Params; frame: boolean } | null {
     if (step === null) return null;
@@ -168,13 +168,17 @@ describe('history of volumes', () => {
   const at = (y: number): VolumePrimitive => ({ ...sphere, centre: [0, y, 0] });
 
   it('a gizmo drag of one primitive is one step; volume and param edits undo in order', () => {
-    let h = startHistory({ params: base, volumes: [] });
-    h = record(h, { params: base, volumes: [at(5)] }, { key: null, now: 0 });
+    let h = startHistory({ params: base, volumes: [], edits: [] });
+    h = record(h, { params: base, volumes: [at(5)], edits: [] }, { key: null, now: 0 });
     for (let i = 1; i <= 30; i++) {
-      h = record(h, { params: base, volumes: [at(5 + i / 10)] }, { key: 'volume:0', now: i * 16 });
+      h = record(
+        h,
+        { params: base, volumes: [at(5 + i / 10)], edits: [] },
+        { key: 'volume:0', now: i * 16 },
+      );
     }
     const grown = { ...base, seed: 9 };
-    h = record(h, { params: grown, volumes: [at(8)] }, { key: null, now: 600 });
+    h = record(h, { params: grown, volumes: [at(8)], edits: [] }, { key: null, now: 600 });
     expect(h.past).toHaveLength(3);
     const back = undo(h);
     expect(back?.shown.volumes).toEqual([at(8)]);
@@ -188,8 +192,10 @@ describe('history of volumes', () => {
   });
 
   it('the same volumes in a new array are no change', () => {
-    const h = startHistory({ params: base, volumes: [at(1)] });
-    expect(record(h, { params: { ...base }, volumes: [at(1)] }, { key: null, now: 0 })).toBe(h);
+    const h = startHistory({ params: base, volumes: [at(1)], edits: [] });
+    expect(
+      record(h, { params: { ...base }, volumes: [at(1)], edits: [] }, { key: null, now: 0 }),
+    ).toBe(h);
   });
 });
 

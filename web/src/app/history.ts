@@ -1,21 +1,23 @@
 /**
  * Undo/redo of the editor's state (plain module, no React; immutable: every function returns a
- * new history). Every change is a snapshot of the whole params and growth volumes; rapid changes
+ * new history). Every change is a snapshot of the whole params, growth volumes and hand edits
+ * (a paint stroke or a bend drag is recorded once, when the pointer is released); rapid changes
  * of one thing (a slider drag, typing a number, a gizmo drag of one primitive) coalesce into one
  * undo step, while presets, Reset, Randomize and adding or removing a primitive are always
  * steps of their own.
  */
-import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 
 /** Changes of one key closer together than this (ms) are one undo step. */
 export const COALESCE_MS = 1000;
 /** Undo steps kept; older ones are dropped. */
 export const HISTORY_LIMIT = 200;
 
-/** What undo restores: the params and the growth volumes. */
+/** What undo restores: the params, the growth volumes and the hand edit list. */
 export interface Snapshot {
   params: Params;
   volumes: VolumePrimitive[];
+  edits: Edit[];
 }
 
 /** A snapshot plus how to show it (`frame`: re-frame the camera, as for a preset). */
@@ -51,11 +53,15 @@ function sameParams(a: Params, b: Params): boolean {
   return keys.every((k) => Object.is(a[k], b[k]));
 }
 
-/** Whether two snapshots hold the same params and volumes. */
+/** Whether two lists hold the same values (the same array is, without a look). */
+function sameList(a: readonly unknown[], b: readonly unknown[]): boolean {
+  return a === b || JSON.stringify(a) === JSON.stringify(b);
+}
+
+/** Whether two snapshots hold the same params, volumes and edits. */
 export function sameSnapshot(a: Snapshot, b: Snapshot): boolean {
   return (
-    sameParams(a.params, b.params) &&
-    (a.volumes === b.volumes || JSON.stringify(a.volumes) === JSON.stringify(b.volumes))
+    sameParams(a.params, b.params) && sameList(a.volumes, b.volumes) && sameList(a.edits, b.edits)
   );
 }
 

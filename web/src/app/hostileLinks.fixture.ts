@@ -47,6 +47,87 @@ const silent = (name: string, query: string, same: string): HostileCase => ({
 /** A case the e2e test also opens in a fresh page. */
 const inBrowser = (c: HostileCase): HostileCase => ({ ...c, browser: true });
 
+/** The notice of a dropped `e=` list, with what must be named in it. */
+const droppedEdits = (why: string): RegExp =>
+  new RegExp(`^Ignored the edits in the link: .*${why}.*Import edits…`);
+
+/**
+ * Hostile hand edits (`e=`): the whole list is dropped with one notice naming what was wrong,
+ * and the tree is the one without edits. (A good `e=` list is never part of `same` here, so
+ * the browser cases hold for any core.)
+ */
+const HOSTILE_EDITS: HostileCase[] = [
+  inBrowser(
+    noticed('edits: NaN', '?v=1&seed=5&e=1~cNaN.410.0', droppedEdits('e\\[0\\]: "NaN"'), SEED5),
+  ),
+  inBrowser(
+    noticed(
+      'edits: huge number',
+      '?v=1&seed=5&e=1~c9999999.410.0',
+      droppedEdits('edits\\[0\\]\\.at\\[0\\] is 99999.99'),
+      SEED5,
+    ),
+  ),
+  noticed('edits: exponent', '?v=1&e=1~c1e9.410.0', droppedEdits('"1e9" is not a whole number')),
+  noticed('edits: too many digits', '?v=1&e=1~c12345678.410.0', droppedEdits('not a whole number')),
+  inBrowser(
+    noticed(
+      'edits: unknown op',
+      '?v=1&seed=5&e=1~c80.410.-20~z1.2.3',
+      droppedEdits('e\\[1\\]: unknown op "z"'),
+      SEED5,
+    ),
+  ),
+  noticed('edits: wrong version', '?v=1&e=9~c80.410.-20', droppedEdits('unsupported version "9"')),
+  inBrowser(
+    noticed(
+      'edits: script garbage',
+      `?v=1&seed=5&e=${encodeURIComponent('<script>window.__xss=1</script>')}`,
+      droppedEdits('unsupported version'),
+      SEED5,
+    ),
+  ),
+  noticed(
+    'edits: wrong count',
+    '?v=1&e=1~b200.550.0.230',
+    droppedEdits('a bend takes 6 numbers, got 4'),
+  ),
+  noticed(
+    'edits: cut on the ground',
+    '?v=1&e=1~c80.2.0',
+    droppedEdits('edits\\[0\\]\\.at is on the ground'),
+  ),
+  noticed(
+    'edits: brush of 0',
+    '?v=1&e=1~p0.400.25.40.0.300.0',
+    droppedEdits('edits\\[0\\]\\.radius is 0'),
+  ),
+  noticed(
+    'edits: brush of 1 km',
+    '?v=1&e=1~p100000.400.25.40.0.300.0',
+    droppedEdits('edits\\[0\\]\\.radius is 1000'),
+  ),
+  noticed(
+    'edits: outline crossing itself',
+    '?v=1&e=1~o0.0.200.200.0.-200.-200.200',
+    droppedEdits('crosses itself'),
+  ),
+  inBrowser(
+    noticed(
+      'edits: too many points (long)',
+      `?v=1&seed=5&e=1~p60.400.25.40.0.300.0${'.0.0.1'.repeat(5000)}`,
+      droppedEdits('too long'),
+      SEED5,
+    ),
+  ),
+  noticed(
+    'edits: thousands of edits',
+    `?v=1&e=1${'~c1.100.1'.repeat(3000)}`,
+    droppedEdits('too long'),
+  ),
+  noticed('edits: empty item', '?v=1&e=1~~c80.410.-20', droppedEdits('e\\[0\\]')),
+];
+
 /** Eight bad values at once: the banner lists six and counts the rest. */
 export const EIGHT_BAD = [
   'scale',
@@ -74,7 +155,7 @@ export const HOSTILE: HostileCase[] = [
   ignored('fractional count', '?v=1&l1_branches=2.5', 'l1_branches'),
   ignored('levels 0', '?v=1&levels=0', 'levels'),
   ignored('20-digit levels', '?v=1&levels=99999999999999999999', 'levels'),
-  ignored('enum out of range', '?v=1&shape=8', 'shape'),
+  ignored('enum out of range', '?v=1&shape=9', 'shape'),
   ignored('bool 2', '?v=1&show_preview=2', 'show_preview'),
   ignored('budget 1e12', '?v=1&max_vertices=1e12', 'max_vertices'),
   ignored('hex', '?v=1&seed=0x10', 'seed'),
@@ -137,4 +218,5 @@ export const HOSTILE: HostileCase[] = [
     SEED5,
   ),
   inBrowser(noticed('many bad values (capped)', `?v=1&${EIGHT_BAD}`, /…and 2 more problems/)),
+  ...HOSTILE_EDITS,
 ];

@@ -8,13 +8,24 @@ import { describe, expect, it } from 'vitest';
 import { loadInitialParams } from '../app/persistence';
 import { realRegistry } from 'sylva-trees/testing';
 import { DEFAULT, HOSTILE, SEED5 } from './hostileLinks.fixture';
+import { editsFromSearch } from './useHandEdits';
 
 const registry = realRegistry();
 
 /** What `location.search` is for a link: the WHATWG URL parser drops the fragment and escapes. */
 const searchOf = (query: string) => new URL(`/${query}`, 'https://sylva.example').search;
 
-const load = (query: string) => loadInitialParams(registry, searchOf(query), null);
+/** What the app loads from a link: the params, the hand edits and every notice. */
+const load = (query: string) => {
+  const search = searchOf(query);
+  const initial = loadInitialParams(registry, search, null);
+  const edits = editsFromSearch(search);
+  return {
+    params: initial.params,
+    edits: edits.edits,
+    messages: [...initial.messages, ...edits.messages],
+  };
+};
 
 describe('hostile share links through the load path', () => {
   it('the table is large and the reference trees differ', () => {
@@ -27,6 +38,7 @@ describe('hostile share links through the load path', () => {
     it(`${c.name}: ${c.notice ? 'a notice' : 'silence'} and the tree of ${c.same}`, () => {
       const result = load(c.query);
       expect(result.params).toEqual(load(c.same).params);
+      expect(result.edits).toEqual(load(c.same).edits);
       if (c.notice) {
         expect(
           result.messages.some((m) => c.notice!.test(m)),

@@ -5,7 +5,7 @@
  * the worker already runs while the panel re-renders.
  */
 import { useCallback, useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import {
   editorReducer,
   initialEditor,
@@ -19,6 +19,7 @@ import { historyShortcut } from './history';
 export interface EditorChange {
   params?: Params;
   volumes?: VolumePrimitive[];
+  edits?: Edit[];
   key: string | null;
   frame?: boolean;
 }
@@ -30,12 +31,16 @@ export interface Editor {
   paramsRef: RefObject<Params | null>;
   /** The current growth volumes, read outside a render. */
   volumesRef: RefObject<VolumePrimitive[]>;
+  /** The current hand edits, read outside a render. */
+  editsRef: RefObject<Edit[]>;
   canUndo: boolean;
   canRedo: boolean;
   /** The generator is ready with these params (shown by the generator's first request). */
   load: (params: Params) => void;
   /** Applies and records an edit; `interactive` while a control is dragged or typed into. */
   change: (change: EditorChange, interactive?: boolean) => void;
+  /** Shows the edit list of a stroke being drawn (an interactive request; not recorded). */
+  draft: (edits: Edit[]) => void;
   undo: () => void;
   redo: () => void;
 }
@@ -43,9 +48,13 @@ export interface Editor {
 /** Shows a new state: `previous` is the state before it. */
 export type ShowState = (previous: EditorState, next: EditorState, interactive: boolean) => void;
 
-/** See the module docs. `initialVolumes`: the share link's primitives. */
-export function useEditor(initialVolumes: VolumePrimitive[], show: ShowState): Editor {
-  const [initial] = useState(() => initialEditor(initialVolumes));
+/** See the module docs. `initialVolumes`, `initialEdits`: the share link's primitives and edits. */
+export function useEditor(
+  initialVolumes: VolumePrimitive[],
+  initialEdits: Edit[],
+  show: ShowState,
+): Editor {
+  const [initial] = useState(() => initialEditor(initialVolumes, initialEdits));
   const [state, setState] = useState(initial);
   const stateRef = useRef(initial);
   const showRef = useRef(show);
@@ -69,6 +78,10 @@ export function useEditor(initialVolumes: VolumePrimitive[], show: ShowState): E
   const change = useCallback(
     (edit: EditorChange, interactive = false) =>
       dispatch({ type: 'change', ...edit, now: performance.now() }, interactive),
+    [dispatch],
+  );
+  const draft = useCallback(
+    (edits: Edit[]) => dispatch({ type: 'draft', edits }, true),
     [dispatch],
   );
   const undo = useCallback(() => dispatch({ type: 'undo' }), [dispatch]);
@@ -99,9 +112,14 @@ export function useEditor(initialVolumes: VolumePrimitive[], show: ShowState): E
           return stateRef.current.volumes;
         },
       },
+      editsRef: {
+        get current() {
+          return stateRef.current.edits;
+        },
+      },
     }),
     [],
   );
 
-  return { state, ...views, ...undoable(state), load, change, undo, redo };
+  return { state, ...views, ...undoable(state), load, change, draft, undo, redo };
 }

@@ -1,6 +1,6 @@
 /** React hook wiring the scheduler to the viewer (mesh via refs) and to small React state. */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type { Params, SylvaError, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, SylvaError, VolumePrimitive } from 'sylva-trees/core';
 import { createGeneratorWorker } from '../createWorker';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { GenerationScheduler, type ReadyInfo } from 'sylva-trees/worker';
@@ -17,10 +17,11 @@ export interface Generator {
   error: SylvaError | null;
   restarts: number;
   /**
-   * Requests a tree; `frame` re-frames the camera when it (or a newer one) arrives;
-   * `interactive` marks a step of a drag (a preview may answer; see `settle`).
+   * Requests a tree with its growth volumes and hand edits; `frame` re-frames the camera when it
+   * (or a newer one) arrives; `interactive` marks a step of a drag (a preview may answer; see
+   * `settle`).
    */
-  request(params: Params, frame: boolean, volumes?: VolumePrimitive[], interactive?: boolean): void;
+  request(params: Params, frame: boolean, shape?: TreeShape): void;
   /** The drag ended: the full tree follows the preview, if one is shown. */
   settle(): void;
   clearError(): void;
@@ -30,6 +31,19 @@ export interface Generator {
   cancel(): void;
 }
 
+/** What a request carries beside the params. */
+export interface TreeShape {
+  volumes?: VolumePrimitive[];
+  edits?: readonly Edit[];
+  interactive?: boolean;
+}
+
+/** The editor's current volumes and edits, read for the first request. */
+export interface InitialShape {
+  volumesRef: RefObject<VolumePrimitive[]>;
+  editsRef: RefObject<Edit[]>;
+}
+
 /**
  * Starts the worker on mount. `onReady` fires once with the registry and presets and returns the
  * initial params, which are requested right away.
@@ -37,8 +51,8 @@ export interface Generator {
 export function useGenerator(
   viewer: RefObject<TreeViewer | null>,
   onReady: (info: ReadyInfo) => Params,
-  /** Volume primitives of the initial request (read right after `onReady`). */
-  initialVolumes?: RefObject<VolumePrimitive[]>,
+  /** Volume primitives and edits of the initial request (read right after `onReady`). */
+  initial?: InitialShape,
 ): Generator {
   const [progress, setProgress] = useState<number | null>(null);
   const [stats] = useState(() => new StatsStore());
@@ -61,8 +75,9 @@ export function useGenerator(
           setRestarts(restartCount);
           if (!announced) {
             announced = true;
-            const initial = onReadyRef.current(info);
-            log.requested(scheduler.request(initial, initialVolumes?.current));
+            const params = onReadyRef.current(info);
+            const edits = initial?.editsRef.current ?? [];
+            log.requested(scheduler.request(params, initial?.volumesRef.current, { edits }));
           }
         },
         onResult: (result) => {
@@ -99,13 +114,14 @@ export function useGenerator(
       scheduler.dispose();
       if (schedulerRef.current === scheduler) schedulerRef.current = null;
     };
-  }, [viewer, initialVolumes, stats, log]);
+  }, [viewer, initial, stats, log]);
 
   const request = useCallback(
-    (params: Params, frame: boolean, volumes?: VolumePrimitive[], interactive = false) => {
+    (params: Params, frame: boolean, shape: TreeShape = {}) => {
       const scheduler = schedulerRef.current;
       if (!scheduler) return;
-      log.requested(scheduler.request(params, volumes, { interactive }), frame);
+      const { volumes, edits, interactive = false } = shape;
+      log.requested(scheduler.request(params, volumes, { interactive, edits }), frame);
     },
     [log],
   );

@@ -19,6 +19,7 @@ import { decodeVolumes, encodeVolumes, VOLUMES_KEY } from 'sylva-trees/url';
 import { GrowthOverlay } from '../viewer/GrowthOverlay';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { installDebugHook } from './debugHook';
+import { withQueryEntry } from './queryEntry';
 
 /** What the app and the Growth panel see of the editor. */
 export interface GrowthEditor {
@@ -34,18 +35,11 @@ export interface GrowthEditor {
 }
 
 /**
- * `search` with its `vol=` entry replaced by `vol=<text>` (or removed when `text` is empty). Every
- * other entry is kept byte for byte: re-serialising the query (URLSearchParams) would re-encode
- * a hostile entry such as `%ZZ` into a valid `%25ZZ`, and the link's own notices would be lost
- * if the app read the URL after that.
+ * `search` with its `vol=` entry replaced by `vol=<text>` (or removed when `text` is empty),
+ * every other entry kept byte for byte (`withQueryEntry`).
  */
 export function withVolumesQuery(search: string, text: string): string {
-  const pieces = search
-    .replace(/^\?/, '')
-    .split('&')
-    .filter((piece) => piece !== '' && piece.split('=', 1)[0] !== VOLUMES_KEY);
-  if (text) pieces.push(`${VOLUMES_KEY}=${encodeURIComponent(text)}`);
-  return pieces.length > 0 ? `?${pieces.join('&')}` : '';
+  return withQueryEntry(search, VOLUMES_KEY, text);
 }
 
 /** Writes `vol=` into the page URL (or removes it), keeping every other entry as it is. */

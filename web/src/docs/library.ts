@@ -33,8 +33,8 @@ export interface ApiRow {
 /** The API table. */
 export const LIBRARY_API: ApiRow[] = [
   {
-    call: 'SylvaTree.create({ preset?, seed?, params?, worker? })',
-    what: 'a new tree: the defaults, then the preset, the seed and the values. Invalid values reject with the same message as the app and the CLI; worker: false generates on the calling thread.',
+    call: 'SylvaTree.create({ preset?, seed?, params?, edits?, worker? })',
+    what: "a new tree: the defaults, then the preset, the seed and the values, shaped by the hand edits (the studio's sylva-edits.json). Invalid values reject with the same message as the app and the CLI; worker: false generates on the calling thread.",
     members: ['SylvaTree.create'],
   },
   {
@@ -53,9 +53,9 @@ export const LIBRARY_API: ApiRow[] = [
     members: ['tree.update', 'tree.setWind'],
   },
   {
-    call: 'tree.set({ id: value })',
-    what: 'regenerates in the worker, rerunning only the stages the values touch.',
-    members: ['tree.set'],
+    call: 'tree.set({ id: value }), tree.set({ edits }), tree.edits',
+    what: 'regenerates in the worker, rerunning only the stages the values touch; edits replaces the hand edit list (tree.edits).',
+    members: ['tree.set', 'tree.edits'],
   },
   {
     call: 'tree.stats, tree.params',

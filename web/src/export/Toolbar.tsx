@@ -4,7 +4,7 @@
  * to choose it), "Copy embed code" and a link to the docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
-import type { Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { useDismiss } from '../ui/useDismiss';
 import type { TreeViewer } from '../viewer/TreeViewer';
@@ -35,6 +35,8 @@ interface Props {
   viewerRef: RefObject<TreeViewer | null>;
   /** The growth volume primitives sent with every request. */
   volumesRef: RefObject<VolumePrimitive[]>;
+  /** The hand edits: an export is the edited tree. */
+  editsRef: RefObject<Edit[]>;
   /** Applies params read from a preset file (one undoable step). */
   onLoadParams: (params: Params) => void;
 }
@@ -117,7 +119,7 @@ function MeshExportButton(props: {
 
 /** Toolbar over the viewer (top right). */
 export function Toolbar(props: Props) {
-  const { registry, params, presetName, viewerRef, volumesRef, onLoadParams } = props;
+  const { registry, params, presetName, viewerRef, volumesRef, editsRef, onLoadParams } = props;
   const menuRef = useRef<HTMLDetailsElement>(null);
   const fileRef = useRef<HTMLInputElement>(null);
   const clientRef = useRef<ExportClient | null>(null);
@@ -165,6 +167,7 @@ export function Toolbar(props: Props) {
     client()
       .export(params, volumesRef.current ?? [], format, {
         name: baseName,
+        edits: editsRef.current ?? [],
         ...(leaves ? { leaves } : {}),
       })
       .then((response) => saveExported(response, format, setStatus))

@@ -27,7 +27,7 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import type { Params, TreeBuffers, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, TreeBuffers, VolumePrimitive } from 'sylva-trees/core';
 import type { OverlayHost } from '../viewer/overlayHost';
 import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
 import type { ImpostorAtlas } from './impostor';
@@ -66,10 +66,12 @@ export interface LodState {
   bakeMs: number | null;
 }
 
-/** Where the LOD request's parameters come from (the app's current params and volumes). */
+/** Where the LOD request's parameters come from (the app's current params, volumes, edits). */
 export interface LodSource {
   params(): Params | null;
   volumes(): VolumePrimitive[] | undefined;
+  /** The hand edits (absent: none): the levels are of the edited tree. */
+  edits?(): readonly Edit[] | undefined;
 }
 
 const LEVEL_COUNT = 4;
@@ -211,7 +213,7 @@ export class LodController {
     if (this.disposed || !params || !this.hash || this.requested === this.hash) return;
     const hash = this.hash;
     this.requested = hash;
-    this.client.request(params, this.source.volumes()).then(
+    this.client.request(params, this.source.volumes(), this.source.edits?.()).then(
       (lods) => {
         if (this.disposed || lods.meta.hash !== this.hash || hash !== this.hash) return;
         this.setLods(lods);

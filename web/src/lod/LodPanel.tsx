@@ -5,7 +5,7 @@
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { installDebugHook } from '../app/debugHook';
-import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { ForestView } from '../forest/ForestView';
 import type { TreeViewer } from '../viewer/TreeViewer';
@@ -29,11 +29,13 @@ export function LodPanel({
   viewerRef,
   paramsRef,
   volumesRef,
+  editsRef,
   info,
 }: {
   viewerRef: RefObject<TreeViewer | null>;
   paramsRef: RefObject<Params | null>;
   volumesRef: RefObject<VolumePrimitive[]>;
+  editsRef: RefObject<Edit[]>;
   info: ReadyInfo | null;
 }) {
   const controllerRef = useRef<LodController | null>(null);
@@ -47,7 +49,11 @@ export function LodPanel({
     const controller = new LodController(
       viewer.overlayHost(),
       client,
-      { params: () => paramsRef.current, volumes: () => volumesRef.current },
+      {
+        params: () => paramsRef.current,
+        volumes: () => volumesRef.current,
+        edits: () => editsRef.current,
+      },
       setState,
     );
     controllerRef.current = controller;
@@ -62,7 +68,7 @@ export function LodPanel({
       client.dispose();
       controllerRef.current = null;
     };
-  }, [viewerRef, paramsRef, volumesRef]);
+  }, [viewerRef, paramsRef, volumesRef, editsRef]);
 
   const mode = state?.mode ?? 'auto';
   const level = state?.level ?? 0;

@@ -5,7 +5,7 @@
  * with `superseded`); a crashed worker rejects what it held and is restarted on the next request
  * (all of it in [`WorkerClient`]; the worker starts with the first request).
  */
-import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import {
   type DropReason,
   type GeneratorWorkerFactory,
@@ -22,6 +22,7 @@ interface Waiting {
   id: number;
   params: Params;
   volumes: VolumePrimitive[] | undefined;
+  edits: readonly Edit[] | undefined;
   resolve: (lods: LodBuffers) => void;
   reject: (reason: Error) => void;
 }
@@ -46,11 +47,12 @@ export class LodClient {
     this.client = new WorkerClient<Waiting, WorkerRequest, WorkerResponse>(
       factory,
       {
-        message: ({ id, params, volumes }) => ({
+        message: ({ id, params, volumes, edits }) => ({
           type: 'lods',
           id,
           params,
           ...(volumes?.length ? { volumes } : {}),
+          ...(edits?.length ? { edits: [...edits] } : {}),
           ...(bakeLeaves ? { bakeLeaves } : {}),
         }),
         ends: (response, job) =>
@@ -67,10 +69,14 @@ export class LodClient {
     );
   }
 
-  /** Generates the tree of `params` with its levels of detail. */
-  request(params: Params, volumes?: VolumePrimitive[]): Promise<LodBuffers> {
+  /** Generates the tree of `params` (with its volumes and hand edits) and its levels of detail. */
+  request(
+    params: Params,
+    volumes?: VolumePrimitive[],
+    edits?: readonly Edit[],
+  ): Promise<LodBuffers> {
     return new Promise<LodBuffers>((resolve, reject) => {
-      this.client.submit({ id: this.nextId++, params, volumes, resolve, reject });
+      this.client.submit({ id: this.nextId++, params, volumes, edits, resolve, reject });
     });
   }
 

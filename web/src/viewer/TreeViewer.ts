@@ -4,6 +4,7 @@ import type { OverlayHost } from './overlayHost';
 import {
   Color,
   Fog,
+  InstancedMesh,
   LineBasicMaterial,
   LineSegments,
   Mesh,
@@ -176,6 +177,7 @@ export class TreeViewer {
       domElement: this.renderer.domElement,
       orbit: this.controls,
       requestRender: () => this.requestRender(),
+      pickables: (leaves) => this.pickables(leaves),
       onTree: (listener) => {
         this.treeListeners.add(listener);
         return () => this.treeListeners.delete(listener);
@@ -185,6 +187,21 @@ export class TreeViewer {
         return () => this.hashListeners.delete(listener);
       },
     };
+  }
+
+  /**
+   * The bark mesh and, with `leaves`, the leaves when they are an `InstancedMesh` (pulled
+   * leaves are placed by their shader: a ray cannot hit them on the CPU).
+   */
+  private pickables(leaves: boolean): Object3D[] {
+    const bark = this.tree.barkMesh;
+    const out: Object3D[] = bark ? [bark] : [];
+    if (leaves) {
+      this.tree.group.traverse((o) => {
+        if (o instanceof InstancedMesh && o.visible) out.push(o);
+      });
+    }
+    return out;
   }
 
   /**

@@ -3,6 +3,7 @@
  * export never waits behind or cancels the interactive generation), which reports the formats
  * the core supports in its `ready` message.
  */
+import type { Edit } from '../core/edits';
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
 import { WorkerClient } from '../worker/client';
 import type { GeneratorWorkerFactory, WorkerRequest, WorkerResponse } from '../worker/protocol';
@@ -93,7 +94,7 @@ export class ExportClient {
     params: Params,
     volumes: VolumePrimitive[],
     format: ExportFormat,
-    options: { leaves?: LeafExport; name?: string } = {},
+    options: { leaves?: LeafExport; name?: string; edits?: readonly Edit[] } = {},
   ): Promise<ExportResponse> {
     const formats = await this.formats();
     if (!formats.includes(format)) {
@@ -107,6 +108,7 @@ export class ExportClient {
         params,
         format,
         ...(volumes.length > 0 ? { volumes } : {}),
+        ...(options.edits?.length ? { edits: [...options.edits] } : {}),
         ...(options.leaves ? { leaves: options.leaves } : {}),
         ...(options.name ? { name: options.name } : {}),
       };

@@ -7,6 +7,7 @@
  */
 import { parseMeta } from '../core/parse';
 import type { WasmApi, WasmTree } from '../core/types';
+import { coreInput } from '../core/editsJson';
 import { volumeToCore } from '../core/volumes';
 import type { WorkerResponse } from '../worker/protocol';
 import type { ExportedFile, ExportFormat, ExportRequest } from './exportProtocol';
@@ -119,9 +120,7 @@ export function exportTree(
   request: ExportRequest,
   post: (message: WorkerResponse, transfer: Transferable[]) => void,
 ): void {
-  const input = request.volumes?.length
-    ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
-    : request.params;
+  const input = coreInput(request.params, request.volumes?.map(volumeToCore), request.edits);
   const tree: ExportableTree = wasm.generate(JSON.stringify(input));
   try {
     const { hash } = parseMeta(tree.meta_json());

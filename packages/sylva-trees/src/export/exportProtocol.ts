@@ -3,6 +3,7 @@
  * never the interactive one: an export regenerates the current params and returns the files,
  * as transferable bytes or (GLB) as a Blob made in the worker straight from the core's memory.
  */
+import type { Edit } from '../core/edits';
 import type { Params, VolumePrimitive } from '../core/types';
 
 /** File formats the core may export. */
@@ -21,6 +22,8 @@ export interface ExportRequest {
   id: number;
   params: Params;
   volumes?: VolumePrimitive[];
+  /** The hand edit list (absent when empty). */
+  edits?: Edit[];
   format: ExportFormat;
   /** The core's `{"leaves": ...}` export option (GLB; default `instanced`). */
   leaves?: LeafExport;

@@ -1,5 +1,6 @@
 /** Worker side of the LOD request: runs `generate_lods` and packs every level for transfer. */
 import type { WasmApi } from '../core/types';
+import { coreInput } from '../core/editsJson';
 import { volumeToCore } from '../core/volumes';
 import type {
   BakedLeafBuffers,
@@ -53,9 +54,7 @@ export function lodsResponse(
   if (typeof wasm.generate_lods !== 'function') {
     throw new Error('this generator build has no generate_lods');
   }
-  const input = request.volumes?.length
-    ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
-    : request.params;
+  const input = coreInput(request.params, request.volumes?.map(volumeToCore), request.edits);
   const lods = wasm.generate_lods(JSON.stringify(input));
   try {
     const meta = parseLodMeta(lods.meta_json());

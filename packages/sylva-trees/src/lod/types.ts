@@ -1,4 +1,5 @@
 /** Levels of detail as they cross the worker boundary (`generate_lods` in the wasm binding). */
+import type { Edit } from '../core/edits';
 import type { LeafTextureBuffers, LodMeta, Params, VolumePrimitive } from '../core/types';
 
 export type { LodLevelMeta, LodMeta } from '../core/types';
@@ -55,6 +56,8 @@ export interface LodsRequest {
   id: number;
   params: Params;
   volumes?: VolumePrimitive[];
+  /** The hand edit list (absent when empty). */
+  edits?: Edit[];
   /** Also bake each level's leaves into one mesh (`LodLevelBuffers.bakedLeaves`). */
   bakeLeaves?: boolean;
 }

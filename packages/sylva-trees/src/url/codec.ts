@@ -2,13 +2,17 @@
 import { defaultParams, displayValue, normalizeValue } from '../core/params';
 import type { ParamSpec, Params, VolumeGroup, VolumeKind, VolumePrimitive } from '../core/types';
 import { CENTRE_MAX, MAX_VOLUMES, SIZE_MAX, SIZE_MIN } from '../core/volumes';
+import { EDITS_KEY } from './editsCodec';
 
 /** Current format version written as `v=`. */
 export const FORMAT_VERSION = '1';
-/** Longest query accepted when decoding (characters, without the leading `?`). */
+/**
+ * Longest query accepted when decoding (characters, without the leading `?`), not counting the
+ * edits' `e=` entry, which has its own limit (`MAX_EDITS_LINK_LENGTH`).
+ */
 export const MAX_QUERY_LENGTH = 4096;
 /** Non-parameter query keys carried over when the URL is rewritten. */
-export const KEPT_KEYS: readonly string[] = ['debug', 'vol', 'aa'];
+export const KEPT_KEYS: readonly string[] = ['debug', 'vol', EDITS_KEY, 'aa'];
 /** Most notices one decode reports; the rest are summed up in one more line. */
 export const MAX_MESSAGES = 6;
 
@@ -133,9 +137,10 @@ export function decodeQuery(registry: readonly ParamSpec[], search: string): Dec
   const query = search.startsWith('?') ? search.slice(1) : search;
   const params = defaultParams(registry);
   const notices = new Notices();
-  if (query.length > MAX_QUERY_LENGTH) {
+  const measured = withoutEdits(query).length;
+  if (measured > MAX_QUERY_LENGTH) {
     notices.add(
-      `The share link is too long (${query.length} characters, limit ${MAX_QUERY_LENGTH}); loaded the defaults.`,
+      `The share link is too long (${measured} characters, limit ${MAX_QUERY_LENGTH}); loaded the defaults.`,
     );
     return { params, messages: notices.done(), hasParams: true };
   }
@@ -172,6 +177,15 @@ export function decodeQuery(registry: readonly ParamSpec[], search: string): Dec
     }
   }
   return { params, messages: notices.done(), hasParams };
+}
+
+/** `query` without its `e=` entries (they are limited on their own). */
+function withoutEdits(query: string): string {
+  if (!query.includes(`${EDITS_KEY}=`)) return query;
+  return query
+    .split('&')
+    .filter((piece) => piece.split('=', 1)[0] !== EDITS_KEY)
+    .join('&');
 }
 
 /** Rebuilds a page query: the encoded params plus any kept non-param keys (e.g. `debug`). */

@@ -1,7 +1,7 @@
 /**
- * `sylva-trees/url`: the share-link format. Parameters and growth volumes to and from a query
- * string (versioned, length-capped, hostile input reported as notices, never thrown), and the
- * number formatting and parsing it shares with preset files.
+ * `sylva-trees/url`: the share-link format. Parameters, growth volumes and hand edits to and
+ * from a query string (versioned, length-capped, hostile input reported as notices, never
+ * thrown), and the number formatting and parsing it shares with preset files.
  */
 export {
   buildSearch,
@@ -17,3 +17,10 @@ export {
   VOLUMES_KEY,
   type DecodeResult,
 } from './codec';
+export {
+  decodeEdits,
+  editsFitLink,
+  encodeEdits,
+  EDITS_KEY,
+  MAX_EDITS_LINK_LENGTH,
+} from './editsCodec';

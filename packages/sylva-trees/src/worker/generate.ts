@@ -13,6 +13,7 @@ import type {
   WasmApi,
   WasmSession,
 } from '../core/types';
+import { coreInput } from '../core/editsJson';
 import { volumeToCore } from '../core/volumes';
 import type { GenerateRequest, WorkerResponse } from './protocol';
 
@@ -128,9 +129,7 @@ export class SessionGenerator {
   handle(request: GenerateRequest): void {
     this.cancelHash?.();
     this.cancelHash = null;
-    const input = request.volumes?.length
-      ? { ...request.params, volumes: request.volumes.map(volumeToCore) }
-      : request.params;
+    const input = coreInput(request.params, request.volumes?.map(volumeToCore), request.edits);
     let lastStep = -1;
     // Progress while growing: at most 50 messages per request (every 2 %).
     const progress = (fraction: number): void => {

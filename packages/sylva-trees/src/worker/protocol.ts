@@ -2,6 +2,7 @@
  * Typed message protocol between the main thread and the generator worker (the production
  * messages; the test hooks' messages are in `debug.ts`, accepted by a debug worker only).
  */
+import type { Edit } from '../core/edits';
 import type {
   LeafInspection,
   LeafPreset,
@@ -23,6 +24,8 @@ export interface GenerateRequest {
   params: Params;
   /** Growth mode: the user's volume primitives (sent as the core's `"volumes"` key). */
   volumes?: VolumePrimitive[];
+  /** The hand edit list (sent as the core's `"edits"` key; absent when empty). */
+  edits?: Edit[];
   /**
    * A slider is being dragged: the worker may answer with a preview bark when the full one
    * would take longer than a frame (the full tree follows when the drag settles).

@@ -7,6 +7,7 @@
  * settles ([`GenerationScheduler.settle`], or [`SETTLE_MS`] without a new interactive request)
  * the same parameters are requested at full quality, so a preview never stays on screen.
  */
+import type { Edit } from '../core/edits';
 import type { Params, SylvaError, VolumePrimitive } from '../core/types';
 import { WorkerClient, type WorkerFactory } from './client';
 import type { DebugRequest, DebugResponse } from './debug';
@@ -53,6 +54,11 @@ export const SETTLE_MS = 150;
 export interface RequestOptions {
   /** Part of a continuous edit (a slider drag): a preview answer is acceptable. */
   interactive?: boolean;
+  /**
+   * The hand edit list: part of the request's identity like the params (an edit reruns the
+   * skeleton stage in the worker's session); sent only when non-empty.
+   */
+  edits?: readonly Edit[];
 }
 
 /** Default longest run of one request before the worker is stopped and recreated (ms). */
@@ -96,7 +102,11 @@ export class GenerationScheduler {
   private readonly debug: boolean;
   private nextId = 1;
   /** The last interactive request's input, until the full tree for it is requested. */
-  private unsettled: { params: Params; volumes?: VolumePrimitive[] } | null = null;
+  private unsettled: {
+    params: Params;
+    volumes?: VolumePrimitive[];
+    edits?: readonly Edit[];
+  } | null = null;
   private settleTimer: ReturnType<typeof setTimeout> | null = null;
   /**
    * Whether a drag settles by itself after [`SETTLE_MS`] without input (true), or only on
@@ -165,7 +175,11 @@ export class GenerationScheduler {
     const interactive = options.interactive === true;
     this.clearSettleTimer();
     if (interactive) {
-      this.unsettled = volumes?.length ? { params, volumes } : { params };
+      this.unsettled = {
+        params,
+        ...(volumes?.length ? { volumes } : {}),
+        ...(options.edits?.length ? { edits: options.edits } : {}),
+      };
       if (this.settleWhenIdle) this.settleTimer = setTimeout(() => this.settle(), SETTLE_MS);
     } else {
       this.unsettled = null;
@@ -175,6 +189,7 @@ export class GenerationScheduler {
       id,
       params,
       ...(volumes?.length ? { volumes } : {}),
+      ...(options.edits?.length ? { edits: [...options.edits] } : {}),
       ...(interactive ? { preview: true } : {}),
     });
     return id;
@@ -188,7 +203,7 @@ export class GenerationScheduler {
     this.clearSettleTimer();
     const last = this.unsettled;
     if (last === null || this.client.disposed) return null;
-    return this.request(last.params, last.volumes);
+    return this.request(last.params, last.volumes, last.edits ? { edits: last.edits } : {});
   }
 
   private clearSettleTimer(): void {
