@@ -20,7 +20,8 @@ const native = (args) =>
   JSON.parse(execFileSync(sylva, ['generate', ...args], { encoding: 'utf8' }));
 
 const cases = [];
-for (const preset of JSON.parse(wasm.presets_json())) {
+const presets = JSON.parse(wasm.presets_json());
+for (const preset of presets) {
   cases.push({
     name: `preset ${preset.name}`,
     values: preset.values,
@@ -37,9 +38,37 @@ const edits = [
   { op: 'cut', at: [-1.8003398, 5.9014244, 0.38097703] },
   { op: 'cut', at: [30, 4, 0] },
 ];
-const editsFile = join(mkdtempSync(join(tmpdir(), 'sylva-parity-')), 'edits.json');
-writeFileSync(editsFile, JSON.stringify({ version: 1, edits }));
-cases.push({ name: 'edits', values: { edits }, args: ['--edits', editsFile] });
+const editsDir = mkdtempSync(join(tmpdir(), 'sylva-parity-'));
+const stroke = Array.from({ length: 12 }, (_, i) => [3 + 0.25 * i, 9 + 0.05 * i, 0.1 * i]);
+const paint = { op: 'paint', points: stroke, radius: 0.6, density: 400, segment: 0.25, kill: 0.4 };
+const outline = [
+  [0, 5],
+  [5, 6],
+  [0.5, 15],
+  [0, 16],
+];
+// Paint on a Weber & Penn tree and on a grown one; a drawn crown (Crown Shape Drawn = 8) with a
+// stroke and a cut after it.
+const editCases = [
+  ['edits', {}, edits],
+  ['paint', {}, [paint]],
+  ['paint grown_broadleaf', { preset: 'grown_broadleaf' }, [paint]],
+  ['drawn crown', { shape: 8 }, [{ op: 'crown', outline }, paint, edits[1]]],
+];
+for (const [name, extra, list] of editCases) {
+  const file = join(editsDir, `${name.replaceAll(' ', '_')}.json`);
+  writeFileSync(file, JSON.stringify({ version: 1, edits: list }));
+  const preset = extra.preset ? presets.find((p) => p.name === extra.preset) : null;
+  const values = {
+    ...(preset ? preset.values : {}),
+    ...(extra.shape ? { shape: extra.shape } : {}),
+    edits: list,
+  };
+  const args = ['--edits', file];
+  if (preset) args.push('--preset', preset.name);
+  if (extra.shape) args.push('--set', `shape=${extra.shape}`);
+  cases.push({ name, values, args });
+}
 let passed = 0;
 let failed = 0;
 for (const c of cases) {
