@@ -233,7 +233,7 @@ test('crown: the shape dropdown and Show Preview update the tree, the envelope a
   await page.goto('/');
   const first = await waitForTree(page);
   const shape = page.locator('select[data-param-id="shape"]');
-  await expect(shape.locator('option')).toHaveCount(8);
+  await expect(shape.locator('option')).toHaveCount(9);
   await shape.selectOption({ label: 'Conical' });
   const conical = await waitForNewTree(page, first);
   await expect.poll(() => new URL(page.url()).searchParams.get('shape')).toBe('0');
