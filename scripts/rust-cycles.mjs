@@ -455,7 +455,8 @@ if (process.argv[1] === fileURLToPath(import.meta.url)) {
   if (lines.length > 0) {
     console.error(`Import cycles between Rust files (see scripts/rust-cycles.mjs):`);
     for (const line of lines) console.error(`  ${line}`);
-    process.exit(1);
+    process.exitCode = 1;
+  } else {
+    console.log(`rust-cycles: no import cycles in ${dirs.join(', ')}`);
   }
-  console.log(`rust-cycles: no import cycles in ${dirs.join(', ')}`);
 }
