@@ -223,3 +223,33 @@ fn runaway_strokes_stop_with_a_message_naming_the_field() {
     };
     assert!(matches!(&e, SylvaError::InvalidParam { param, .. } if param == "edits[7].segment"), "{e:?}");
 }
+
+/// Regression: the marker cap counted the candidates each brush point's capsule draws (its whole
+/// capsule, most of it inside the capsule before), not the markers kept: with brush points a
+/// fifth of a metre apart, as the studio lays them, an ordinary 8 m stroke of the default brush
+/// (radius 0.6 m, 400 markers per m³) reported 20,147 "markers" and stopped growing.
+#[test]
+fn a_long_stroke_of_the_default_brush_grows_and_the_cap_counts_markers() {
+    let (p, mut sk) = default_tree();
+    let edge = max_x(sk.stems.iter());
+    let points: Vec<Vec3> =
+        (0..60).map(|i| Vec3::new(edge - 4.0 + 0.2 * i as f32, 9.0 + 0.03 * i as f32, 0.0)).collect();
+    let stroke = Paint { points, radius: 0.6, density: 400.0, segment: 0.25, kill: 0.4 };
+    let out =
+        paint(&mut sk, &stroke, 1, 0, p.skeleton.max_vertices).expect("a 12 m stroke of the default brush paints");
+    // The tube: a 0.6 m ball and 59 segments of about 0.2 m, times 400 per m³: about 5,700 markers.
+    let tube = 400.0 * std::f32::consts::PI * 0.36 * (0.8 + 59.0 * 0.2022);
+    let n = out.markers.len() as f32;
+    assert!((n - tube).abs() < 0.1 * tube, "{n} markers, the tube holds {tube}");
+    assert!(!new_stems(&sk, &out).is_empty());
+    // Points a millimetre apart with a 10 m brush would draw billions of candidates for few
+    // markers: the sampling budget stops it, naming the density.
+    let (_, mut sk) = default_tree();
+    let points: Vec<Vec3> = (0..4000).map(|i| Vec3::new(0.001 * i as f32, 9.0, 0.0)).collect();
+    let stroke = Paint { points, radius: 10.0, density: 1.0, segment: 0.25, kill: 0.4 };
+    let Err(e) = paint(&mut sk, &stroke, 1, 2, p.skeleton.max_vertices) else { panic!("the sampling budget expected") };
+    assert!(
+        matches!(&e, SylvaError::Budget { param, message } if param == "edits[2].density" && message.contains("candidate")),
+        "{e:?}"
+    );
+}

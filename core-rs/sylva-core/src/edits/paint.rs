@@ -12,8 +12,8 @@
 //! * **Influence distance**: [`INFLUENCE_SEGMENTS`] internodes (and always one internode more
 //!   than the kill distance), as the SCA add-on's Influence Range is a multiple of its branch
 //!   length: a marker further than that from every node waits until growth comes near.
-//! * **Caps**: [`MAX_MARKERS`] markers per stroke (more is an error naming the stroke's
-//!   `density`); [`iteration_cap`] iterations per brush point; the vertex budget (`max_vertices`,
+//! * **Caps**: [`MAX_MARKERS`] markers per stroke, its tube's volume times its density, and
+//!   [`MAX_CANDIDATES`] candidates drawn (more is an error naming the stroke's `density`); [`iteration_cap`] iterations per brush point; the vertex budget (`max_vertices`,
 //!   estimated with [`crate::skeleton::min_vertices`] for the tree's stems and the new ones).
 //! * **Levels, bark and leaves**: a new stem's level is its parent's plus one, capped at the
 //!   deepest level the tree has, so a shoot off the finest twigs is a finest twig itself: the
@@ -40,7 +40,7 @@ use crate::error::SylvaError;
 use crate::params::Paint;
 use crate::skeleton::{budget_error, min_vertices, Skeleton, Stem, StemKind};
 use colonize::{Colony, Settings};
-pub use markers::MAX_MARKERS;
+pub use markers::{MAX_CANDIDATES, MAX_MARKERS};
 use shoots::{Anchor, Dress};
 use std::ops::Range;
 
@@ -176,13 +176,18 @@ impl PaintGrowth {
             return Err(field_error(index, "points", "must be finite"));
         }
         let p = &self.paint;
-        let count = markers::candidate_count(points, 0, p.radius, p.density);
-        if count > MAX_MARKERS {
+        let count = markers::marker_count(points, 0, p.radius, p.density);
+        let drawn = markers::candidate_count(points, 0, p.radius, p.density);
+        if count > MAX_MARKERS || drawn > MAX_CANDIDATES {
+            let why = if count > MAX_MARKERS {
+                format!("would scatter {count:.0} markers, more than {MAX_MARKERS}")
+            } else {
+                format!("would draw {drawn:.0} candidate markers, more than {MAX_CANDIDATES} (its points are close for its radius)")
+            };
             return Err(SylvaError::Budget {
                 param: format!("edits[{index}].density"),
                 message: format!(
-                    "edits[{index}]: this stroke would scatter {count:.0} markers, more than {MAX_MARKERS}: \
-                     lower edits[{index}].density or its radius, or paint a shorter stroke"
+                    "edits[{index}]: this stroke {why}: lower edits[{index}].density or its radius, or paint a shorter stroke"
                 ),
             });
         }

@@ -11,8 +11,13 @@
 use crate::rng::Rng;
 use glam::Vec3;
 
-/// The most markers one stroke may scatter (candidates drawn in its capsules).
+/// The most markers one stroke may scatter (its tube's volume times its density, [`marker_count`]).
 pub const MAX_MARKERS: f64 = 20_000.0;
+
+/// The most candidates one stroke may draw ([`candidate_count`]): a sampling budget. Brush
+/// points closer together than the radius draw each region's whole capsule and keep only its
+/// new part, so a stroke draws several candidates per marker it keeps.
+pub const MAX_CANDIDATES: f64 = 2_000_000.0;
 
 /// The capsule of region `k`: its two end points.
 fn capsule(points: &[Vec3], k: usize) -> (Vec3, Vec3) {
@@ -31,7 +36,21 @@ fn candidates(points: &[Vec3], k: usize, radius: f32, density: f32) -> usize {
     (f64::from(density) * capsule_volume(a.distance(b), radius)).round() as usize
 }
 
-/// The candidates the regions `from..points.len()` of a stroke would draw (for the marker cap).
+/// The markers the regions `from..points.len()` of a stroke keep, expected: the density times
+/// the volume each adds to the tube (the first point's ball, then the cylinder of each segment;
+/// exact for a straight stroke, an overestimate where it turns).
+pub fn marker_count(points: &[Vec3], from: usize, radius: f32, density: f32) -> f64 {
+    let (r, d) = (f64::from(radius), f64::from(density));
+    (from..points.len())
+        .map(|k| {
+            let (a, b) = capsule(points, k);
+            let added = if k == 0 { 4.0 / 3.0 * r } else { f64::from(a.distance(b)) };
+            d * std::f64::consts::PI * r * r * added
+        })
+        .sum()
+}
+
+/// The candidates the regions `from..points.len()` of a stroke would draw (for the sampling budget).
 pub fn candidate_count(points: &[Vec3], from: usize, radius: f32, density: f32) -> f64 {
     (from..points.len()).map(|k| candidates(points, k, radius, density) as f64).sum()
 }
@@ -116,6 +135,9 @@ mod tests {
         let volume = (hi - lo).x * (hi - lo).y * (hi - lo).z * inside as f32 / 200_000.0;
         let want = volume * density;
         assert!((all.len() as f32 - want).abs() < 0.05 * want, "{} markers, want {want}", all.len());
+        // The expected count the marker cap reads is the tube's volume times the density.
+        let expected = marker_count(&pts, 0, r, density);
+        assert!((expected as f32 - want).abs() < 0.05 * want, "expected {expected}, want {want}");
         // A region depends only on the points up to it.
         assert_eq!(region(&pts[..2], 1, r, density, 1, 0), region(&pts, 1, r, density, 1, 0));
     }
