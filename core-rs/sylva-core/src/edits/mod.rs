@@ -34,7 +34,8 @@ pub struct EditReport {
 }
 
 impl EditReport {
-    fn resolved(op: &'static str) -> EditReport {
+    /// An edit that was applied.
+    pub fn resolved(op: &'static str) -> EditReport {
         EditReport { op, resolved: true, why: None }
     }
 }
@@ -54,33 +55,40 @@ pub fn apply(
     edits: &[Edit],
     markers: &mut Vec<glam::Vec3>,
 ) -> Result<Vec<EditReport>, SylvaError> {
-    let mut reports = Vec::with_capacity(edits.len());
-    for (i, e) in edits.iter().enumerate() {
-        let report = match e {
-            Edit::Paint(stroke) => {
-                let (seed, budget) = (skeleton.seed, skeleton.max_vertices);
-                let grown = paint::paint(skeleton, stroke, seed, i, budget)?;
-                markers.extend(grown.markers);
-                EditReport::resolved(e.op())
+    edits.iter().enumerate().map(|(i, e)| apply_one(skeleton, e, i, markers)).collect()
+}
+
+/// Apply `edit`, entry `index` of its list, to `skeleton`: one step of [`apply`], which applies
+/// the edits of a list one after another, each to the tree the ones before it left (so a
+/// session may resume from the tree after the first `k` edits).
+pub fn apply_one(
+    skeleton: &mut Skeleton,
+    edit: &Edit,
+    index: usize,
+    markers: &mut Vec<glam::Vec3>,
+) -> Result<EditReport, SylvaError> {
+    Ok(match edit {
+        Edit::Paint(stroke) => {
+            let (seed, budget) = (skeleton.seed, skeleton.max_vertices);
+            let grown = paint::paint(skeleton, stroke, seed, index, budget)?;
+            markers.extend(grown.markers);
+            EditReport::resolved(edit.op())
+        }
+        // Applied before the stems are built (`drawn_crown`).
+        Edit::Crown(_) => EditReport::resolved(edit.op()),
+        Edit::Cut(c) => match resolve::nearest(skeleton, c.at) {
+            Ok(hit) => {
+                cut::cut(skeleton, hit.stem, hit.t);
+                EditReport::resolved(edit.op())
             }
-            // Applied before the stems are built (`drawn_crown`).
-            Edit::Crown(_) => EditReport::resolved(e.op()),
-            Edit::Cut(c) => match resolve::nearest(skeleton, c.at) {
-                Ok(hit) => {
-                    cut::cut(skeleton, hit.stem, hit.t);
-                    EditReport::resolved(e.op())
-                }
-                Err(why) => EditReport { op: e.op(), resolved: false, why: Some(why) },
-            },
-            Edit::Bend(b) => match resolve::nearest(skeleton, b.at) {
-                Ok(hit) => {
-                    bend::bend(skeleton, hit.stem, hit.t, b.to, i)?;
-                    EditReport::resolved(e.op())
-                }
-                Err(why) => EditReport { op: e.op(), resolved: false, why: Some(why) },
-            },
-        };
-        reports.push(report);
-    }
-    Ok(reports)
+            Err(why) => EditReport { op: edit.op(), resolved: false, why: Some(why) },
+        },
+        Edit::Bend(b) => match resolve::nearest(skeleton, b.at) {
+            Ok(hit) => {
+                bend::bend(skeleton, hit.stem, hit.t, b.to, index)?;
+                EditReport::resolved(edit.op())
+            }
+            Err(why) => EditReport { op: edit.op(), resolved: false, why: Some(why) },
+        },
+    })
 }

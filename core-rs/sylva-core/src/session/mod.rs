@@ -43,8 +43,11 @@ use crate::meta::TreeMeta;
 use crate::params::{LeafParams, Stage, TreeParams};
 use crate::skeleton::Skeleton;
 
+mod edit_cache;
 mod stages;
-use stages::{build_skeleton, full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
+use edit_cache::EditCache;
+pub use edit_cache::Resume;
+use stages::{full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
 
 /// Mesh Quality factor of a preview bark (never below the parameter's minimum).
 pub const PREVIEW_QUALITY: f32 = 0.5;
@@ -196,6 +199,8 @@ pub struct Session {
     /// Time of the last full leaf generation (ms): a drag of the leaf's shape gets a preview
     /// leaf when it is over half the budget.
     last_leaf_ms: Option<f64>,
+    /// The skeleton stage's stems and hand edits, resumed where the last edit list left off.
+    edits: EditCache,
 }
 
 /// What the leaf stage reads: its parameters, the Petiole Length the leaves were placed with
@@ -225,6 +230,7 @@ impl Session {
         self.last_shade_ms = None;
         self.last_place_ms = None;
         self.last_leaf_ms = None;
+        self.edits.clear();
     }
 
     /// Brings the tree to `params`, rerunning from the first stage that changed. On an error
@@ -267,7 +273,7 @@ impl Session {
         let mut times = StageTimes::default();
 
         let t0 = clock.now_ms();
-        let skeleton = (from <= Stage::Skeleton).then(|| build_skeleton(&p.skeleton, progress)).transpose()?;
+        let skeleton = (from <= Stage::Skeleton).then(|| self.edits.build(&p.skeleton, progress)).transpose()?;
         let skel = skeleton.as_ref().or(prev.map(|c| &c.skeleton)).expect("a first update builds the skeleton");
         let t1 = clock.now_ms();
         times.skeleton = t1 - t0;
@@ -398,6 +404,13 @@ impl Session {
             self.last_leaf_ms = Some(clock.now_ms() - t);
         }
         Ok((Some(dressed), false))
+    }
+
+    /// Where the last update's skeleton stage resumed on the hand edit list (the stems built
+    /// again or not, how many edits were not applied again, a stroke extended): for tests and
+    /// the benchmarks.
+    pub fn skeleton_resume(&self) -> Resume {
+        self.edits.resume
     }
 
     /// The content hash of the current full tree (bark, then leaves; [`Generated::hash`]),

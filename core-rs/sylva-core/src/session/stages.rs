@@ -1,4 +1,4 @@
-//! The stages of a [`super::Session`] update: the skeleton, the full and the preview bark, the
+//! The stages of a [`super::Session`] update: the full and the preview bark, the
 //! preview leaf's parameters, and [`Fresh`], what one update ran, assembled into the next
 //! [`Current`].
 
@@ -6,11 +6,9 @@ use super::{Bark, Changes, Current, SkeletonOut, StageTimes, PREVIEW_QUALITY};
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
-use crate::generated::ENVELOPE_SAMPLES;
-use crate::growth;
 use crate::mesh::{self, TreeMesh};
-use crate::params::{GrowthMode, LeafParams, MeshParams, SkeletonParams, Stage, TreeParams};
-use crate::skeleton::{self, Skeleton};
+use crate::params::{LeafParams, MeshParams, Stage, TreeParams};
+use crate::skeleton::Skeleton;
 
 /// The stages an update ran; `None` = reuse the previous result.
 pub(super) struct Fresh {
@@ -82,25 +80,6 @@ pub(super) fn preview_leaf_params(p: &LeafParams) -> LeafParams {
 
 /// Smallest Texture Size level a preview leaf goes down to (16 texels).
 const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
-
-/// The skeleton stage: Weber & Penn stems or space-colonization growth, then the hand edits
-/// ([`crate::edits`]), and the envelope.
-pub(super) fn build_skeleton(
-    p: &SkeletonParams,
-    progress: Option<&mut dyn FnMut(f32)>,
-) -> Result<SkeletonOut, SylvaError> {
-    let crown = crate::edits::drawn_crown(&p.edits);
-    let (mut skeleton, mut markers) = match p.growth_mode {
-        GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
-        GrowthMode::SpaceColonization => {
-            let grown = growth::grow_with_crown(p, crown, progress)?;
-            (growth::skeleton(p, &grown), grown.markers)
-        }
-    };
-    let edits = crate::edits::apply(&mut skeleton, &p.edits, &mut markers)?;
-    let envelope = skeleton::preview_profile_with_crown(&skeleton, p, crown, ENVELOPE_SAMPLES);
-    Ok(SkeletonOut { skeleton, markers, envelope, edits })
-}
 
 /// The mesh stage at full quality: sweep and weld, then cut the holes.
 pub(super) fn full_bark(skeleton: &Skeleton, p: &MeshParams) -> Result<Bark, SylvaError> {

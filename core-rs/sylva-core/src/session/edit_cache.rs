@@ -1,0 +1,236 @@
+//! The skeleton stage of a [`super::Session`], incremental over the hand edit list: a stroke
+//! being drawn, a cut or a bend added, or the last edit undone does not rebuild the stems or
+//! replay the edits before it.
+//!
+//! The cache keeps the stems as built (before any edit, for the parameters other than the edit
+//! list and for the list's drawn crown, which shapes them) and the tree after the first `k`
+//! edits for the last list, for `k` = 0 and for the last few lengths ([`KEEP`]). An update
+//! resumes from the longest kept prefix its list shares with the last one and applies only the
+//! edits after it, each to the tree the ones before left ([`crate::edits::apply_one`], the same
+//! order and the same indices as [`crate::edits::apply`], so the result is the same tree).
+//! When the list differs from the last one only in its last edit, a paint stroke with the same
+//! brush whose points continue the last one's (a stroke being drawn), the growth of that stroke
+//! ([`PaintGrowth`]) is extended by the new brush points only: by the incremental rule of
+//! [`crate::edits::paint`] that ends exactly where growing the whole stroke does.
+
+use super::SkeletonOut;
+use crate::edits::paint::PaintGrowth;
+use crate::edits::{self, EditReport};
+use crate::error::SylvaError;
+use crate::generated::ENVELOPE_SAMPLES;
+use crate::growth;
+use crate::params::{Edit, GrowthMode, Paint, SkeletonParams};
+use crate::skeleton::{self, Skeleton};
+use glam::Vec3;
+
+/// How many prefixes of the edit list are kept besides the empty one: the tree before the last
+/// edit and after it, and a few more for undo.
+const KEEP: usize = 4;
+
+/// The tree after the first `edits` edits of the list.
+#[derive(Clone)]
+struct Prefix {
+    edits: usize,
+    skeleton: Skeleton,
+    markers: Vec<Vec3>,
+    reports: Vec<EditReport>,
+}
+
+/// The growth of the list's last edit, a stroke, from the tree before it.
+struct Stroke {
+    /// The prefix it grew from: the list's length minus one.
+    from: usize,
+    growth: PaintGrowth,
+    /// The stroke with its points so far.
+    paint: Paint,
+}
+
+/// Where the last skeleton stage resumed ([`super::Session::skeleton_resume`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Resume {
+    /// The stems were built again (new parameters or a new drawn crown).
+    pub rebuilt: bool,
+    /// How many edits at the start of the list were not applied again.
+    pub reused_edits: usize,
+    /// The stroke being drawn was extended by its new brush points (not grown again).
+    pub extended_stroke: bool,
+}
+
+/// See the module doc.
+#[derive(Default)]
+pub(super) struct EditCache {
+    /// Where the last build resumed.
+    pub(super) resume: Resume,
+    /// The parameters the stems were built with: the edit list reduced to its drawn crown.
+    base: Option<SkeletonParams>,
+    /// The last edit list.
+    edits: Vec<Edit>,
+    /// Kept prefixes of `edits`, shortest first; the first is always the empty one (`edits: 0`).
+    prefixes: Vec<Prefix>,
+    stroke: Option<Stroke>,
+}
+
+impl std::fmt::Debug for EditCache {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("EditCache")
+            .field("edits", &self.edits.len())
+            .field("prefixes", &self.prefixes.iter().map(|p| p.edits).collect::<Vec<_>>())
+            .field("stroke", &self.stroke.as_ref().map(|s| s.paint.points.len()))
+            .finish()
+    }
+}
+
+/// `p` with its edit list reduced to what shapes the stems as built: the drawn crown.
+fn base_params(p: &SkeletonParams) -> SkeletonParams {
+    let crown = edits::drawn_crown(&p.edits).cloned();
+    SkeletonParams { edits: crown.map(Edit::Crown).into_iter().collect(), ..p.clone() }
+}
+
+/// Whether stroke `new` continues stroke `old`: the same brush, and `old`'s points first.
+fn continues(old: &Paint, new: &Paint) -> bool {
+    let brush = |p: &Paint| (p.radius, p.density, p.segment, p.kill);
+    brush(old) == brush(new) && new.points.len() >= old.points.len() && new.points[..old.points.len()] == old.points[..]
+}
+
+/// The stems as built from `p` (before any edit but the drawn crown) and a grown tree's markers.
+fn build_stems(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<(Skeleton, Vec<Vec3>), SylvaError> {
+    let crown = edits::drawn_crown(&p.edits);
+    Ok(match p.growth_mode {
+        GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
+        GrowthMode::SpaceColonization => {
+            let grown = growth::grow_with_crown(p, crown, progress)?;
+            (growth::skeleton(p, &grown), grown.markers)
+        }
+    })
+}
+
+impl EditCache {
+    /// Forgets everything.
+    pub(super) fn clear(&mut self) {
+        let resume = self.resume;
+        *self = EditCache { resume, ..EditCache::default() };
+    }
+
+    /// The skeleton stage for `p` (see the module doc). On an error the cache forgets the last
+    /// list (keeping the stems as built) and the session keeps its previous tree.
+    pub(super) fn build(
+        &mut self,
+        p: &SkeletonParams,
+        progress: Option<&mut dyn FnMut(f32)>,
+    ) -> Result<SkeletonOut, SylvaError> {
+        let base = base_params(p);
+        let rebuilt = self.base.as_ref() != Some(&base);
+        if rebuilt {
+            self.clear();
+            let (skeleton, markers) = build_stems(p, progress)?;
+            self.base = Some(base);
+            self.prefixes = vec![Prefix { edits: 0, skeleton, markers, reports: Vec::new() }];
+        }
+        let result = self.apply(&p.edits);
+        self.resume.rebuilt = rebuilt;
+        if result.is_err() {
+            self.prefixes.truncate(1);
+            self.edits.clear();
+            self.stroke = None;
+        }
+        let (skeleton, markers, reports) = result?;
+        let crown = edits::drawn_crown(&p.edits);
+        let envelope = skeleton::preview_profile_with_crown(&skeleton, p, crown, ENVELOPE_SAMPLES);
+        Ok(SkeletonOut { skeleton, markers, envelope, edits: reports })
+    }
+
+    /// The tree after every edit of `list`, from the longest kept prefix it shares with the last
+    /// list (or the stroke being drawn, extended).
+    fn apply(&mut self, list: &[Edit]) -> Result<(Skeleton, Vec<Vec3>, Vec<EditReport>), SylvaError> {
+        let shared = self.edits.iter().zip(list).take_while(|(a, b)| a == b).count();
+        if let Some(out) = self.extend_stroke(list, shared)? {
+            return Ok(out);
+        }
+        // A new edit after the stroke drawn last: the tree after the stroke is its start.
+        if let Some(stroke) = self.stroke.take() {
+            if shared == self.edits.len() && stroke.from + 1 == shared {
+                self.keep_stroke(&stroke)?;
+            }
+        }
+        self.prefixes.retain(|q| q.edits <= shared);
+        let start = self.prefixes.last().expect("the empty prefix is always kept").clone();
+        let Prefix { mut skeleton, mut markers, mut reports, .. } = start;
+        self.resume = Resume { rebuilt: false, reused_edits: reports.len(), extended_stroke: false };
+        let n = list.len();
+        for (i, edit) in list.iter().enumerate().skip(reports.len()) {
+            if i + 1 == n {
+                if let Edit::Paint(paint) = edit {
+                    self.keep(i, &skeleton, &markers, &reports);
+                    let mut growth = PaintGrowth::new(&skeleton, paint, skeleton.seed, i, skeleton.max_vertices)?;
+                    growth.extend(&paint.points)?;
+                    growth.apply(&mut skeleton)?;
+                    markers.extend_from_slice(growth.markers());
+                    reports.push(EditReport::resolved(edit.op()));
+                    self.stroke = Some(Stroke { from: i, growth, paint: paint.clone() });
+                    break;
+                }
+            }
+            reports.push(edits::apply_one(&mut skeleton, edit, i, &mut markers)?);
+            // Keep the trees near the end of the list: the next update most likely continues it.
+            if i + 1 + KEEP > n {
+                self.keep(i + 1, &skeleton, &markers, &reports);
+            }
+        }
+        self.edits = list.to_vec();
+        Ok((skeleton, markers, reports))
+    }
+
+    /// The list's last edit continues the stroke being drawn: grow its new points from the
+    /// tree before it. `None` when it does not.
+    #[allow(clippy::type_complexity, reason = "the stage's three outputs, or none")]
+    fn extend_stroke(
+        &mut self,
+        list: &[Edit],
+        shared: usize,
+    ) -> Result<Option<(Skeleton, Vec<Vec3>, Vec<EditReport>)>, SylvaError> {
+        let Some(stroke) = self.stroke.as_mut() else { return Ok(None) };
+        let n = list.len();
+        let Some(Edit::Paint(paint)) = list.last() else { return Ok(None) };
+        if n != self.edits.len() || stroke.from + 1 != n || shared + 1 < n || !continues(&stroke.paint, paint) {
+            return Ok(None);
+        }
+        let Some(before) = self.prefixes.iter().find(|q| q.edits == stroke.from) else { return Ok(None) };
+        let (mut skeleton, mut markers, mut reports) =
+            (before.skeleton.clone(), before.markers.clone(), before.reports.clone());
+        stroke.growth.extend(&paint.points)?;
+        stroke.growth.apply(&mut skeleton)?;
+        stroke.paint.points.clone_from(&paint.points);
+        markers.extend_from_slice(stroke.growth.markers());
+        reports.push(EditReport::resolved(list[n - 1].op()));
+        self.edits = list.to_vec();
+        self.resume = Resume { rebuilt: false, reused_edits: n - 1, extended_stroke: true };
+        Ok(Some((skeleton, markers, reports)))
+    }
+
+    /// Keeps the tree after `stroke`, the last edit of the last list.
+    fn keep_stroke(&mut self, stroke: &Stroke) -> Result<(), SylvaError> {
+        let Some(before) = self.prefixes.iter().find(|q| q.edits == stroke.from) else { return Ok(()) };
+        let (mut skeleton, mut markers, mut reports) =
+            (before.skeleton.clone(), before.markers.clone(), before.reports.clone());
+        stroke.growth.apply(&mut skeleton)?;
+        markers.extend_from_slice(stroke.growth.markers());
+        reports.push(EditReport::resolved("paint"));
+        self.keep(stroke.from + 1, &skeleton, &markers, &reports);
+        Ok(())
+    }
+
+    /// Keeps the tree after the first `edits` edits (replacing one kept for as many), and at most
+    /// [`KEEP`] besides the empty one.
+    fn keep(&mut self, edits: usize, skeleton: &Skeleton, markers: &[Vec3], reports: &[EditReport]) {
+        if edits == 0 {
+            return;
+        }
+        self.prefixes.retain(|q| q.edits != edits);
+        let prefix = Prefix { edits, skeleton: skeleton.clone(), markers: markers.to_vec(), reports: reports.to_vec() };
+        let at = self.prefixes.partition_point(|q| q.edits < edits);
+        self.prefixes.insert(at, prefix);
+        while self.prefixes.len() > KEEP + 1 {
+            self.prefixes.remove(1);
+        }
+    }
+}
