@@ -12,7 +12,7 @@ export default [
   },
   // Its callbacks run in the page (Playwright's evaluate / waitForFunction).
   {
-    files: ['scripts/bench-browser.mjs', 'scripts/gallery/*.mjs'],
+    files: ['scripts/bench-browser.mjs', 'scripts/bench-edits.mjs', 'scripts/gallery/*.mjs'],
     languageOptions: { globals: { ...globals.browser } },
   },
 ];

@@ -8,11 +8,13 @@
 //     to the answer (preview or full) being in the scene (`sylva:applied`: buffers received,
 //     attributes set, ready for the next frame); after each drag, settle_ms = release to the
 //     full-quality tree in the scene; frame_ms = a frame's upload + draw (the GPU waited for),
-//     drawn after each drag and each release (no frames are drawn between the timed steps).
+//     drawn after each drag and each release (no frames are drawn between the timed steps);
+//   - paint and cut: the hand-edit tools (bench-edits.mjs).
 // Exports `benchBrowser()`; run directly it prints the result.
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { benchCut, benchPaint } from './bench-edits.mjs';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
 import { freePort, serve } from './preview-server.mjs';
 
@@ -278,11 +280,15 @@ export async function benchBrowser(runs = 7) {
   try {
     const first = await firstTree(browser, url, Math.max(3, Math.min(runs, 7)));
     const dragged = await drag(browser, url);
+    const paint = await benchPaint(browser, url);
+    const cut = await benchCut(browser, url);
     return {
       first_tree_ms: round(median(first.map((t) => t.drawn))),
       first_tree_in_scene_ms: round(median(first.map((t) => t.inScene))),
       first_shadowed_ms: round(median(first.map((t) => t.shadowed))),
       drag: dragged,
+      paint,
+      cut,
     };
   } finally {
     await browser.close();

@@ -156,7 +156,8 @@ if (typeof wasm.Session === 'function') {
   session.free();
 }
 
-// The app in the browser: first tree, and drags of the studio's sliders (bench-browser.mjs).
+// The app in the browser: first tree, drags of the studio's sliders, a paint stroke and cuts
+// (bench-browser.mjs, bench-edits.mjs).
 execFileSync('npm', ['run', 'build', '-w', 'web'], { cwd: root, stdio: 'ignore' });
 const browser = await benchBrowser(runs);
 // With --json everything goes into this one object, printed at the end.
@@ -185,6 +186,11 @@ if (!asJson) {
         `  per control: ${Object.entries(d.per_param)
           .map(([k, v]) => `${k} ${v}`)
           .join(', ')}`,
+    );
+    const { paint, cut } = browser;
+    console.log(
+      `Paint (a ${paint.steps}-point stroke, per move, input to answer in the scene): median ${paint.median_ms} ms, p95 ${paint.p95_ms} ms; settle ${paint.settle_ms} ms.\n` +
+        `Cut (${cut.cuts} clicks on main branches, release to answer): median ${cut.median_ms} ms, p95 ${cut.p95_ms} ms; settle ${cut.settle_ms} ms.`,
     );
   } else {
     console.log('Browser: skipped (no Chromium at /usr/bin/chromium or $SYLVA_CHROMIUM).');

@@ -50,6 +50,8 @@ export interface SylvaDebugHook {
   edits(): {
     tool: string | null;
     dragging: boolean;
+    /** Brush points of the paint stroke being drawn (0 without one). */
+    strokePoints: number;
     count: number;
     bounds: { min: number[]; max: number[] } | null;
   };

@@ -116,7 +116,8 @@ function useToolsInViewer(
       commit: (edit) => {
         const list = appendEdit(start(), edit);
         base = null;
-        latest.current.editor.change({ edits: list, key: null });
+        // Interactive: a cut answers with a quick preview; the release settles to the full tree.
+        latest.current.editor.change({ edits: list, key: null }, true);
       },
       cancel: () => {
         if (base !== null) latest.current.editor.change({ edits: base, key: null });
@@ -134,6 +135,7 @@ function useToolsInViewer(
       edits: () => ({
         tool: tools.active,
         dragging: tools.dragging,
+        strokePoints: tools.strokePoints,
         count: latest.current.editor.editsRef.current?.length ?? 0,
         bounds,
       }),

@@ -3,7 +3,7 @@
  * the tree: **Paint** lays brush points along a drag (the tree's surface under the cursor, else
  * the plane through the trunk axis facing the camera), **Crown** draws a closed outline from the
  * side, **Cut** clicks a branch, **Bend** drags a point of a branch. A drag reports its edit so
- * far at most once per frame (`draft`, an interactive request) and the whole edit on release
+ * far on each move, at most about once per frame (`draft`, an interactive request) and the whole edit on release
  * (`commit`, one undo step); Escape cancels it. The orbit is off while a tool drags. A ring shows
  * the brush (Paint) or the point a click would take (Cut, Bend). The math is in `editMath.ts`.
  */
@@ -45,7 +45,11 @@ export interface Brush {
 export interface EditToolEvents {
   /** The edit being drawn, so far (shown with an interactive request). */
   draft(edit: Edit): void;
-  /** The finished edit (recorded as one step). */
+  /**
+   * The finished edit (recorded as one step), made by a pointer release: it is requested as a
+   * drag's last step (a quick answer may come first), and the release's `pointerup` reaching the
+   * window then asks for the full tree, as the release of a slider does.
+   */
   commit(edit: Edit): void;
   /** The drag was cancelled (Escape, or it made no edit): show the list as it was. */
   cancel(): void;
@@ -64,6 +68,9 @@ type Drag =
   | { tool: 'bend'; at: Vector3; to: Vector3 }
   | { tool: 'cut'; at: Vector3; x: number; y: number };
 
+/** Shortest time between two pointer moves handled at once (ms): about half a frame. */
+const MIN_STEP_MS = 8;
+
 /** See the module comment. */
 export class HandEditTools {
   private tool: EditTool | null = null;
@@ -73,6 +80,8 @@ export class HandEditTools {
   /** The newest pointer position not handled yet (handled once per frame). */
   private pending: { x: number; y: number } | null = null;
   private frame = 0;
+  /** When a pointer position was last handled (ms). */
+  private lastStep = -Infinity;
   private readonly raycaster = new Raycaster();
   private readonly ring = new Mesh(
     new RingGeometry(0.92, 1, 48),
@@ -139,6 +148,11 @@ export class HandEditTools {
   /** Whether a drag is in progress (for tests). */
   get dragging(): boolean {
     return this.drag !== null;
+  }
+
+  /** Brush points of the paint stroke being drawn (0 without one; debug hook). */
+  get strokePoints(): number {
+    return this.drag?.tool === 'paint' ? this.drag.points.length : 0;
   }
 
   /** The bark point under client pixel `(x, y)`, or null (debug hook). */
@@ -223,12 +237,18 @@ export class HandEditTools {
     if (!this.tool) return;
     if (this.drag && this.pointerId !== null && event.pointerId !== this.pointerId) return;
     this.pending = { x: event.clientX, y: event.clientY };
-    if (this.frame === 0) {
-      this.frame = requestAnimationFrame(() => {
-        this.frame = 0;
-        this.step();
-      });
+    if (this.frame !== 0) return;
+    // Browsers deliver a mouse's moves about once per frame: one is handled at once, so a
+    // stroke answers without waiting for the next frame; moves closer together than
+    // MIN_STEP_MS (a fast pen) wait for the next frame, and only the newest one counts.
+    if (performance.now() - this.lastStep >= MIN_STEP_MS) {
+      this.step();
+      return;
     }
+    this.frame = requestAnimationFrame(() => {
+      this.frame = 0;
+      this.step();
+    });
   }
 
   private up(event: PointerEvent): void {
@@ -251,6 +271,7 @@ export class HandEditTools {
 
   /** Handles the newest pointer position: the ring, or the next step of the drag. */
   private step(): void {
+    this.lastStep = performance.now();
     const at = this.pending;
     this.pending = null;
     if (!at || !this.tool) return;

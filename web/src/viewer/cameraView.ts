@@ -15,6 +15,9 @@ export function lookFrom(
   host.camera.position.set(...from);
   host.orbit.target.set(...to);
   host.orbit.update();
+  // Picking and projecting read the camera's world matrices, which a frame updates: a paused
+  // viewer (a benchmark) draws none, so bring them up to date now.
+  host.camera.updateMatrixWorld();
   host.requestRender();
 }
 
