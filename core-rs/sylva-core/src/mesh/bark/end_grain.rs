@@ -316,5 +316,22 @@ pub fn bake(kind: BarkType, size: usize) -> EndGrainMaps {
     EndGrainMaps { color: Texture { size, rgba: color }, normal: Texture { size, rgba: normal } }
 }
 
+impl EndGrainMaps {
+    /// Both maps in one buffer, what the wasm binding's `end_grain_maps` returns: with
+    /// `s = size` and `n = 4 s²`,
+    ///
+    /// * bytes `0 .. n`: the colour map, `s` rows of `s` texels, row 0 at `v = 0` (the bottom of
+    ///   the disc), texel `(i, j)` at byte `4 (j s + i)`: R, G, B the sRGB colour, A the disc
+    ///   mask (255 inside the disc `ρ ≤ 1`, 0 outside);
+    /// * bytes `n .. 2n`: the normal map in the same order: R, G, B the tangent-space normal
+    ///   (`x, y, z` each as `(c * 0.5 + 0.5) * 255`, `x` along `u`, `y` along `v`, `z` out of the
+    ///   face), A the height (0 the bottom of a check, 255 the highest wood).
+    ///
+    /// The length is `8 s²`, so `s = √(len / 8)`.
+    pub fn to_bytes(&self) -> Vec<u8> {
+        [&self.color.rgba[..], &self.normal.rgba[..]].concat()
+    }
+}
+
 #[cfg(test)]
 mod tests;

@@ -171,3 +171,11 @@ fn bark_types_have_their_own_wood() {
     let red = |k| mean(k, 0) / mean(k, 2);
     assert!(red(BarkType::Plated) > 1.2 * red(BarkType::SmoothBanded));
 }
+
+#[test]
+fn bytes_are_colour_then_normal() {
+    let m = bake(BarkType::Fibrous, 32);
+    let b = m.to_bytes();
+    assert_eq!(b.len(), 8 * 32 * 32);
+    assert_eq!((&b[..4 * 32 * 32], &b[4 * 32 * 32..]), (&m.color.rgba[..], &m.normal.rgba[..]));
+}
