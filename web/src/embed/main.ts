@@ -54,7 +54,13 @@ function start(): void {
     const messages = fatal
       ? options.messages
       : [...options.messages, ...decoded.messages, ...volumes.messages, ...edits.messages];
-    return { params: decoded.params, volumes: volumes.volumes, edits: edits.edits, messages, fatal };
+    return {
+      params: decoded.params,
+      volumes: volumes.volumes,
+      edits: edits.edits,
+      messages,
+      fatal,
+    };
   });
   window.__sylvaEmbed = {
     state: () => embed.current,
