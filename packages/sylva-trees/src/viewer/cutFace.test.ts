@@ -94,7 +94,11 @@ describe('cut face material', () => {
     expect(map.colorSpace).toBe(SRGBColorSpace);
     expect(normal.colorSpace).toBe(NoColorSpace);
     for (const t of [map, normal]) {
-      expect([t.wrapS, t.wrapT, t.flipY]).toEqual([ClampToEdgeWrapping, ClampToEdgeWrapping, false]);
+      expect([t.wrapS, t.wrapT, t.flipY]).toEqual([
+        ClampToEdgeWrapping,
+        ClampToEdgeWrapping,
+        false,
+      ]);
     }
     expect(material.color.getHexString()).toBe('ffffff');
     expect([textures.kind, textures.size]).toEqual([3, 16]);
