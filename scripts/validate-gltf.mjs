@@ -7,10 +7,14 @@
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
 //
+// Also the default tree with a main branch cut (`--edits`, [`CUT`]): its GLB has the third
+// material, `cut_face` (the end grain).
+//
 // Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
-// `to_glb_file`) write the same bytes as the native one (default tree, both leaf modes).
+// `to_glb_file`) write the same bytes as the native one (default tree, with and without the cut,
+// both leaf modes).
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { validateBytes } from 'gltf-validator';
@@ -28,14 +32,24 @@ const presets = JSON.parse(
   .map((p) => p.name)
   .filter((n) => only.length === 0 || only.includes(n));
 
+/** A cut on a main branch of the default tree, 0.6 m out from the trunk (docs/formats.md). */
+const CUT = { op: 'cut', at: [-0.19, 5.94, 0.59] };
+const editsFile = join(dir, 'cut-edits.json');
+writeFileSync(editsFile, JSON.stringify({ version: 1, edits: [CUT] }));
+/** `[label, CLI arguments]` of every tree exported. */
+const trees = presets.map((name) => [name, ['--preset', name]]);
+if (only.length === 0 || only.includes('default')) {
+  trees.push(['default + cut', ['--edits', editsFile]]);
+}
+
 let failed = 0;
 let warnings = 0;
 const mb = (n) => (n / 1e6).toFixed(1).padStart(6);
 console.log('preset              leaves      size MB  errors warnings infos');
-for (const name of presets) {
+for (const [name, treeArgs] of trees) {
   for (const leaves of ['instanced', 'baked']) {
-    const file = join(dir, `${name}-${leaves}.glb`);
-    execFileSync(sylva, ['generate', '--preset', name, '--leaves', leaves, '--out', file], {
+    const file = join(dir, `${name.replace(/\W+/g, '-')}-${leaves}.glb`);
+    execFileSync(sylva, ['generate', ...treeArgs, '--leaves', leaves, '--out', file], {
       stdio: 'ignore',
     });
     const bytes = new Uint8Array(readFileSync(file));
@@ -43,6 +57,12 @@ for (const name of presets) {
     const report = await validateBytes(bytes, { maxIssues: 100 });
     const { numErrors, numWarnings, numInfos } = report.issues;
     if (numErrors > 0 || numWarnings > 0) failed++;
+    // The cut tree's third material: the cut faces' end grain.
+    const materials = report.info?.materialCount;
+    if (treeArgs.includes('--edits') && materials !== 3) {
+      failed++;
+      console.log(`    ${name}: ${materials} materials, expected 3 (bark, leaves, cut_face)`);
+    }
     warnings += numWarnings;
     console.log(
       `${name.padEnd(19)} ${leaves.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
@@ -56,7 +76,6 @@ for (const name of presets) {
     }
   }
 }
-if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 
 // Native and wasm exporters write identical bytes (standing rule: same output on every target).
 const glue = new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url);
@@ -67,35 +86,43 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
       new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
     ),
   });
-  const tree = wasm.generate('{}');
-  if (typeof tree.to_glb !== 'function') {
-    console.log('wasm parity: skipped (the wasm build predates to_glb; run scripts/setup.sh)');
-  } else {
-    for (const leaves of ['instanced', 'baked']) {
-      const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
-      execFileSync(sylva, ['generate', '--leaves', leaves, '--out', file], { stdio: 'ignore' });
-      const native = readFileSync(file);
-      rmSync(file);
-      const fromWasm = tree.to_glb(JSON.stringify({ leaves }));
-      let same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
-      // `to_glb_file` (the bytes read in place from the module's memory) writes the same file.
-      if (typeof tree.to_glb_file === 'function') {
-        const file = tree.to_glb_file(JSON.stringify({ leaves }));
-        same &&=
-          Buffer.compare(
-            native,
-            Buffer.from(file.memory().buffer, file.ptr(), file.byte_length()),
-          ) === 0;
-        file.free();
+  for (const [label, input, cliArgs] of [
+    ['default', {}, []],
+    ['default + cut', { edits: [CUT] }, ['--edits', editsFile]],
+  ]) {
+    const tree = wasm.generate(JSON.stringify(input));
+    if (typeof tree.to_glb !== 'function') {
+      console.log('wasm parity: skipped (the wasm build predates to_glb; run scripts/setup.sh)');
+    } else {
+      for (const leaves of ['instanced', 'baked']) {
+        const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
+        execFileSync(sylva, ['generate', ...cliArgs, '--leaves', leaves, '--out', file], {
+          stdio: 'ignore',
+        });
+        const native = readFileSync(file);
+        rmSync(file);
+        const fromWasm = tree.to_glb(JSON.stringify({ leaves }));
+        let same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
+        // `to_glb_file` (the bytes read in place from the module's memory) writes the same file.
+        if (typeof tree.to_glb_file === 'function') {
+          const file = tree.to_glb_file(JSON.stringify({ leaves }));
+          same &&=
+            Buffer.compare(
+              native,
+              Buffer.from(file.memory().buffer, file.ptr(), file.byte_length()),
+            ) === 0;
+          file.free();
+        }
+        if (!same) failed++;
+        console.log(
+          `wasm parity (${label}, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`,
+        );
       }
-      if (!same) failed++;
-      console.log(
-        `wasm parity (default, ${leaves}): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${fromWasm.length} bytes)`,
-      );
     }
+    tree.free();
   }
-  tree.free();
 }
+if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 
-console.log(`${presets.length * 2} files, ${failed} failed, ${warnings} warnings`);
+console.log(`${trees.length * 2} files, ${failed} failed, ${warnings} warnings`);
 process.exit(failed ? 1 : 0);

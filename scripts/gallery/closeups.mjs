@@ -1,6 +1,7 @@
 // Gallery section: close-ups at the distance a user inspects a tree from: the four bark types on
-// species trunks, a shifted fork, a branch collar, tree holes (the issue's and the default size)
-// and a leaf cluster. Camera positions come from the native CLI's reports of the same trees.
+// species trunks, a shifted fork, a branch collar, tree holes (the issue's and the default size),
+// a leaf cluster, conifer needles and a cut branch's stump (end grain in its bark rim, opened from
+// a share link's `e=`). Camera positions come from the native CLI's reports of the same trees.
 import { imageTable } from './context.mjs';
 
 const BARKS = [
@@ -16,7 +17,7 @@ export const closeupsSection = {
   id: 'closeups',
   title: 'Close-ups',
   intro:
-    'Bark types on species trunks at about a metre, a fork, a branch collar, tree holes and a leaf cluster, as a user sees them up close.',
+    'Bark types on species trunks at about a metre, a fork, a branch collar, tree holes, a leaf cluster, conifer needles and the stump of a cut branch, as a user sees them up close.',
   layout: (shots) => imageTable(shots, 2),
   async shots(ctx) {
     const shots = [];
@@ -94,6 +95,17 @@ export const closeupsSection = {
     const low = [ft[0], 0.55 * ft[1], ft[2]];
     await ctx.view(add(low, add(fp, ft, -1), 0.16), add(low, add(fp, ft, -1), 0.06));
     await shot('needles.png', 'Fir shoots from just outside the crown: needles in two flat ranks');
+    // A main branch of the default tree cut 0.6 m out from the trunk (a share link's `e=`): the
+    // stump's end grain inside its bark rim, up close and from a step back. The point lies on a
+    // level-1 stem 15 % of its length out; the camera looks down the stem at the face.
+    const cut = [-0.19, 5.94, 0.59];
+    const along = [-0.328, 0.236, 0.915];
+    const edits = `1~c${cut.map((x) => Math.round(x * 100)).join('.')}`;
+    await ctx.open({}, edits);
+    await ctx.view(add(add(cut, along, 0.2), [0.05, 0.06, 0]), add(cut, along, -0.02));
+    await shot('cut-stump.png', 'A cut main branch of the default tree: end grain in a bark rim');
+    await ctx.view(add(add(cut, along, 1.2), [0.3, 0.4, 0]), cut);
+    await shot('cut-stump-far.png', 'The same cut from a step back');
     return shots;
   },
 };

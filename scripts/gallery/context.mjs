@@ -11,11 +11,15 @@ export const HEIGHT = 360;
 /** Colours of the palette PNGs. */
 const COLOURS = 256;
 
-/** The embed page's query for parameter values `{id: number}`. */
-export function query(values) {
+/**
+ * The embed page's query for parameter values `{id: number}` and, when given, a share link's hand
+ * edits (`e=`, docs/formats.md "Hand edits").
+ */
+export function query(values, edits) {
   const pairs = Object.entries(values).map(([k, v]) => `${k}=${encodeURIComponent(v)}`);
+  const e = edits ? [`e=${edits}`] : [];
   // aa=1: antialiased like a GPU's canvas (software WebGL draws without MSAA otherwise).
-  return ['v=1', ...pairs, 'wind=0', 'aa=1'].join('&');
+  return ['v=1', ...pairs, ...e, 'wind=0', 'aa=1'].join('&');
 }
 
 /** Sets up the shared page and helpers. */
@@ -40,9 +44,12 @@ export async function galleryContext(browser, url, outDir, options = {}) {
     presets,
     /** The native CLI's `--report skeleton|mesh` of a tree. */
     report,
-    /** Opens a tree and waits until it is drawn; returns the camera the embed framed it with. */
-    async open(values) {
-      await page.goto(`${url}embed.html?${query(values)}`);
+    /**
+     * Opens a tree (with the hand edits `edits`, a link's `e=` value, if given) and waits until it
+     * is drawn; returns the camera the embed framed it with.
+     */
+    async open(values, edits) {
+      await page.goto(`${url}embed.html?${query(values, edits)}`);
       await page.waitForFunction(() => document.body.dataset.status === 'ready', null, {
         timeout: 180_000,
       });

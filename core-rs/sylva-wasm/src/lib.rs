@@ -81,6 +81,14 @@ pub fn bark_maps(kind: u32, size: usize) -> Vec<u8> {
     [m.color.rgba, m.normal.rgba, m.orm.rgba].concat()
 }
 
+/// The procedural end grain of bark type `kind` for the faces of cut stems, `size`² texels per
+/// map: the colour map then the normal map (layout:
+/// `sylva_core::mesh::bark::end_grain::EndGrainMaps::to_bytes`).
+#[wasm_bindgen]
+pub fn end_grain_maps(kind: u32, size: usize) -> Vec<u8> {
+    bark::end_grain::bake(BarkType::from_index(kind as usize), size.clamp(16, 1024)).to_bytes()
+}
+
 /// How bark type `kind` is laid on a stem (`sylva_core::mesh::bark::BarkStyle`) as JSON.
 #[wasm_bindgen]
 pub fn bark_style_json(kind: u32) -> String {

@@ -4,7 +4,7 @@
  * and a status line (loading, errors) drawn as text over the view. No React.
  */
 import { describeError } from '../core/describeError';
-import type { Params, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import { TreeViewer } from '../viewer/TreeViewer';
 import { GenerationScheduler, type GeneratorFactory, type ReadyInfo } from 'sylva-trees/worker';
 import type { Background } from './options';
@@ -13,6 +13,8 @@ import type { Background } from './options';
 export interface TreeSource {
   params: Params;
   volumes: VolumePrimitive[];
+  /** The hand edits (a share link's `e=`; absent or empty: none). */
+  edits?: Edit[];
   /** Ignored values, shown as notices over the tree. */
   messages: string[];
   /** Shown as an error instead of a tree. */
@@ -167,7 +169,8 @@ export class TreeEmbed {
       this.setState({ status: 'error', message: source.fatal, messages: source.messages });
       return;
     }
-    this.latestId = this.scheduler.request(source.params, source.volumes);
+    const edits = source.edits?.length ? { edits: source.edits } : {};
+    this.latestId = this.scheduler.request(source.params, source.volumes, edits);
     this.setState({ status: 'loading' });
   }
 

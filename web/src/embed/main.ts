@@ -3,7 +3,7 @@
  * link with orbit controls and an "Open in Sylva" link; errors are shown in the frame.
  */
 import { createModuleWorker } from '../createWorker';
-import { decodeQuery, decodeVolumes, VOLUMES_KEY } from 'sylva-trees/url';
+import { decodeEdits, decodeQuery, decodeVolumes, EDITS_KEY, VOLUMES_KEY } from 'sylva-trees/url';
 import { fatalQueryProblem, openInSylvaUrl, parseEmbedOptions } from './options';
 import { TreeEmbed, type EmbedState } from './TreeEmbed';
 import { cameraOf, lookFrom } from '../viewer/cameraView';
@@ -48,11 +48,19 @@ function start(): void {
     const fatal = fatalQueryProblem(search);
     const decoded = decodeQuery(registry, search);
     const volumes = decodeVolumes(new URLSearchParams(search).get(VOLUMES_KEY));
+    // The hand edits of the link (`e=`), as the studio reads them.
+    const edits = decodeEdits(new URLSearchParams(search).get(EDITS_KEY));
     // A fatal problem says it all (the codec would add "loaded the defaults").
     const messages = fatal
       ? options.messages
-      : [...options.messages, ...decoded.messages, ...volumes.messages];
-    return { params: decoded.params, volumes: volumes.volumes, messages, fatal };
+      : [...options.messages, ...decoded.messages, ...volumes.messages, ...edits.messages];
+    return {
+      params: decoded.params,
+      volumes: volumes.volumes,
+      edits: edits.edits,
+      messages,
+      fatal,
+    };
   });
   window.__sylvaEmbed = {
     state: () => embed.current,

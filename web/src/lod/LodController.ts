@@ -261,15 +261,18 @@ export class LodController {
     const level = lods.levels[l];
     if (!level) return false;
     const group = new Group();
+    // The viewer's materials with the level's groups (its cut faces show their end grain).
     const barkMaterial =
       this.baseMaterial('bark') ??
       this.own(new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 }));
-    const bark = barkMesh(level, barkMaterial);
+    const bark = barkMesh(level, barkMaterial, lods.meta.levels[l]?.groups);
     this.owned.push(bark.geometry);
     bark.castShadow = true;
     bark.receiveShadow = true;
     group.add(bark);
-    const leafMaterial = this.baseMaterial('leaves') ?? this.own(this.fallbackLeafMaterial());
+    const base = this.baseMaterial('leaves');
+    const leafMaterial =
+      (Array.isArray(base) ? base[0] : base) ?? this.own(this.fallbackLeafMaterial());
     const leaves = leafMesh(level, leafMaterial);
     if (leaves) {
       this.owned.push(leaves.geometry, leaves);
@@ -313,8 +316,11 @@ export class LodController {
     return material;
   }
 
-  /** The viewer's own bark or leaf material, so the levels look like LOD0 (and follow it). */
-  private baseMaterial(kind: 'bark' | 'leaves'): Material | null {
+  /**
+   * The viewer's own leaf material, or its bark mesh's materials (the whole array: bark, leaves,
+   * cut face), so the levels look like LOD0 (and follow it).
+   */
+  private baseMaterial(kind: 'bark' | 'leaves'): Material | Material[] | null {
     for (const o of this.base) {
       const m = (o as Mesh).material;
       // Pulled leaves (leafPull.ts) hand over the same look for an InstancedMesh.
@@ -325,10 +331,7 @@ export class LodController {
       }
       const isLeaves = (o as InstancedMesh).isInstancedMesh === true;
       if (kind === 'leaves' && isLeaves && m && !Array.isArray(m)) return m;
-      if (kind === 'bark' && !isLeaves) {
-        const first = Array.isArray(m) ? m[0] : m;
-        if (first) return first;
-      }
+      if (kind === 'bark' && !isLeaves && (Array.isArray(m) ? m.length > 0 : m)) return m;
     }
     return null;
   }

@@ -19,10 +19,11 @@ import {
   type Material,
   type Texture,
 } from 'three';
-import type { LeafTextureBuffers } from 'sylva-trees/core';
+import type { LeafTextureBuffers, MeshGroup } from 'sylva-trees/core';
 import {
   attachBarkAttributes,
   LEAF_TRANSLUCENCY,
+  MATERIAL_INDEX,
   srgbTexture,
   wrapInstances,
 } from 'sylva-trees/viewer';
@@ -335,7 +336,20 @@ export function color(css: string): Color {
   return new Color(css);
 }
 
-/** Bark mesh of a level with `material`. */
-export function barkMesh(level: LodLevelBuffers, material: Material): Mesh {
-  return new Mesh(barkGeometry(level), material);
+/**
+ * Bark mesh of a level. With the viewer's material array ([bark, leaves, cut face]) the level's
+ * `groups` pick each range's material as LOD0's do (`MATERIAL_INDEX`: a cut stem's face shows its
+ * end grain); with one material, a shorter array or no groups, the whole mesh draws with the (first) one.
+ */
+export function barkMesh(
+  level: LodLevelBuffers,
+  material: Material | Material[],
+  groups: readonly MeshGroup[] = [],
+): Mesh {
+  const geometry = barkGeometry(level);
+  if (!Array.isArray(material)) return new Mesh(geometry, material);
+  const slots = Math.max(...Object.values(MATERIAL_INDEX)) + 1;
+  if (groups.length === 0 || material.length < slots) return new Mesh(geometry, material[0]);
+  for (const g of groups) geometry.addGroup(g.start, g.count, MATERIAL_INDEX[g.material]);
+  return new Mesh(geometry, material);
 }

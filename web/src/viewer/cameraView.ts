@@ -5,13 +5,22 @@
 import type { PerspectiveCamera, WebGLRenderer } from 'three';
 import type { OverlayHost } from './overlayHost';
 
-/** Camera at `from`, orbiting `to` (metres, Y up); lets the orbit come as close as 5 cm. */
+/**
+ * Camera at `from`, orbiting `to` (metres, Y up); lets the orbit come as close as 5 cm, and pulls
+ * the near plane in to a tenth of the distance when it lies farther (the tree's framing puts it at
+ * a hundredth of a whole-tree view, 31 cm for the default tree, which clipped a close-up).
+ */
 export function lookFrom(
   host: OverlayHost,
   from: [number, number, number],
   to: [number, number, number],
 ): void {
   host.orbit.minDistance = Math.min(host.orbit.minDistance, 0.05);
+  const distance = Math.hypot(from[0] - to[0], from[1] - to[1], from[2] - to[2]);
+  if (distance > 0 && host.camera.near > distance / 10) {
+    host.camera.near = distance / 10;
+    host.camera.updateProjectionMatrix();
+  }
   host.camera.position.set(...from);
   host.orbit.target.set(...to);
   host.orbit.update();

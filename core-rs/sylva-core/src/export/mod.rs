@@ -36,7 +36,7 @@ pub use options::{ExportOptions, LeafMode};
 pub use tint::{bark_colors, bark_colors_into, TINT_STEPS};
 
 pub use frames::{frames_of_snorm8_write, frames_snorm8_write, mesh_tangents, normals_snorm8_write, tangents};
-pub use textures::{bark_pngs, leaf_pngs, TexturePngs};
+pub use textures::{bark_pngs, end_grain_pngs, leaf_pngs, TexturePngs};
 
 use crate::Generated;
 

@@ -11,13 +11,15 @@
 //!   deterministic and reads back to the same floats.
 //! * `NAME.mtl`: materials `bark` and `leaves`, `Kd` (white when textured, the plain colour
 //!   otherwise), `Ks 0 0 0`, `map_Kd NAME_bark_color.png`, `norm NAME_bark_normal.png`, and the
-//!   same for the leaves (the leaf colour PNG has the alpha that cuts the blade outline).
+//!   same for the leaves (the leaf colour PNG has the alpha that cuts the blade outline). A tree
+//!   with a cut stem also gets `cut_face` (the end grain of [`crate::mesh::bark::end_grain`],
+//!   `NAME_cut_face_color.png` and `NAME_cut_face_normal.png`), used by the faces of its cuts.
 //! * The PNG files ([`textures`]): OBJ puts `vt` 0 at the **bottom** of an image (OpenGL), so the
 //!   baked textures (row 0 = `v` 0) are written with their rows reversed and the UVs stay as
 //!   they are; the normal maps then follow the OpenGL (+Y up) convention.
 
 use super::{ExportOptions, LeafMode};
-use crate::mesh::TreeMesh;
+use crate::mesh::{Material, TreeMesh};
 use crate::Generated;
 use std::fmt::Write;
 
@@ -38,13 +40,20 @@ pub fn write(g: &Generated, opts: &ExportOptions, name: &str) -> ObjFiles {
     ObjFiles { obj: obj(g, opts, name), mtl: mtl(g, opts, name), textures: textures(g, opts, name) }
 }
 
+/// Whether the bark has cut faces (a cut stem): then the `cut_face` material and its textures.
+fn has_cut(g: &Generated) -> bool {
+    g.mesh.groups.iter().any(|gr| gr.material == Material::CutFace && gr.count > 0)
+}
+
 fn has_leaves(g: &Generated, opts: &ExportOptions) -> bool {
     opts.leaves != LeafMode::None && g.foliage.count() > 0 && !g.foliage.mesh.indices.is_empty()
 }
 
-/// The texture file names the MTL uses: `(bark color, bark normal, leaf color, leaf normal)`.
-fn texture_names_all(name: &str) -> [String; 4] {
-    ["bark_color", "bark_normal", "leaf_color", "leaf_normal"].map(|k| format!("{name}_{k}.png"))
+/// The texture file names the MTL uses: `(bark color, bark normal, leaf color, leaf normal,
+/// cut face color, cut face normal)`.
+fn texture_names_all(name: &str) -> [String; 6] {
+    ["bark_color", "bark_normal", "leaf_color", "leaf_normal", "cut_face_color", "cut_face_normal"]
+        .map(|k| format!("{name}_{k}.png"))
 }
 
 /// The `.obj` text.
@@ -88,8 +97,7 @@ fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first
         let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
     }
     for g in m.groups.iter().filter(|g| g.count > 0) {
-        // Cut faces use the bark's material until the exporters bake an end-grain one.
-        let mat = if g.material == crate::mesh::Material::Leaves { "leaves" } else { "bark" };
+        let mat = g.material.name();
         let _ = writeln!(s, "usemtl {mat}");
         for t in m.indices[g.start as usize..(g.start + g.count) as usize].chunks_exact(3) {
             let (a, b, c) = (u64::from(t[0]) + first, u64::from(t[1]) + first, u64::from(t[2]) + first);
@@ -101,7 +109,7 @@ fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first
 
 /// The `.mtl` text (materials `bark` and `leaves`).
 pub fn mtl(g: &Generated, opts: &ExportOptions, name: &str) -> String {
-    let [bc, bn, lc, ln] = texture_names_all(name);
+    let [bc, bn, lc, ln, cc, cn] = texture_names_all(name);
     let mut s = format!("# Sylva {} materials\n", crate::VERSION);
     let normals = opts.textures && opts.normal_maps;
     // Plain colours (sRGB) when untextured: the viewer's bark #5b3d26 and the leaf blade green.
@@ -125,6 +133,18 @@ pub fn mtl(g: &Generated, opts: &ExportOptions, name: &str) -> String {
             }
         }
     }
+    if has_cut(g) {
+        // Plain: the viewer's cut-face wood #c8a57a.
+        s.push_str("\nnewmtl cut_face\n");
+        s.push_str(if opts.textures { "Kd 1 1 1\n" } else { "Kd 0.784 0.647 0.478\n" });
+        s.push_str("Ks 0 0 0\nNs 8\nd 1\nillum 2\n");
+        if opts.textures {
+            let _ = writeln!(s, "map_Kd {cc}");
+            if normals {
+                let _ = writeln!(s, "norm {cn}");
+            }
+        }
+    }
     s
 }
 
@@ -135,6 +155,8 @@ enum Tex {
     BarkNormal,
     LeafColor,
     LeafNormal,
+    CutFaceColor,
+    CutFaceNormal,
 }
 
 fn texture_plan(g: &Generated, opts: &ExportOptions) -> Vec<Tex> {
@@ -152,12 +174,18 @@ fn texture_plan(g: &Generated, opts: &ExportOptions) -> Vec<Tex> {
             plan.push(Tex::LeafNormal);
         }
     }
+    if has_cut(g) {
+        plan.push(Tex::CutFaceColor);
+        if opts.normal_maps {
+            plan.push(Tex::CutFaceNormal);
+        }
+    }
     plan
 }
 
 /// The names of the PNG files the MTL refers to, in the order of [`texture_png`]'s indices.
 pub fn texture_names(g: &Generated, opts: &ExportOptions, name: &str) -> Vec<String> {
-    let [bc, bn, lc, ln] = texture_names_all(name);
+    let [bc, bn, lc, ln, cc, cn] = texture_names_all(name);
     texture_plan(g, opts)
         .into_iter()
         .map(|t| match t {
@@ -165,6 +193,8 @@ pub fn texture_names(g: &Generated, opts: &ExportOptions, name: &str) -> Vec<Str
             Tex::BarkNormal => bn.clone(),
             Tex::LeafColor => lc.clone(),
             Tex::LeafNormal => ln.clone(),
+            Tex::CutFaceColor => cc.clone(),
+            Tex::CutFaceNormal => cn.clone(),
         })
         .collect()
 }
@@ -183,6 +213,11 @@ pub fn texture_png(g: &Generated, opts: &ExportOptions, index: usize) -> Option<
         Tex::LeafColor | Tex::LeafNormal => {
             let t = g.foliage.texture()?;
             Some(png(t.width, t.height, if tex == Tex::LeafColor { &t.color } else { &t.normal }))
+        }
+        Tex::CutFaceColor | Tex::CutFaceNormal => {
+            let m = crate::mesh::bark::end_grain::bake(g.bark, opts.bark_texture_size as usize);
+            let s = m.color.size as u32;
+            Some(png(s, s, if tex == Tex::CutFaceColor { &m.color.rgba } else { &m.normal.rgba }))
         }
     }
 }

@@ -1,7 +1,7 @@
 //! # PNG textures for the exports
 //!
-//! The bark maps of a bark type ([`crate::mesh::bark::bake`], the same the viewer shows) and the
-//! leaf's baked maps, encoded as PNG ([`super::png`]) once and cached by their key: the textures
+//! The bark maps of a bark type ([`crate::mesh::bark::bake`], the same the viewer shows), its end
+//! grain for cut faces ([`crate::mesh::bark::end_grain`]) and the leaf's baked maps, encoded as PNG ([`super::png`]) once and cached by their key: the textures
 //! are pure functions of it, so the cache never changes a result, it only saves the encoding
 //! time of repeated exports.
 
@@ -28,6 +28,7 @@ pub struct TexturePngs {
 type PngCache = Mutex<Option<(u64, Arc<TexturePngs>)>>;
 static BARK_PNGS: PngCache = Mutex::new(None);
 static LEAF_PNGS: PngCache = Mutex::new(None);
+static GRAIN_PNGS: PngCache = Mutex::new(None);
 
 /// `make()` once per `key` (the last key is kept; the textures are pure functions of the key,
 /// so the cache never changes a result, it only saves the encoding time of repeated exports).
@@ -58,6 +59,22 @@ pub fn bark_pngs(kind: BarkType, size: u32) -> Arc<TexturePngs> {
             color: png::encode_rgba(s, s, &m.color.rgba),
             normal: png::encode_rgba(s, s, &m.normal.rgba),
             orm: Some(png::encode_rgba(s, s, &m.orm.rgba)),
+        }
+    })
+}
+
+/// The end grain of `kind` for cut faces ([`crate::mesh::bark::end_grain::bake`], as the viewer
+/// uses) as PNGs, `size` texels square: colour (alpha = the disc mask) and normal, no ORM map.
+pub fn end_grain_pngs(kind: BarkType, size: u32) -> Arc<TexturePngs> {
+    cached(&GRAIN_PNGS, u64::from(size) | (kind as u64) << 32, || {
+        let m = crate::mesh::bark::end_grain::bake(kind, size as usize);
+        let s = m.color.size as u32;
+        TexturePngs {
+            width: s,
+            height: s,
+            color: png::encode_rgba(s, s, &m.color.rgba),
+            normal: png::encode_rgba(s, s, &m.normal.rgba),
+            orm: None,
         }
     })
 }

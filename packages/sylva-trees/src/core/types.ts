@@ -150,6 +150,11 @@ export interface TreeUpdate {
   leafTexture?: LeafTextureBuffers;
   /** The baked bark maps (a worker's first answer, and when the bark type changes). */
   barkTextures?: BarkTextureBuffers;
+  /**
+   * The end grain of the cut faces (the first answer with a `cut_face` group, and when the bark
+   * type of a tree with one changes).
+   */
+  endGrain?: EndGrainBuffers;
   /** Bark occlusion, one byte per vertex (with a new bark or new leaves; empty: a preview). */
   shade?: Uint8Array;
 }
@@ -174,6 +179,8 @@ export interface TreeBuffers {
   wind?: Float32Array;
   /** The baked bark textures, sent with a worker's first result and when the bark type changes. */
   bark?: BarkTextureBuffers;
+  /** The end grain of cut faces, once a tree with a cut arrived. */
+  endGrain?: EndGrainBuffers;
   /** Bark occlusion, one byte per vertex (0 dark .. 255 open sky; `TreeMesh.shade`); may be empty. */
   shade?: Uint8Array;
 }
@@ -190,6 +197,21 @@ export interface BarkTextureBuffers {
   /** Occlusion (R), roughness (G), metalness (B). */
   orm: Uint8Array;
   style: BarkStyle;
+}
+
+/**
+ * The core's end grain for the faces of cut stems (`end_grain_maps`, layout in the core's
+ * `EndGrainMaps::to_bytes`): RGBA8, `size`², row 0 = v 0, drawn as a disc in the faces' disc
+ * uvs (pith at 0.5, 0.5).
+ */
+export interface EndGrainBuffers {
+  size: number;
+  /** The `bark_type` index this wood is. */
+  kind: number;
+  /** Colour (sRGB), alpha = the disc mask. */
+  color: Uint8Array;
+  /** Tangent-space normal (RGB = xyz·0.5 + 0.5) and height (A). */
+  normal: Uint8Array;
 }
 
 /** Shape of a user volume primitive (growth mode). */
@@ -305,4 +327,6 @@ export interface WasmApi {
   bark_maps?(kind: number, size: number): Uint8Array;
   /** How bark type `kind` lies on a stem, as JSON (`BarkStyle`). */
   bark_style_json?(kind: number): string;
+  /** The end grain of bark type `kind`: colour then normal map (RGBA8, `size`² each). */
+  end_grain_maps?(kind: number, size: number): Uint8Array;
 }

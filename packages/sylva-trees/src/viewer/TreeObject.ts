@@ -1,7 +1,8 @@
 /**
  * One tree as three.js objects: a `Group` holding the bark mesh and the instanced leaves, with
- * the bark material (the core's baked maps and the bark look), the leaf material (translucency)
- * and the wind on both (and on their shadow depth materials). It takes the worker's session
+ * the bark material (the core's baked maps and the bark look), the cut faces' end-grain material,
+ * the leaf material (translucency) and the wind on all of them (and on their shadow depth
+ * materials). It takes the worker's session
  * updates (only the arrays that changed): same-size arrays are swapped into the existing
  * attributes, other sizes get new geometry and the old one is disposed. No renderer, camera or
  * lights: the app's viewer and the `sylva-trees` package both put it into a scene of their own.
@@ -18,6 +19,7 @@ import {
 } from 'three';
 import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
 import { BarkTextures, createBarkMaterial } from './barkMaterial';
+import { createCutFaceMaterial, EndGrainTextures } from './cutFaceMaterial';
 import { applyBarkLook, createBarkLookUniforms } from './barkLook';
 import { Foliage } from './Foliage';
 import { buildTreeGeometry, updateShade, updateTreeGeometry } from './geometry';
@@ -43,6 +45,9 @@ export class TreeObject {
     roughness: 0.75,
     side: DoubleSide,
   });
+  /** The third slot: the end grain of cut stems' faces (`MATERIAL_INDEX.cut_face`). */
+  private readonly cutFace = createCutFaceMaterial();
+  private readonly endGrain = new EndGrainTextures(this.cutFace);
   private readonly foliage = new Foliage(this.group);
   private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
   private mesh: Mesh<BufferGeometry, MeshStandardMaterial[]> | null = null;
@@ -55,6 +60,7 @@ export class TreeObject {
     this.wind = new WindController(onChange);
     this.wind.apply(this.bark, 'bark');
     this.wind.apply(this.leaves, 'bark');
+    this.wind.apply(this.cutFace, 'bark');
     for (const leaves of [this.foliage.material, this.foliage.instancedMaterial]) {
       this.wind.apply(leaves, 'leaves');
       applyLeafTranslucency(leaves);
@@ -64,6 +70,7 @@ export class TreeObject {
     for (const material of [
       this.bark,
       this.leaves,
+      this.cutFace,
       this.foliage.material,
       this.foliage.instancedMaterial,
     ]) {
@@ -100,6 +107,11 @@ export class TreeObject {
     return this.barkTextures.size;
   }
 
+  /** The bark type of the cut faces' end grain, -1 before a tree with a cut arrived. */
+  get endGrainKind(): number {
+    return this.endGrain.kind;
+  }
+
   /** The bark's bounding sphere (a unit sphere before the first tree). */
   get boundingSphere(): Sphere {
     return this.mesh?.geometry.boundingSphere ?? new Sphere(new Vector3(), 1);
@@ -121,6 +133,7 @@ export class TreeObject {
     const geometry = this.mesh?.geometry;
     this.wind.setTree(buffers.meta.bounds, geometry?.hasAttribute('windPivot') ?? false);
     if (update.barkTextures) this.barkTextures.set(update.barkTextures);
+    if (update.endGrain) this.endGrain.set(update.endGrain);
     return buffers;
   }
 
@@ -137,7 +150,7 @@ export class TreeObject {
       this.mesh.geometry = geometry;
       return;
     }
-    this.mesh = new Mesh(geometry, [this.bark, this.leaves]);
+    this.mesh = new Mesh(geometry, [this.bark, this.leaves, this.cutFace]);
     this.mesh.name = 'sylva-bark';
     this.mesh.castShadow = true;
     this.mesh.receiveShadow = true;
@@ -156,8 +169,10 @@ export class TreeObject {
     this.foliage.dispose();
     this.wind.dispose();
     this.barkTextures.dispose();
+    this.endGrain.dispose();
     this.bark.dispose();
     this.leaves.dispose();
+    this.cutFace.dispose();
     this.current = null;
   }
 }

@@ -10,10 +10,10 @@ import { attachBarkAttributes, shadeBytes } from './barkLook';
 import { attachWindAttributes } from './wind';
 
 /**
- * Material slot of each mesh group in the material array [bark, leaves]. A cut stem's face
- * (`cut_face`, end grain in the core's disc uvs) draws with the bark until it has its own.
+ * Material slot of each mesh group in the material array [bark, leaves, cut face]: a cut stem's
+ * face (`cut_face`) draws with the end-grain material (cutFaceMaterial.ts) in its disc uvs.
  */
-export const MATERIAL_INDEX = { bark: 0, leaves: 1, cut_face: 0 } as const;
+export const MATERIAL_INDEX = { bark: 0, leaves: 1, cut_face: 2 } as const;
 
 /** Wraps the arrays in BufferAttributes (no copying, no per-vertex JS) and adds material groups. */
 export function buildTreeGeometry(tree: TreeBuffers): BufferGeometry {

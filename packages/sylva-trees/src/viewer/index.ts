@@ -7,7 +7,8 @@
 export { TreeObject } from './TreeObject';
 export { SceneLights, impostorLights, type ImpostorLights } from './lighting';
 export { applySoftShadows } from './softShadows';
-export { buildEnvelopeGeometry } from './geometry';
+export { buildEnvelopeGeometry, MATERIAL_INDEX } from './geometry';
+export { createCutFaceMaterial, EndGrainTextures } from './cutFaceMaterial';
 export { leafTexture, srgbTexture } from './leafTexture';
 export { applyLeafCoverage } from './leafCoverage';
 export { LEAF_INSTANCED_MATERIAL_KEY, LEAF_MATRICES_KEY, LEAF_TRANSLUCENCY } from './Foliage';

@@ -30,6 +30,7 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
       : {}),
     ...(f?.texture ? { leafTexture: f.texture } : {}),
     ...(tree.bark ? { barkTextures: tree.bark } : {}),
+    ...(tree.endGrain ? { endGrain: tree.endGrain } : {}),
     shade: tree.shade ?? new Uint8Array(0),
   };
 }
@@ -60,6 +61,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
   const wind = update.bark ? update.bark.wind : current?.wind;
   const markers = update.markers ?? current?.markers;
   const textures = update.barkTextures ?? current?.bark;
+  const endGrain = update.endGrain ?? current?.endGrain;
   const shade = update.shade ?? current?.shade;
   return {
     positions: bark.positions,
@@ -72,6 +74,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     ...(wind ? { wind } : {}),
     ...(markers ? { markers } : {}),
     ...(textures ? { bark: textures } : {}),
+    ...(endGrain ? { endGrain } : {}),
     ...(shade ? { shade } : {}),
   };
 }

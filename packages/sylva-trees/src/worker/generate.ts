@@ -7,6 +7,7 @@
 import { parseMeta } from '../core/parse';
 import type {
   BarkTextureBuffers,
+  EndGrainBuffers,
   Params,
   TreeMeta,
   TreeUpdate,
@@ -58,6 +59,25 @@ export function barkOf(wasm: WasmApi, kind = 0): BarkTextureBuffers | undefined 
   return { size, kind, color, normal, orm, style };
 }
 
+/** Edge length of the baked end grain (texels): a cut face is looked at up close. */
+export const END_GRAIN_TEXTURE_SIZE = 512;
+
+/** The core's end grain of bark type `kind`, or undefined when this wasm build has none. */
+export function endGrainOf(wasm: WasmApi, kind = 0): EndGrainBuffers | undefined {
+  if (typeof wasm.end_grain_maps !== 'function') return undefined;
+  const maps = wasm.end_grain_maps(kind, END_GRAIN_TEXTURE_SIZE);
+  const size = Math.round(Math.sqrt(maps.length / 8));
+  if (size < 1 || size * size * 8 !== maps.length) return undefined;
+  const n = size * size * 4;
+  // Two copies, so that each map's buffer can be transferred on its own.
+  return { size, kind, color: maps.slice(0, n), normal: maps.slice(n, 2 * n) };
+}
+
+/** Whether the tree of `meta` has cut faces (a `cut_face` group with triangles). */
+export function hasCutFaces(meta: TreeMeta): boolean {
+  return meta.groups.some((g) => g.material === 'cut_face' && g.count > 0);
+}
+
 /**
  * The tree's wind data (8 floats per vertex), read defensively: empty when its length does
  * not match the vertex count.
@@ -81,6 +101,7 @@ export function transferOf(update: TreeUpdate): Transferable[] {
     const t = update.barkTextures;
     views.push(t.color, t.normal, t.orm);
   }
+  if (update.endGrain) views.push(update.endGrain.color, update.endGrain.normal);
   if (update.shade) views.push(update.shade);
   return [...new Set(views.map((v) => v.buffer as ArrayBuffer))];
 }
@@ -104,6 +125,8 @@ export class SessionGenerator {
   private barkSent: number | null = null;
   /** Bark maps baked ahead by [`SessionGenerator.prime`], not sent yet. */
   private barkBaked: BarkTextureBuffers | null = null;
+  /** The bark type whose end grain the main thread has (null: none yet, baked at the first cut). */
+  private grainSent: number | null = null;
   /** Whether a result went out: the first one carries every array, whatever changed. */
   private sentAny = false;
   /** Result whose hash is still to be posted, and the cancel of its scheduled task. */
@@ -243,6 +266,12 @@ export class SessionGenerator {
       this.barkBaked = null;
       const bark = baked?.kind === kind ? baked : barkOf(this.wasm, kind);
       if (bark) update.barkTextures = bark;
+    }
+    // The end grain only once a tree has cut faces (about 100 ms to bake), again for a new type.
+    if (this.grainSent !== kind && hasCutFaces(meta)) {
+      this.grainSent = kind;
+      const grain = endGrainOf(this.wasm, kind);
+      if (grain) update.endGrain = grain;
     }
     // The occlusion belongs to the bark it was computed for: sent with every new bark.
     if (changes.bark || changes.shade) update.shade = s.shade();

@@ -53,10 +53,13 @@
 //!   one mesh (`baked.rs`) with the tint as `COLOR_0` (RGBA8, clamped to 0..1) and, with
 //!   wind, each leaf's twig's wind record, coded as the bark's (the bark's codec and
 //!   `extras`); indices `u32` past 65,535 vertices, as the bark's.
-//! * **Materials** (metallic-roughness, metallic 0): `bark` (roughness 0.9, bark colour map,
+//! * **Materials** (metallic-roughness, metallic 0; `materials.rs`): `bark` (roughness 0.9, bark colour map,
 //!   bark normal map, textures REPEAT-wrapped: bark UVs run past 1 along the stems); `leaves`
 //!   (roughness 0.7, leaf colour map with `alphaMode` MASK, cutoff 0.5, `doubleSided`, leaf
-//!   normal map, CLAMP_TO_EDGE). Without textures the base colours are plain factors.
+//!   normal map, CLAMP_TO_EDGE); and, only when the bark has a [`Material::CutFace`] group (a
+//!   cut stem), `cut_face` last (roughness 0.85, the end-grain colour and normal maps of
+//!   [`crate::mesh::bark::end_grain`] in the faces' disc UVs, CLAMP_TO_EDGE, opaque), which the
+//!   bark mesh's cut-face primitive uses. Without textures the base colours are plain factors.
 //!   Images: PNG in buffer views ([`super::png`]); row 0 of a baked texture is `v = 0`, which
 //!   is the top of a glTF image, so UVs are written unchanged.
 //!
@@ -88,6 +91,7 @@
 mod baked;
 mod data;
 mod doc;
+mod materials;
 
 use super::options::{ExportOptions, LeafMode};
 use super::textures::TexturePngs;
@@ -96,6 +100,7 @@ use crate::mesh::{merge_ranges, ranges, Bounds, Material, TreeMesh, WIND_STRIDE}
 use crate::Generated;
 use data::{Data, Part, WindCodec};
 use doc::{Acc, Colors, Doc, VertexExtras};
+use materials::{material, BARK, CUT_FACE, LEAVES};
 use serde_json::{json, Map, Value};
 use std::ops::Range;
 use std::sync::Arc;
@@ -126,6 +131,7 @@ const WIND_PARAMS_DOC: &str =
 struct Owned {
     bark_pngs: Option<Arc<TexturePngs>>,
     leaf_pngs: Option<Arc<TexturePngs>>,
+    grain_pngs: Option<Arc<TexturePngs>>,
     baked: Option<super::bake::BakedLeaves>,
     leaf_tangents: Option<Vec<f32>>,
 }
@@ -154,8 +160,10 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let tangents = normal_maps && opts.tangents;
     let leaf_pngs = if opts.textures && has_leaves { super::textures::leaf_pngs(f) } else { None };
     let instanced = has_leaves && opts.leaves == LeafMode::Instanced;
+    let has_cut = has_bark && bark.groups.iter().any(|g| g.material == Material::CutFace && g.count > 0);
     let owned = Owned {
         bark_pngs: (has_bark && opts.textures).then(|| super::textures::bark_pngs(g.bark, opts.bark_texture_size)),
+        grain_pngs: (has_cut && opts.textures).then(|| super::textures::end_grain_pngs(g.bark, opts.bark_texture_size)),
         baked: (has_leaves && opts.leaves == LeafMode::Baked)
             .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads)),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
@@ -173,9 +181,12 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         has_bark.then(|| material(&mut doc, &BARK, owned.bark_pngs.as_deref(), normal_maps, &mut used_samplers));
     let leaf_material = (has_leaves || bark.groups.iter().any(|g| g.material == Material::Leaves))
         .then(|| material(&mut doc, &LEAVES, owned.leaf_pngs.as_deref(), normal_maps, &mut used_samplers));
+    // Last, so that a tree without a cut keeps every index (and byte) it had.
+    let cut_material =
+        has_cut.then(|| material(&mut doc, &CUT_FACE, owned.grain_pngs.as_deref(), normal_maps, &mut used_samplers));
     let pick = |m: Material| match m {
-        // Cut faces draw with the bark's material until the exporters bake an end-grain one.
-        Material::Bark | Material::CutFace => bark_material.or(leaf_material).unwrap_or(0),
+        Material::CutFace => cut_material.or(bark_material).or(leaf_material).unwrap_or(0),
+        Material::Bark => bark_material.or(leaf_material).unwrap_or(0),
         Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
     };
     let mut bark_wind = None;
@@ -212,88 +223,6 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         children.push(doc.nodes.len());
     }
     assemble(doc, g, samplers, used_samplers, instanced, children, out, threads);
-}
-
-/// What differs between the bark's and the leaves' materials.
-struct MaterialSpec {
-    name: &'static str,
-    roughness: f64,
-    /// Sampler index: 0 repeats (bark), 1 clamps (the leaf texture).
-    sampler: usize,
-    /// Two-sided and alpha-masked (leaves).
-    leaves: bool,
-    color_name: &'static str,
-    orm_name: &'static str,
-    normal_name: &'static str,
-    /// Linear RGBA without textures.
-    fallback: [f64; 4],
-}
-
-const BARK: MaterialSpec = MaterialSpec {
-    name: "bark",
-    roughness: 0.9,
-    sampler: 0,
-    leaves: false,
-    color_name: "bark_color",
-    orm_name: "bark_orm",
-    normal_name: "bark_normal",
-    // The viewer's plain bark colour #5b3d26, in linear RGB.
-    fallback: [0.1046, 0.0467, 0.0194, 1.0],
-};
-
-const LEAVES: MaterialSpec = MaterialSpec {
-    name: "leaves",
-    roughness: 0.7,
-    sampler: 1,
-    leaves: true,
-    color_name: "leaf_color",
-    orm_name: "leaf_orm",
-    normal_name: "leaf_normal",
-    // The leaf texture's blade green (0.30, 0.52, 0.18 in sRGB), in linear RGB.
-    fallback: [0.0742, 0.2346, 0.0273, 1.0],
-};
-
-/// A material as `spec` says (textures when `pngs`); returns its index.
-fn material<'a>(
-    doc: &mut Doc<'a>,
-    spec: &MaterialSpec,
-    pngs: Option<&'a TexturePngs>,
-    normal_maps: bool,
-    used_samplers: &mut [bool; 2],
-) -> usize {
-    let mut pbr = Map::new();
-    pbr.insert("metallicFactor".into(), json!(0.0));
-    pbr.insert("roughnessFactor".into(), json!(spec.roughness));
-    let mut mat = Map::new();
-    mat.insert("name".into(), json!(spec.name));
-    if spec.leaves {
-        mat.insert("doubleSided".into(), json!(true));
-    }
-    if let Some(p) = pngs {
-        used_samplers[spec.sampler] = true;
-        let color = doc.texture(&p.color, spec.color_name, spec.sampler);
-        pbr.insert("baseColorTexture".into(), json!({"index": color}));
-        if spec.leaves {
-            mat.insert("alphaMode".into(), json!("MASK"));
-            mat.insert("alphaCutoff".into(), json!(0.5));
-        }
-        if let Some(orm) = p.orm.as_ref().filter(|_| !spec.leaves) {
-            // One packed map: glTF reads roughness from G (metalness B = 0) and occlusion from R.
-            let orm = doc.texture(orm, spec.orm_name, spec.sampler);
-            pbr.insert("metallicRoughnessTexture".into(), json!({"index": orm}));
-            pbr.insert("roughnessFactor".into(), json!(1.0));
-            mat.insert("occlusionTexture".into(), json!({"index": orm}));
-        }
-        if normal_maps {
-            let normal = doc.texture(&p.normal, spec.normal_name, spec.sampler);
-            mat.insert("normalTexture".into(), json!({"index": normal}));
-        }
-    } else {
-        pbr.insert("baseColorFactor".into(), json!(spec.fallback));
-    }
-    mat.insert("pbrMetallicRoughness".into(), Value::Object(pbr));
-    doc.materials.push(Value::Object(mat));
-    doc.materials.len() - 1
 }
 
 /// The instanced leaf mesh's extra vertex data: its tangents, when computed.

@@ -10,6 +10,7 @@
 //! [`BarkStyle::young_radius`] fade to smooth young bark of [`BarkStyle::young_rgb`]. The viewer
 //! applies that rule per fragment from each vertex's stem radius (the wind data's `radius`).
 
+pub mod end_grain;
 pub mod noise;
 pub mod patterns;
 
