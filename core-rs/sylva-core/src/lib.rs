@@ -42,6 +42,7 @@ pub mod par;
 pub mod params;
 pub mod presets;
 pub mod rng;
+pub mod season;
 pub mod session;
 pub mod skeleton;
 

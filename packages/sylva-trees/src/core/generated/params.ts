@@ -1510,6 +1510,17 @@ export const PARAM_SPECS = {
     step: 0.01,
     unit: '',
   },
+  season: {
+    label: 'Season',
+    group: 'Foliage',
+    kind: 'float',
+    stage: 'foliage',
+    default: 7,
+    min: 1,
+    max: 12.99,
+    step: 0.05,
+    unit: 'month',
+  },
   foliage_lod: {
     label: 'Leaf Mesh',
     group: 'Foliage',
@@ -1677,6 +1688,18 @@ export const PARAM_SPECS = {
     max: 1,
     step: 1,
     unit: '',
+  },
+  leaf_phenology: {
+    label: 'Phenology',
+    group: 'Leaf',
+    kind: 'enum',
+    stage: 'foliage',
+    default: 0,
+    min: 0,
+    max: 7,
+    step: 1,
+    unit: '',
+    options: ['Aspen', 'Maple', 'Oak', 'Birch', 'Ginkgo', 'Willow', 'Tupelo', 'Evergreen Conifer'],
   },
   leaf_fascicle: {
     label: 'Needles per Fascicle',
@@ -2177,6 +2200,15 @@ export interface ParamOptions {
   foliage_lod: 'Auto' | 'Blade' | 'Billboards' | 'Card';
   twig_detail: '1 (finest)' | '2' | '4' | '8 (coarsest)';
   leaf_outline: 'Superformula' | 'Spline' | 'Pinnate' | 'Palmate';
+  leaf_phenology:
+    | 'Aspen'
+    | 'Maple'
+    | 'Oak'
+    | 'Birch'
+    | 'Ginkgo'
+    | 'Willow'
+    | 'Tupelo'
+    | 'Evergreen Conifer';
   leaf_margin: 'Entire' | 'Serrate' | 'Dentate' | 'Crenate' | 'Lobed';
   leaf_venation: 'None' | 'Open' | 'Closed' | 'Spline';
   leaf_primary_veins: 'None' | 'Pinnate' | 'Palmate' | 'Dichotomous';
@@ -2243,6 +2275,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.6,
     leaf_petiole_flat: 1,
+    leaf_phenology: 0,
     leaf_primary_veins: 1,
     leaf_secondaries: 6,
     leaf_secondary_angle: 45,
@@ -2260,6 +2293,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.6,
     leaf_petiole_flat: 1,
+    leaf_phenology: 0,
     leaf_primary_veins: 1,
     leaf_secondaries: 6,
     leaf_secondary_angle: 45,
@@ -2318,6 +2352,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.15,
     leaf_petiole_flat: 0,
+    leaf_phenology: 6,
     leaf_primary_veins: 1,
     leaf_secondaries: 6,
     leaf_secondary_angle: 50,
@@ -2406,6 +2441,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.06,
     leaf_petiole_flat: 0,
+    leaf_phenology: 5,
     leaf_primary_veins: 1,
     leaf_secondaries: 12,
     leaf_secondary_angle: 60,
@@ -2502,6 +2538,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.15,
     leaf_petiole_flat: 0,
+    leaf_phenology: 2,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 55,
     leaf_teeth: 30,
@@ -2566,6 +2603,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.04,
     leaf_petiole_flat: 0,
+    leaf_phenology: 7,
     leaf_primary_veins: 0,
     leaf_rings: 2,
     leaf_shoot: 56,
@@ -2636,6 +2674,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.05,
     leaf_petiole_flat: 0,
+    leaf_phenology: 2,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 50,
     leaf_tip_shape: 0.7,
@@ -2697,6 +2736,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.02,
     leaf_petiole_flat: 0,
+    leaf_phenology: 7,
     leaf_primary_veins: 0,
     leaf_rings: 2,
     leaf_shoot: 36,
@@ -2769,6 +2809,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 3,
     leaf_petiole: 0.9,
     leaf_petiole_flat: 0,
+    leaf_phenology: 1,
     leaf_primary_veins: 2,
     leaf_vein_density: 2000,
     leaf_vein_width: 0.016,
@@ -2827,6 +2868,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.45,
     leaf_petiole_flat: 0,
+    leaf_phenology: 3,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 40,
     leaf_teeth: 64,
@@ -2870,6 +2912,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 3,
     leaf_petiole: 0.9,
     leaf_petiole_flat: 0,
+    leaf_phenology: 1,
     leaf_primary_veins: 2,
     leaf_vein_density: 2000,
     leaf_vein_width: 0.016,
@@ -2900,6 +2943,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.45,
     leaf_petiole_flat: 0,
+    leaf_phenology: 3,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 40,
     leaf_teeth: 64,
@@ -2937,6 +2981,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.45,
     leaf_petiole_flat: 0,
+    leaf_phenology: 3,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 40,
     leaf_teeth: 64,
@@ -2966,6 +3011,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.6,
     leaf_petiole_flat: 1,
+    leaf_phenology: 0,
     leaf_primary_veins: 1,
     leaf_secondaries: 6,
     leaf_secondary_angle: 45,
@@ -3013,6 +3059,7 @@ export const PRESET_VALUES: Readonly<Record<PresetId, PresetValues>> = {
     leaf_outline: 2,
     leaf_petiole: 0.05,
     leaf_petiole_flat: 0,
+    leaf_phenology: 2,
     leaf_primary_veins: 1,
     leaf_secondary_angle: 50,
     leaf_tip_shape: 0.7,
