@@ -20,10 +20,11 @@
 //! * **Autumn**: a leaf's colour goes from green to its species' palette between the onset
 //!   and the peak, then toward dead brown until it falls. After Chiba, Ohshida, Muraoka and
 //!   Saito 1996 (*Visual Simulation of Leaf Arrangement and Autumn Colours*, J. Visualization
-//!   and Computer Animation 7, §4: the ageing of a leaf runs with the sunlight it receives),
-//!   the timing follows each leaf's light: the crown's light field ([`crate::crown_shade`], of
-//!   the summer crown) delays a fully shaded leaf by [`SHADE_DELAY`] and dulls its colour
-//!   toward the palette's shade colour, so the outer sun leaves turn first and brightest.
+//!   and Computer Animation 7: the ageing of a leaf runs with the sunlight it receives), the
+//!   timing follows each leaf's light: the crown's light field ([`crate::crown_shade`], of the
+//!   summer crown; a leaf takes `√sky` of the sun) delays a fully shaded leaf by
+//!   [`SHADE_DELAY`] and dulls its colour toward the palette's shade colour, so the outer sun
+//!   leaves turn first and brightest.
 //!   Anthocyanin reds are made in the light (Lee et al. 2003, *Pigment dynamics and autumn
 //!   leaf senescence in a New England deciduous forest*, Ecological Research 18).
 //! * **Leaf fall**: each leaf falls at its own time between a little before its peak and the
@@ -48,7 +49,7 @@ use glam::Vec3;
 /// The Season of the summer tree (the default): every leaf as it is.
 pub const SUMMER: f32 = 7.0;
 /// How much later (months) a leaf in full shade turns than one in the open.
-pub const SHADE_DELAY: f32 = 0.5;
+pub const SHADE_DELAY: f32 = 0.4;
 /// Per-leaf variation of the dates (± months).
 const JITTER: f32 = 0.25;
 /// A new leaf's length, as a fraction of its full length, when it leaves the bud.
@@ -58,7 +59,7 @@ pub const FLUSH: [f32; 3] = [0.62, 0.76, 0.26];
 /// A dead leaf's brown (sRGB), toward which every autumn colour goes after its peak.
 const BROWN: [f32; 3] = [0.42, 0.28, 0.14];
 /// How far a leaf in full shade is dulled toward its palette's shade colour.
-const SHADE_DULL: f32 = 0.85;
+const SHADE_DULL: f32 = 0.6;
 /// Winter bronzing of conifer needles at full strength (a linear-light multiplier), and how
 /// much of it a needle in the open takes in midwinter.
 pub const BRONZE: ([f32; 3], f32) = ([1.7, 0.95, 0.62], 0.35);
@@ -91,22 +92,22 @@ const fn deciduous(dates: [f32; 5], sun: [[f32; 3]; 2], shade: [f32; 3]) -> Phen
 
 /// Quaking aspen: golden yellow.
 const ASPEN: Phenology =
-    deciduous([4.3, 5.2, 9.6, 10.2, 10.9], [[0.95, 0.78, 0.16], [0.88, 0.66, 0.10]], [0.70, 0.68, 0.26]);
+    deciduous([4.3, 5.2, 9.6, 10.2, 10.9], [[0.95, 0.78, 0.16], [0.88, 0.66, 0.10]], [0.78, 0.70, 0.22]);
 /// Maple (sugar and red maples in the open): scarlet to orange.
 const MAPLE: Phenology =
     deciduous([4.4, 5.3, 9.8, 10.5, 11.3], [[0.82, 0.12, 0.06], [0.93, 0.42, 0.07]], [0.78, 0.55, 0.14]);
 /// Oaks: russet and brown, held late.
 const OAK: Phenology =
-    deciduous([4.7, 5.6, 10.2, 10.9, 12.0], [[0.62, 0.28, 0.10], [0.52, 0.32, 0.13]], [0.47, 0.40, 0.17]);
+    deciduous([4.7, 5.6, 10.2, 10.9, 12.0], [[0.66, 0.30, 0.10], [0.56, 0.34, 0.14]], [0.50, 0.36, 0.16]);
 /// Birch: yellow.
 const BIRCH: Phenology =
-    deciduous([4.2, 5.1, 9.6, 10.3, 11.0], [[0.93, 0.80, 0.24], [0.86, 0.70, 0.18]], [0.68, 0.66, 0.28]);
+    deciduous([4.2, 5.1, 9.6, 10.3, 11.0], [[0.93, 0.80, 0.24], [0.86, 0.70, 0.18]], [0.76, 0.68, 0.24]);
 /// Ginkgo: butter yellow, then every leaf down within days.
 const GINKGO: Phenology =
-    deciduous([4.4, 5.3, 10.3, 10.9, 11.2], [[0.98, 0.84, 0.18], [0.95, 0.78, 0.12]], [0.80, 0.76, 0.24]);
+    deciduous([4.4, 5.3, 10.3, 10.9, 11.2], [[0.98, 0.84, 0.18], [0.95, 0.78, 0.12]], [0.82, 0.74, 0.22]);
 /// Willow: yellow, late.
 const WILLOW: Phenology =
-    deciduous([4.0, 4.9, 10.0, 10.8, 11.6], [[0.86, 0.80, 0.30], [0.80, 0.72, 0.22]], [0.64, 0.66, 0.30]);
+    deciduous([4.0, 4.9, 10.0, 10.8, 11.6], [[0.86, 0.80, 0.30], [0.80, 0.72, 0.22]], [0.72, 0.68, 0.26]);
 /// Black tupelo: crimson and purple-red, the first to turn.
 const TUPELO: Phenology =
     deciduous([4.6, 5.5, 9.3, 10.0, 10.8], [[0.76, 0.09, 0.10], [0.56, 0.10, 0.20]], [0.80, 0.42, 0.14]);
@@ -189,8 +190,17 @@ fn ease(t: f32) -> f32 {
     t * t * (3.0 - 2.0 * t)
 }
 
+/// How much of the sun a leaf that sees `sky` (0..1) of the sky takes: `√sky`. A leaf's
+/// response to light saturates, and the field's sky is low all through a dense crown (the
+/// median leaf of the oak preset sees 0.13, the brightest twentieth 0.57 or more), so the
+/// outer leaves count as sun leaves and only the inner ones as shaded.
+fn sun(sky: f32) -> f32 {
+    sky.clamp(0.0, 1.0).sqrt()
+}
+
 /// The state at Season `month` of a leaf of `ph` that sees `sky` (0..1) of the sky.
 fn leaf_state(ph: &Phenology, pal: &Palette, month: f32, sky: f32, dice: LeafDice) -> LeafState {
+    let sky = sun(sky);
     if ph.evergreen {
         return bronze(month, sky);
     }
@@ -204,7 +214,7 @@ fn leaf_state(ph: &Phenology, pal: &Palette, month: f32, sky: f32, dice: LeafDic
         let scale = SPRING_SIZE + (1.0 - SPRING_SIZE) * g;
         return LeafState::Changed { scale, tint: pal.flush.lerp(Vec3::ONE, g) };
     }
-    let shade = 1.0 - sky.clamp(0.0, 1.0);
+    let shade = 1.0 - sky;
     let delay = shift + SHADE_DELAY * shade;
     let (onset, peak, end) = (ph.onset + delay, ph.peak + delay, ph.fall_end + delay);
     if month < onset {
@@ -222,11 +232,11 @@ fn leaf_state(ph: &Phenology, pal: &Palette, month: f32, sky: f32, dice: LeafDic
 }
 
 /// An evergreen needle's winter bronzing: full from mid-December to mid-February, none from
-/// mid-April to mid-October, scaled by the sky it sees.
+/// mid-April to mid-October, scaled by the sun it takes ([`sun`] of its sky).
 fn bronze(month: f32, sky: f32) -> LeafState {
     let d = (month - 1.5).abs();
     let from_midwinter = d.min(12.0 - d);
-    let w = ease((3.0 - from_midwinter) / 2.0) * BRONZE.1 * sky.clamp(0.0, 1.0);
+    let w = ease((3.0 - from_midwinter) / 2.0) * BRONZE.1 * sky;
     if w <= 0.0 {
         return LeafState::Summer;
     }
