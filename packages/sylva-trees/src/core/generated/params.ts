@@ -2201,14 +2201,7 @@ export interface ParamOptions {
   twig_detail: '1 (finest)' | '2' | '4' | '8 (coarsest)';
   leaf_outline: 'Superformula' | 'Spline' | 'Pinnate' | 'Palmate';
   leaf_phenology:
-    | 'Aspen'
-    | 'Maple'
-    | 'Oak'
-    | 'Birch'
-    | 'Ginkgo'
-    | 'Willow'
-    | 'Tupelo'
-    | 'Evergreen Conifer';
+    'Aspen' | 'Maple' | 'Oak' | 'Birch' | 'Ginkgo' | 'Willow' | 'Tupelo' | 'Evergreen Conifer';
   leaf_margin: 'Entire' | 'Serrate' | 'Dentate' | 'Crenate' | 'Lobed';
   leaf_venation: 'None' | 'Open' | 'Closed' | 'Spline';
   leaf_primary_veins: 'None' | 'Pinnate' | 'Palmate' | 'Dichotomous';
