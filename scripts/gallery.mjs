@@ -1,7 +1,7 @@
-// `npm run gallery`: renders the look of every preset and close-ups of the details (bark types,
-// a fork, a branch collar, a tree hole, a leaf cluster) in the built app (web/dist, embed page,
-// headless Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under
-// 150 KB each) and writes docs/gallery.md. Each section is a module in scripts/gallery/ with
+// `npm run gallery`: renders the look of every preset, three trees through the seasons and
+// close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) in
+// the built app (web/dist, embed page, headless Chromium with software WebGL) into
+// docs/gallery/*.png (palette PNGs, well under 150 KB each) and writes docs/gallery.md. Each section is a module in scripts/gallery/ with
 // `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS. The leaf
 // sheet (scripts/gallery-leaves.mjs, docs/gallery-leaves.md) follows (`--only leaves` alone).
 //
@@ -14,10 +14,11 @@ import { serve } from './preview-server.mjs';
 import { galleryContext, markdown } from './gallery/context.mjs';
 import { closeupsSection } from './gallery/closeups.mjs';
 import { presetsSection } from './gallery/presets.mjs';
+import { seasonsSection } from './gallery/seasons.mjs';
 import { galleryLeaves } from './gallery-leaves.mjs';
 
 /** The gallery's sections, in page order. */
-export const SECTIONS = [presetsSection, closeupsSection];
+export const SECTIONS = [presetsSection, seasonsSection, closeupsSection];
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const PORT = 4393;

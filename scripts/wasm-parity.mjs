@@ -31,6 +31,20 @@ for (const preset of presets) {
 for (const seed of [0, 7, 123456, 4294967295]) {
   cases.push({ name: `seed ${seed}`, values: { seed }, args: ['--seed', String(seed)] });
 }
+// Seasons: a maple (umbrella) in mid-October (colours by light, leaves falling), an oak in its
+// spring flush, and a fir's bronzed needles in January.
+for (const [name, season] of [
+  ['umbrella', 10.5],
+  ['oak', 4.8],
+  ['fir', 1.5],
+]) {
+  const preset = presets.find((p) => p.name === name);
+  cases.push({
+    name: `${name} season ${season}`,
+    values: { ...preset.values, season },
+    args: ['--preset', name, '--set', `season=${season}`],
+  });
+}
 // Hand edits (a cut and a bend on two main branches of the default tree): the same edits give
 // the same bytes natively (`--edits FILE`) and in wasm (the `edits` array of the parameters).
 const edits = [

@@ -172,9 +172,13 @@ fn option_unions(registry: &[Value]) -> String {
         let labels: Vec<String> =
             p["options"].as_array().into_iter().flatten().map(|o| string(o.as_str().expect("a label"))).collect();
         let head = format!("  {}:", key(str_field(p, "id")));
-        let inline = format!("{head} {};", labels.join(" | "));
+        let union = labels.join(" | ");
+        let inline = format!("{head} {union};");
+        // Prettier's three layouts: on the key's line, alone on the next line, one per line.
         if inline.len() <= WIDTH {
             out.push_str(&format!("{inline}\n"));
+        } else if 4 + union.len() < WIDTH {
+            out.push_str(&format!("{head}\n    {union};\n"));
         } else {
             out.push_str(&head);
             out.push('\n');

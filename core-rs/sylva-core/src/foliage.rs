@@ -18,6 +18,8 @@
 //!   times **Leaf Scale X**.
 //! * **Colour**: a per-leaf RGB tint (multiplies the leaf texture): brightness and a shift
 //!   toward yellow, by **Colour Variation**.
+//! * **Season**: away from July, [`crate::season`] flushes, colours, drops or removes each leaf
+//!   (stream `"season"`), reading the summer crown's light field; at July nothing changes.
 //! * **Leaf Mesh**: the blade (LOD0), its billboard cloud or its card; Auto picks the finest
 //!   that keeps the whole foliage under [`AUTO_TRIANGLES`] triangles.
 //! * **Budget**: more than `max_leaves` leaves stops the generation with an error before any
@@ -297,6 +299,7 @@ pub fn place_lit_by(
     let a = math::rad(p.foliage_angle);
     let angle = (math::cos(a), math::sin(a));
     let turns = golden_turns(spans.iter().map(|s| s.3).sum());
+    let mut season = crate::season::Sites::new(skeleton.seed, p);
     let mut k = 0usize;
     for &(si, t0, t1, count) in &spans {
         let stem = &skeleton.stems[si];
@@ -322,6 +325,9 @@ pub fn place_lit_by(
                     rng.var(p.foliage_size_v);
                     rng.var(0.5 * p.foliage_color_v);
                     rng.next_f32();
+                    if let Some(s) = season.as_mut() {
+                        s.skip();
+                    }
                 }
                 continue;
             }
@@ -344,6 +350,9 @@ pub fn place_lit_by(
                 // The petiole (leaf y from -Petiole Length to 0) starts on the stem.
                 let base = pos + d * (len * p.leaf_petiole);
                 push_matrix(&mut matrices, base, d, front, len, len * p.foliage_scale_x);
+                if let Some(s) = season.as_mut() {
+                    s.leaf(pos);
+                }
                 let v = p.foliage_color_v;
                 let b = 1.0 + rng.var(0.5 * v);
                 let yellow = 0.5 * v * rng.next_f32();
@@ -352,7 +361,11 @@ pub fn place_lit_by(
         }
     }
     // Inner leaves see less sky: the crown-depth term multiplies into the tints.
-    let light = field.cloned().or_else(|| CrownLight::from_leaves(&matrices));
+    let mut light = field.cloned().or_else(|| CrownLight::from_leaves(&matrices));
+    // The season reads the summer crown's light; leaves resized or fallen make a new field.
+    if season.is_some_and(|s| s.apply(light.as_ref(), &mut matrices, &mut colors)) && field.is_none() {
+        light = CrownLight::from_leaves(&matrices);
+    }
     crate::crown_shade::darken_with(light.as_ref(), &matrices, &mut colors);
     Ok((Foliage { matrices, colors, ..bare }, light))
 }

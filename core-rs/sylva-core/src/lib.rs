@@ -16,6 +16,7 @@
 //! * [`skeleton`]: Weber & Penn stems.
 //! * [`growth`]: space-colonization growth, an alternative source of stems.
 //! * [`mesh`]: the output buffer type, the bark tube sweep, Bezier twigs and tree holes.
+//! * [`season`]: the Season's spring flush, autumn colours, leaf fall and bare winter trees.
 //! * [`export`]: GLB (glTF 2.0) and OBJ + MTL files of a generated tree.
 //!
 //! Same parameters and seed give byte-identical buffers on every target (see `math`).
@@ -42,6 +43,7 @@ pub mod par;
 pub mod params;
 pub mod presets;
 pub mod rng;
+pub mod season;
 pub mod session;
 pub mod skeleton;
 

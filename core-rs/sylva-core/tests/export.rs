@@ -549,3 +549,6 @@ fn obj_and_mtl() {
 /// Baked leaves: the tint and the wind records of every leaf vertex.
 #[path = "export/baked.rs"]
 mod baked;
+/// The season's leaf colours in both GLBs.
+#[path = "export/season.rs"]
+mod season;

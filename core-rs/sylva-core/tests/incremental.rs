@@ -120,6 +120,31 @@ fn later_stage_edits_keep_the_earlier_results() {
 }
 
 #[test]
+fn season_edits_rerun_only_the_foliage_and_the_leaf() {
+    // A maple through the year in one session: each month reruns from the foliage stage, keeps
+    // the skeleton and the bark, and gives the cold bytes; back in July, today's tree.
+    let base = sylva_core::presets::find("umbrella").unwrap().params().unwrap();
+    let mut session = Session::new();
+    session.update(&base, Quality::Full, &NoClock, None).unwrap();
+    let summer = session.hash();
+    let mut p = base.clone();
+    for month in [10.5, 1.5, 4.8, 10.0, 7.0] {
+        p.set("season", month).unwrap();
+        let cur = session.update(&p, Quality::Full, &NoClock, None).unwrap();
+        let (from, c) = (cur.from, cur.changes);
+        assert_eq!(from, Stage::Foliage, "month {month}");
+        assert!(!c.skeleton && !c.bark && c.placements, "month {month}: {c:?}");
+        assert_eq!(session.hash(), Some(cold_hash(&p).unwrap()), "month {month}");
+    }
+    assert_eq!(session.hash(), summer);
+    // A drag of the Season (preview quality allowed), then the release: the cold tree.
+    p.set("season", 10.4).unwrap();
+    session.update(&p, Quality::Preview { budget_ms: 0.0 }, &NoClock, None).unwrap();
+    session.update(&p, Quality::Full, &NoClock, None).unwrap();
+    assert_eq!(session.hash(), Some(cold_hash(&p).unwrap()));
+}
+
+#[test]
 fn first_difference_is_the_earliest_changed_stage_struct() {
     let a = TreeParams::default();
     let mut b = a.clone();

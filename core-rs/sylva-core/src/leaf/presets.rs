@@ -7,7 +7,7 @@
 
 use crate::error::SylvaError;
 use crate::param_values;
-use crate::params::{LeafMargin, LeafOutline, LeafPrimaries, LeafVenation, ParamValues, TreeParams};
+use crate::params::{LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries, LeafVenation, ParamValues, TreeParams};
 
 /// A named set of leaf parameter values.
 #[derive(Clone, Debug)]
@@ -55,6 +55,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "English oak (Quercus robur)",
         description: "Obovate, five rounded lobes per side along the midrib, leaning to the tip, with rounded sinuses over halfway in, one secondary vein per lobe, very short petiole.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Oak,
             leaf.leaf_asymmetry_seed = 11,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.56,
@@ -84,6 +85,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "California black oak (Quercus kelloggii)",
         description: "Deeply cut into three or four pointed, bristle-tipped lobes per side; pinnate veins, one per lobe.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Oak,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.72,
             leaf.leaf_base_shape = 0.9,
@@ -112,6 +114,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Norway maple (Acer platanoides)",
         description: "Palmate: five pointed lobes with a few large teeth, five primary veins from the petiole junction, closed net venation, long petiole.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Maple,
             leaf.leaf_outline = LeafOutline::Palmate,
             leaf.leaf_aspect = 1.2,
             leaf.leaf_lobes = 5,
@@ -139,6 +142,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Silver birch (Betula pendula)",
         description: "Triangular-ovate with a drawn-out tip, doubly serrate; straight secondary veins each ending in a large tooth.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Birch,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.7,
             leaf.leaf_base_shape = 0.35,
@@ -167,6 +171,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Quaking aspen (Populus tremuloides)",
         description: "Nearly round with a short pointed tip, finely crenate, pinnate veins; a long petiole flattened sideways, which makes the leaf quake.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Aspen,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 1.0,
             leaf.leaf_base_shape = 0.7,
@@ -188,6 +193,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "White willow (Salix alba)",
         description: "Lanceolate, about 7:1, finely serrate, pinnate with many secondary veins, short petiole.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Willow,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.14,
             leaf.leaf_base_shape = 1.0,
@@ -217,6 +223,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Black tupelo (Nyssa sylvatica)",
         description: "Elliptic to obovate with an entire margin and pinnate veins looping before the edge.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Tupelo,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.5,
             leaf.leaf_base_shape = 1.1,
@@ -239,6 +246,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Ginkgo (Ginkgo biloba)",
         description: "A fan notched in the middle, its veins forking again and again in two from the petiole (dichotomous), no midrib.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Ginkgo,
             leaf.leaf_outline = LeafOutline::Palmate,
             leaf.leaf_aspect = 1.35,
             leaf.leaf_lobes = 2,
@@ -265,6 +273,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Scots pine (Pinus sylvestris)",
         description: "Needles in fascicles of two from one sheath, each long, narrow and pointed, no veins, 30 fascicles all around a shoot.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_shoot = 30,
             leaf.leaf_shoot_angle = 40.0,
             leaf.leaf_shoot_needle = 0.4,
@@ -289,6 +298,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Silver fir (Abies alba)",
         description: "Single flat needles with rounded tips, set one by one along the twig and twisted into two flat ranks, 56 to a shoot.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_shoot = 56,
             leaf.leaf_shoot_flat = true,
             leaf.leaf_shoot_angle = 66.0,
@@ -313,6 +323,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Italian cypress (Cupressus sempervirens)",
         description: "Tiny scale leaves pressed flat around thin cord-like branchlets, which stand all around the shoot close to it; the edge of each cord shows the scales.",
         values: param_values! {
+            foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.1,
             leaf.leaf_base_shape = 0.35,
@@ -338,6 +349,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Superformula: Oak (guide)",
         description: "The Leaf Generation guide's Oak: a superformula with m = 7 (a seven-pointed star), dense open venation.",
         values: superformula! {
+            foliage.leaf_phenology = LeafPhenology::Oak,
             leaf.leaf_m = 7.0,
             leaf.leaf_a = 1.0,
             leaf.leaf_b = 1.0,
@@ -364,6 +376,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Superformula: Maple (guide)",
         description: "The guide's Maple: a five-pointed superformula star with closed, net-like fine venation.",
         values: superformula! {
+            foliage.leaf_phenology = LeafPhenology::Maple,
             leaf.leaf_m = 5.0,
             leaf.leaf_a = 1.0,
             leaf.leaf_b = 1.0,
@@ -390,6 +403,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Superformula: Birch (guide)",
         description: "The guide's Birch: an elongated superformula oval with small serrate teeth, open venation.",
         values: superformula! {
+            foliage.leaf_phenology = LeafPhenology::Birch,
             leaf.leaf_m = 2.0,
             leaf.leaf_a = 1.0,
             leaf.leaf_b = 0.6,
@@ -414,6 +428,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Superformula: Willow (guide)",
         description: "The guide's Willow: a narrow superformula with a smooth edge and sparse open venation.",
         values: superformula! {
+            foliage.leaf_phenology = LeafPhenology::Willow,
             leaf.leaf_m = 2.0,
             leaf.leaf_a = 1.0,
             leaf.leaf_b = 0.3,
@@ -437,6 +452,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Superformula: Pine needle (guide)",
         description: "The guide's Pine: a flat superformula needle, tiny width, smooth edge, no veins.",
         values: superformula! {
+            foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_m = 2.0,
             leaf.leaf_a = 1.0,
             leaf.leaf_b = 0.05,

@@ -32,6 +32,10 @@ pub struct LeafTexture {
     pub normal: Vec<u8>,
 }
 
+/// The blade's green (sRGB, 0..1), the colour the leaf's tint multiplies (and what the
+/// seasons' palettes are given against, [`crate::season`]).
+pub const BLADE: [f32; 3] = [0.30, 0.52, 0.18];
+
 /// Texture size for a UV box: `(width, height)`, both powers of two.
 pub fn size(level: u32, frame: &UvFrame) -> (usize, usize) {
     let h = 1usize << level;
@@ -59,7 +63,7 @@ pub fn bake(field: &VeinField, outline: &[Vec2], displacement: f32) -> LeafTextu
     let (w, h) = (field.w, field.h);
     let texel = field.texel();
     let inside = fill_rows(outline, field.frame.lo, texel, w, h);
-    let blade = Vec3::new(0.30, 0.52, 0.18);
+    let blade = Vec3::from(BLADE);
     let vein = Vec3::new(0.72, 0.80, 0.45);
     let blade_rgb = [byte(blade.x), byte(blade.y), byte(blade.z)];
     let mut color = vec![0u8; w * h * 4];

@@ -151,6 +151,31 @@ param_enum! {
     }
 }
 
+// Seasons (`season.rs`).
+
+param_enum! {
+    /// Whose calendar and autumn colours a tree's leaves follow through the Season
+    /// ([`crate::season`]): one entry per species leaf of the leaf presets.
+    LeafPhenology {
+        /// Quaking aspen: early leaf-out, golden yellow in early October (the default leaf).
+        Aspen = 0, "Aspen";
+        /// Maple: scarlet to orange in October.
+        Maple = 1, "Maple";
+        /// Oak: late leaf-out, russet and brown, leaves held into December.
+        Oak = 2, "Oak";
+        /// Birch: yellow in October.
+        Birch = 3, "Birch";
+        /// Ginkgo: butter yellow late in October, then all leaves drop within days.
+        Ginkgo = 4, "Ginkgo";
+        /// Willow: first to leaf out, yellow late, leaves kept into November.
+        Willow = 5, "Willow";
+        /// Black tupelo: the first to turn, crimson and purple-red in late September.
+        Tupelo = 6, "Tupelo";
+        /// Evergreen conifer: keeps its needles, a slight bronzing in winter.
+        Conifer = 7, "Evergreen Conifer";
+    }
+}
+
 // Bark (`mesh/bark`).
 
 param_enum! {

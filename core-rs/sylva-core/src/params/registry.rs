@@ -10,8 +10,8 @@
 //! The macro is `define_params!` (`params/macros.rs`).
 
 use super::enums::{
-    BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPrimaries, LeafVenation,
-    TwigDetail,
+    BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries,
+    LeafVenation, TwigDetail,
 };
 use super::macros::define_params;
 use super::{ParamSpec, ParamValue, Stage, GROUPS};
@@ -180,6 +180,8 @@ define_params! {
             "Each leaf position carries a small twig of three leaves (a centre leaf and two side leaves).";
         foliage_color_v: f32 = 0.15; [0.0, 1.0, 0.01] "", "Foliage", "Colour Variation", Foliage,
             "Random per-leaf tint: brightness and a shift toward yellow.";
+        season: f32 = 7.0; [1.0, 12.99, 0.05] "month", "Foliage", "Season", Foliage,
+            "Month of the year (northern temperate; 1 = 1 January, 7.5 = mid-July): spring leaves flush small and pale, autumn leaves turn by species and light (sun leaves first) and fall, deciduous trees are bare in winter and conifers bronze slightly. July (the default) is the summer tree.";
         foliage_lod: LeafLod = LeafLod::Auto; [0, 3, 1] "", "Foliage", "Leaf Mesh", Leaf,
             "Geometry drawn for every leaf: Auto (the full blade while the foliage stays under 200,000 triangles, else billboards, else cards), Blade, Billboards or Card.";
         mesh_quality: f32 = 1.0; [0.25, 4.0, 0.05] "", "Quality", "Mesh Quality", Mesh,
@@ -208,6 +210,8 @@ define_params! {
             "Leaf stalk between the twig and the blade (leaf lengths); the tree hangs the blade this far from its stem.";
         leaf_petiole_flat: bool = true; [0, 1, 1] "", "Leaf", "Flat Petiole", Leaf,
             "The petiole is flattened sideways, across the blade's plane, so the leaf flutters in the lightest wind (aspens, poplars).";
+        leaf_phenology: LeafPhenology = LeafPhenology::Aspen; [0, 7, 1] "", "Leaf", "Phenology", Foliage,
+            "Whose calendar and autumn colours the leaves follow through the Season: when they leaf out, turn and fall, and their autumn palette (aspen, birch, ginkgo and willow yellow, maple scarlet to orange, oak russet and brown, tupelo crimson); an Evergreen Conifer keeps its needles.";
         leaf_fascicle: u32 = 1; [1, 5, 1] "", "Leaf", "Needles per Fascicle", Leaf,
             "1 = one leaf; 2 to 5 = a pine fascicle: that many round needles (the outline's length and width) from one sheath.";
         leaf_shoot: u32 = 0; [0, 120, 1] "", "Leaf", "Needles per Shoot", Leaf,

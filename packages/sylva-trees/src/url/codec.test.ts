@@ -105,6 +105,19 @@ describe('round trip', () => {
     }
   });
 
+  it('carries the season and the phenology of a maple in October', () => {
+    const umbrella = realPresets().find((p) => p.name === 'umbrella');
+    if (!umbrella) throw new Error('no umbrella preset');
+    const params = { ...applyPreset(registry, umbrella), season: 10.5 };
+    expect(params.leaf_phenology).toBe(spec('leaf_phenology').options?.indexOf('Maple'));
+    const query = encodeParams(registry, params);
+    expect(query).toContain('season=10.5');
+    expect(query).toContain('leaf_phenology=1');
+    expect(decodeQuery(registry, `?${query}`).params).toEqual(params);
+    // July, the default, stays out of the link.
+    expect(encodeParams(registry, { ...params, season: 7 })).not.toContain('season');
+  });
+
   it('keeps the debug flag when rebuilding the page query', () => {
     const search = buildSearch(registry, { ...defaults, seed: 3 }, '?debug=1&seed=9');
     expect(search).toBe('?v=1&seed=3&debug=1');
