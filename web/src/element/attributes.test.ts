@@ -13,6 +13,7 @@ describe('resolveTreeAttributes', () => {
     expect(resolveTreeAttributes(registry, presets, none)).toEqual({
       params: defaultParams(registry),
       volumes: [],
+      edits: [],
       messages: [],
       fatal: null,
     });
@@ -67,5 +68,19 @@ describe('resolveTreeAttributes', () => {
     expect(r.volumes).toEqual([
       { kind: 'sphere', group: 'crown', centre: [0, 5, 0], size: [2, 2, 2] },
     ]);
+  });
+
+  it('reads hand edits from e= (a share link\'s edits), and says why it ignores bad ones', () => {
+    const r = resolveTreeAttributes(registry, presets, {
+      ...none,
+      params: `levels=2&e=${encodeURIComponent('1~c80.410.-20')}`,
+    });
+    expect(r.edits).toEqual([{ op: 'cut', at: [0.8, 4.1, -0.2] }]);
+    expect(r.params.levels).toBe(2);
+    expect(r.messages).toEqual([]);
+    const bad = resolveTreeAttributes(registry, presets, { ...none, params: 'e=1~x1.2' });
+    expect(bad.edits).toEqual([]);
+    expect(bad.messages.join(' ')).toMatch(/edit/i);
+    expect(bad.fatal).toBeNull();
   });
 });

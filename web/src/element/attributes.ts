@@ -1,17 +1,21 @@
 /**
  * `<sylva-tree>` attributes → generator params (pure): the `preset` (or the defaults), then the
- * `params` query (`id=value&...`, validated exactly like a share link), then `seed`.
+ * `params` query (`id=value&...`, with `vol=` growth volumes and `e=` hand edits, validated
+ * exactly like a share link), then `seed`.
  */
 import {
   applyPreset,
   defaultParams,
   type Params,
   type ParamSpec,
+  type Edit,
   type Preset,
   type VolumePrimitive,
 } from 'sylva-trees/core';
 import {
+  decodeEdits,
   decodeVolumes,
+  EDITS_KEY,
   FORMAT_VERSION,
   MAX_QUERY_LENGTH,
   parseValue,
@@ -30,6 +34,8 @@ export interface TreeAttributes {
 export interface ResolvedTree {
   params: Params;
   volumes: VolumePrimitive[];
+  /** The hand edits (`e=` in `params`, as a share link has them). */
+  edits: Edit[];
   /** Ignored values: the tree is still generated without them. */
   messages: string[];
   /** A problem that makes the request meaningless (unknown preset, over-long params). */
@@ -60,6 +66,7 @@ export function resolveTreeAttributes(
   const fail = (fatal: string): ResolvedTree => ({
     params: defaultParams(registry),
     volumes: [],
+    edits: [],
     messages,
     fatal,
   });
@@ -78,6 +85,7 @@ export function resolveTreeAttributes(
   }
 
   let volumes: VolumePrimitive[] = [];
+  let edits: Edit[] = [];
   const query = (attributes.params ?? '').trim().replace(/^\?/, '');
   if (query.length > MAX_QUERY_LENGTH) {
     return fail(`The params attribute is too long (limit ${MAX_QUERY_LENGTH} characters).`);
@@ -105,6 +113,12 @@ export function resolveTreeAttributes(
       decoded.messages.forEach(note);
       continue;
     }
+    if (key === EDITS_KEY) {
+      const decoded = decodeEdits(raw);
+      edits = decoded.edits;
+      decoded.messages.forEach(note);
+      continue;
+    }
     const spec = byId.get(key);
     if (!spec) {
       note(`Ignored unknown parameter "${shown(key)}" in params.`);
@@ -127,5 +141,5 @@ export function resolveTreeAttributes(
     if (typeof value === 'number') params.seed = value;
     else note(`Ignored the seed attribute: ${value}.`);
   }
-  return { params, volumes, messages, fatal: null };
+  return { params, volumes, edits, messages, fatal: null };
 }

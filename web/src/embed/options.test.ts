@@ -102,6 +102,7 @@ describe('snippets', () => {
     registry,
     params,
     volumes: '',
+    edits: '',
     appHref: 'https://example.org/sylva/index.html?v=1&seed=7&levels=2',
     autorotate: true,
     background: 'transparent',
@@ -135,6 +136,15 @@ describe('snippets', () => {
     expect(html).toContain('params="levels=2"');
     expect(html).toContain('background="#112233"');
     expect(html).not.toContain('autorotate');
+  });
+
+  it('both snippets carry the hand edits (e=) as the share link does', () => {
+    const edits = '1~c80.410.-20';
+    const url = new URL(embedUrl({ ...input, edits }));
+    expect(url.searchParams.get('e')).toBe(edits);
+    const element = elementSnippet({ ...input, edits });
+    expect(element).toContain(`params="levels=2&amp;e=${encodeURIComponent(edits)}"`);
+    expect(new URL(embedUrl(input)).searchParams.get('e')).toBeNull();
   });
 
   it('escapes attribute text', () => {

@@ -4,6 +4,7 @@
  */
 import { Color } from 'three';
 import {
+  EDITS_KEY,
   encodeParams,
   FORMAT_VERSION,
   MAX_QUERY_LENGTH,
@@ -146,6 +147,8 @@ export interface SnippetInput {
   params: Params;
   /** The `vol=` value of the growth volumes ('' when none). */
   volumes: string;
+  /** The `e=` value of the hand edits ('' when none, or too long for a link). */
+  edits: string;
   /** The page the app runs at (`location.href`): the embed URLs are resolved against it. */
   appHref: string;
   autorotate: boolean;
@@ -168,6 +171,7 @@ export function escapeAttribute(text: string): string {
 export function embedUrl(input: SnippetInput): string {
   const parts = [encodeParams(input.registry, input.params)];
   if (input.volumes !== '') parts.push(`${VOLUMES_KEY}=${encodeURIComponent(input.volumes)}`);
+  if (input.edits !== '') parts.push(`${EDITS_KEY}=${encodeURIComponent(input.edits)}`);
   if (input.autorotate) parts.push('autorotate=1');
   if (input.background !== '') parts.push(`bg=${encodeURIComponent(input.background)}`);
   return `${new URL('embed.html', input.appHref).href}?${parts.join('&')}`;
@@ -194,6 +198,7 @@ export function elementSnippet(input: SnippetInput): string {
     .split('&')
     .filter((p) => !p.startsWith('v='));
   if (input.volumes !== '') query.push(`${VOLUMES_KEY}=${encodeURIComponent(input.volumes)}`);
+  if (input.edits !== '') query.push(`${EDITS_KEY}=${encodeURIComponent(input.edits)}`);
   const attrs: string[] = [];
   if (seedSpec) attrs.push(`seed="${input.params[seedSpec.id] ?? seedSpec.default}"`);
   if (query.length > 0) attrs.push(`params="${escapeAttribute(query.join('&'))}"`);

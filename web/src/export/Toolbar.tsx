@@ -220,7 +220,7 @@ export function Toolbar(props: Props) {
           if (file) loadPresetFile(file, registry, onLoadParams, setStatus);
         }}
       />
-      <EmbedButton registry={registry} params={params} volumesRef={volumesRef} />
+      <EmbedButton {...{ registry, params, volumesRef, editsRef }} />
       <a
         className="toolbar-link"
         href="docs.html"

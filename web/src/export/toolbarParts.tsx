@@ -3,9 +3,9 @@
  * and the file actions (PNG screenshot, preset JSON save and load).
  */
 import { useEffect, useState, type RefObject } from 'react';
-import type { Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
 import { EmbedDialog } from '../embed/EmbedDialog';
-import { encodeVolumes } from 'sylva-trees/url';
+import { encodeEdits, encodeVolumes, MAX_EDITS_LINK_LENGTH } from 'sylva-trees/url';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { canvasPng, downloadBlob, readTextFile } from './download';
 import { MAX_PRESET_FILE_BYTES, parsePresetFile, presetFileText } from './presetFile';
@@ -43,14 +43,28 @@ export function ToolbarStatus({ status, onDismiss }: { status: Status; onDismiss
   );
 }
 
-/** "Copy embed code": the dialog gets the volumes and page URL as they were when it opened. */
+/** The `e=` text of `edits` for an embed link: '' when none or too long for a link. */
+export function linkEdits(edits: readonly Edit[]): string {
+  const text = encodeEdits(edits);
+  return text.length <= MAX_EDITS_LINK_LENGTH ? text : '';
+}
+
+/**
+ * "Copy embed code": the dialog gets the volumes, hand edits and page URL as they were when it
+ * opened. Edits too long for a link are left out, as the share link leaves them out.
+ */
 export function EmbedButton(props: {
   registry: readonly ParamSpec[];
   params: Params;
   volumesRef: RefObject<VolumePrimitive[]>;
+  editsRef: RefObject<Edit[]>;
 }) {
-  const [embedAt, setEmbedAt] = useState<{ volumes: string; appHref: string } | null>(null);
-  const { registry, params, volumesRef } = props;
+  const [embedAt, setEmbedAt] = useState<{
+    volumes: string;
+    edits: string;
+    appHref: string;
+  } | null>(null);
+  const { registry, params, volumesRef, editsRef } = props;
   return (
     <>
       <button
@@ -59,6 +73,7 @@ export function EmbedButton(props: {
         onClick={() =>
           setEmbedAt({
             volumes: encodeVolumes(volumesRef.current ?? []),
+            edits: linkEdits(editsRef.current ?? []),
             appHref: window.location.href,
           })
         }
