@@ -36,6 +36,22 @@ pub const MAX_STROKE_POINTS: usize = 4_096;
 pub const MAX_OUTLINE_POINTS: usize = 1_024;
 /// Most points in all strokes and outlines together.
 pub const MAX_POINTS: usize = 65_536;
+/// Longest JSON text read for parameters or an edit list (bytes): 4 MiB holds [`MAX_POINTS`]
+/// brush points written at full precision; longer text is refused before it is parsed (a
+/// hostile link or file with millions of points answers at once instead of parsing for seconds).
+pub const MAX_JSON_BYTES: usize = 4 << 20;
+
+/// An error for JSON text past [`MAX_JSON_BYTES`]: `what` is what it was to hold.
+pub(crate) fn too_long(what: &str, len: usize) -> SylvaError {
+    bad(
+        "edits",
+        format!(
+            "{what} is {:.1} MB of JSON, more than {} MB: an edit list holds at most {MAX_POINTS} points (split the work, or paint fewer, shorter strokes)",
+            len as f64 / 1_048_576.0,
+            MAX_JSON_BYTES >> 20
+        ),
+    )
+}
 /// Largest distance of any coordinate from the origin along any axis (m).
 pub const MAX_COORD: f32 = 200.0;
 /// Allowed paint brush radius (m).

@@ -108,6 +108,9 @@ impl TreeParams {
 
     /// Parse a JSON object `{"id": number, ...}`; booleans are accepted as 0/1.
     pub fn from_json(json: &str) -> Result<TreeParams, SylvaError> {
+        if json.len() > edits::MAX_JSON_BYTES {
+            return Err(edits::too_long("the parameters' text", json.len()));
+        }
         let map: BTreeMap<String, serde_json::Value> = serde_json::from_str(json)
             .map_err(|e| SylvaError::Input { message: format!("parameters must be a JSON object of numbers: {e}") })?;
         let mut p = TreeParams::default();

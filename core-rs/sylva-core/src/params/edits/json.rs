@@ -4,7 +4,9 @@
 //! field; the parsed list is then [`validate`](super::validate)d.
 
 use super::validate::{check_count, check_points, validate};
-use super::{bad, Bend, Crown, Cut, Edit, Paint, MAX_OUTLINE_POINTS, MAX_STROKE_POINTS, VERSION};
+use super::{
+    bad, too_long, Bend, Crown, Cut, Edit, Paint, MAX_JSON_BYTES, MAX_OUTLINE_POINTS, MAX_STROKE_POINTS, VERSION,
+};
 use crate::error::SylvaError;
 use glam::{Vec2, Vec3};
 use serde_json::{json, Map, Value};
@@ -21,6 +23,9 @@ pub fn from_json_value(value: &Value) -> Result<Vec<Edit>, SylvaError> {
 /// Parse an edit list document `{"version": 1, "edits": [...]}` (the CLI's `--edits FILE.json`,
 /// the app's export); a bare array of edits is accepted too.
 pub fn from_json(json: &str) -> Result<Vec<Edit>, SylvaError> {
+    if json.len() > MAX_JSON_BYTES {
+        return Err(too_long("the edit list", json.len()));
+    }
     let value: Value = serde_json::from_str(json).map_err(|e| SylvaError::Input {
         message: format!("the edit list must be JSON like {{\"version\": 1, \"edits\": [...]}}: {e}"),
     })?;
