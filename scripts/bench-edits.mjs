@@ -4,8 +4,9 @@
 // makes them) and timed from the dispatch to the answer in the scene (`sylva:applied`: buffers
 // received, attributes set, ready for the next frame):
 //   - paint: a 40-point stroke through the side of the crown, from inside it out into the sky,
-//     seen from the side; per pointer move (each adds a brush point), the time to the answer;
-//     settle_ms = release to the full tree.
+//     seen from the side: the press (its first brush point; answered before the hand moves), then
+//     per pointer move (each adds a brush point) the time to the answer; settle_ms = release to
+//     the full tree.
 //   - cut: 10 clicks with the Cut tool on main branches (bark 4 to 9 m up, near 1 m from the
 //     trunk's axis, away from earlier cuts), 0.3 s apart; per click, the release (which cuts; the
 //     press a tenth of a second before it found the branch) to the answer, and settle_ms =
@@ -129,22 +130,8 @@ export async function benchPaint(browser, url) {
     const [sx, sy] = await project([edge - 4, midY - 1, 0]);
     const [ex, ey] = await project([edge + 4, midY + 1, 0]);
     await page.keyboard.press('p');
-    await page.evaluate(
-      ([x, y]) => {
-        document.querySelector('canvas[data-testid="viewer-canvas"]').dispatchEvent(
-          new PointerEvent('pointerdown', {
-            clientX: x,
-            clientY: y,
-            pointerId: 1,
-            button: 0,
-            buttons: 1,
-            bubbles: true,
-            cancelable: true,
-          }),
-        );
-      },
-      [sx, sy],
-    );
+    // The press starts the stroke (its first brush point grows); the hand moves after its answer.
+    const press = await pointer(page, 'pointerdown', sx, sy, 'first');
     const times = [];
     const parts = [];
     let skipped = 0;
@@ -164,7 +151,7 @@ export async function benchPaint(browser, url) {
     if (process.env.SYLVA_BENCH_VERBOSE) {
       const m = (k) => median(parts.map((p) => p[k]))?.toFixed(1);
       console.error(
-        `bench: paint ${times.map((t) => t.toFixed(1)).join(' ')} (skipped ${skipped})\n` +
+        `bench: paint press ${press?.first.toFixed(1)}, moves ${times.map((t) => t.toFixed(1)).join(' ')} (skipped ${skipped})\n` +
           `  medians: input to request ${m(0)}, request to answer ${m(2)} (core ${m(1)}), viewer ${m(3)} ms`,
       );
     }

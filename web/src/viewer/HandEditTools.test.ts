@@ -60,24 +60,26 @@ describe('HandEditTools', () => {
 
   // Regression: every move waited for the next animation frame before the stroke grew, half a
   // frame on average and a whole one at worst, added to every answer while painting.
-  it('handles a paint move at once, and moves within half a frame at the next frame', () => {
+  it('grows from the press, handles a move at once, and moves within half a frame at the next frame', () => {
     const { tools, drafts, fire } = setup();
     tools.set('paint', { radius: 0.6, density: 400, segment: 0.25, kill: 0.4 });
     fire('pointerdown', 200, 200);
+    // The press starts the stroke: its first brush point grows at once.
+    expect(drafts).toHaveLength(1);
     clock += 16;
     fire('pointermove', 220, 200);
-    expect(drafts).toHaveLength(1);
+    expect(drafts).toHaveLength(2);
     expect(frames).toHaveLength(0);
     // A fast pen: the next move 2 ms later waits for the frame; a newer one replaces it.
     clock += 2;
     fire('pointermove', 240, 200);
     clock += 2;
     fire('pointermove', 260, 200);
-    expect(drafts).toHaveLength(1);
+    expect(drafts).toHaveLength(2);
     expect(frames).toHaveLength(1);
     frames.shift()?.(clock);
-    expect(drafts).toHaveLength(2);
-    const last = drafts[1];
+    expect(drafts).toHaveLength(3);
+    const last = drafts[2];
     expect(last?.op).toBe('paint');
     if (last?.op === 'paint') expect(last.points).toHaveLength(3);
     tools.dispose();

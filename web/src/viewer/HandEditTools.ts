@@ -231,6 +231,12 @@ export class HandEditTools {
     this.pointerId = event.pointerId;
     this.host.domElement.setPointerCapture?.(event.pointerId);
     this.showDrag();
+    // A stroke grows from the press, as NewGrowth's does: the tree around its first brush point
+    // (and the start of its growth, which samples the whole tree) is ready when the hand moves.
+    if (this.drag?.tool === 'paint') {
+      const edit = this.editOf(this.drag);
+      if (edit) this.events.draft(edit);
+    }
   }
 
   private move(event: PointerEvent): void {
