@@ -70,7 +70,7 @@ describe('resolveTreeAttributes', () => {
     ]);
   });
 
-  it('reads hand edits from e= (a share link\'s edits), and says why it ignores bad ones', () => {
+  it("reads hand edits from e= (a share link's edits), and says why it ignores bad ones", () => {
     const r = resolveTreeAttributes(registry, presets, {
       ...none,
       params: `levels=2&e=${encodeURIComponent('1~c80.410.-20')}`,
