@@ -6,7 +6,12 @@ import { describe, expect, it } from 'vitest';
 import { loadWasm } from '../testing/realWasm';
 
 const brush = { radius: 0.6, density: 400, segment: 0.25, kill: 0.4 };
-const paint = (points: unknown[], extra: object = {}) => ({ op: 'paint', points, ...brush, ...extra });
+const paint = (points: unknown[], extra: object = {}) => ({
+  op: 'paint',
+  points,
+  ...brush,
+  ...extra,
+});
 
 /** [what, edit list, the field the error names, a part of its message]. */
 const CASES: [string, unknown[], string, RegExp][] = [
@@ -23,13 +28,28 @@ const CASES: [string, unknown[], string, RegExp][] = [
   ],
   [
     'a runaway stroke',
-    [paint(Array.from({ length: 200 }, (_, i) => [i / 10 - 10, 5, 0]), { radius: 3, density: 5000 })],
+    [
+      paint(
+        Array.from({ length: 200 }, (_, i) => [i / 10 - 10, 5, 0]),
+        { radius: 3, density: 5000 },
+      ),
+    ],
     'edits[0].density',
     /markers/,
   ],
   [
     'an outline that crosses itself',
-    [{ op: 'crown', outline: [[0, 2], [3, 8], [3, 2], [0, 9]] }],
+    [
+      {
+        op: 'crown',
+        outline: [
+          [0, 2],
+          [3, 8],
+          [3, 2],
+          [0, 9],
+        ],
+      },
+    ],
     'edits[0].outline',
     /crosses itself/,
   ],
