@@ -1,24 +1,27 @@
-// `npm run gallery`: renders the look of every preset, three trees through the seasons and
-// close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) in
-// the built app (web/dist, embed page, headless Chromium with software WebGL) into
-// docs/gallery/*.png (palette PNGs, well under 150 KB each) and writes docs/gallery.md. Each section is a module in scripts/gallery/ with
+// `npm run gallery`: renders the look of every preset, three trees through the seasons,
+// close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) and
+// the Shape by hand tools before and after in the built app (web/dist, embed page, headless
+// Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under 150 KB each) and
+// writes docs/gallery.md. Each section is a module in scripts/gallery/ with
 // `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS. The leaf
 // sheet (scripts/gallery-leaves.mjs, docs/gallery-leaves.md) follows (`--only leaves` alone).
+// `--only SECTION_ID` renders one section and rewrites only its part of docs/gallery.md.
 //
 // Usage: node scripts/gallery.mjs [--only SECTION_ID] [--presets a,b,c]
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
 import { serve } from './preview-server.mjs';
-import { galleryContext, markdown } from './gallery/context.mjs';
+import { galleryContext, markdown, updateSections } from './gallery/context.mjs';
 import { closeupsSection } from './gallery/closeups.mjs';
+import { handEditsSection } from './gallery/handEdits.mjs';
 import { presetsSection } from './gallery/presets.mjs';
 import { seasonsSection } from './gallery/seasons.mjs';
 import { galleryLeaves } from './gallery-leaves.mjs';
 
 /** The gallery's sections, in page order. */
-export const SECTIONS = [presetsSection, seasonsSection, closeupsSection];
+export const SECTIONS = [presetsSection, seasonsSection, closeupsSection, handEditsSection];
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const PORT = 4393;
@@ -47,7 +50,12 @@ async function main() {
       );
       done.push({ section, shots });
     }
-    if (!only && !presetFilter) writeFileSync(`${root}/docs/gallery.md`, markdown(done));
+    const page = `${root}/docs/gallery.md`;
+    if (!presetFilter && !only) writeFileSync(page, markdown(done));
+    // One section: only its part of the page changes.
+    else if (!presetFilter && done.length) {
+      writeFileSync(page, updateSections(readFileSync(page, 'utf8'), done, SECTIONS));
+    }
   } finally {
     await browser.close();
     await stop();

@@ -1,7 +1,9 @@
 // What the gallery's sections share: the page (the embed page at 480x360, wind off), opening a
 // tree, aiming the camera, shooting a palette PNG, the native CLI's reports, and the markdown.
 import { execFileSync } from 'node:child_process';
-import { writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import UPNG from 'upng-js';
 import { nativeCli } from '../native-cli.mjs';
 
@@ -37,6 +39,19 @@ export async function galleryContext(browser, url, outDir, options = {}) {
     });
     return JSON.parse(out.toString());
   };
+  /** The native tree with the hand edits `edits` (JSON form): its `hash` and `edits` report. */
+  const edited = (values, edits) => {
+    const dir = mkdtempSync(join(tmpdir(), 'sylva-gallery-'));
+    try {
+      const file = join(dir, 'edits.json');
+      writeFileSync(file, JSON.stringify({ version: 1, edits }));
+      const sets = Object.entries(values).flatMap(([k, v]) => ['--set', `${k}=${v}`]);
+      const out = execFileSync(cli, ['generate', ...sets, '--edits', file, '--leaves', 'none']);
+      return JSON.parse(out.toString());
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  };
   const presets = JSON.parse(execFileSync(cli, ['presets']).toString());
   return {
     page,
@@ -44,6 +59,10 @@ export async function galleryContext(browser, url, outDir, options = {}) {
     presets,
     /** The native CLI's `--report skeleton|mesh` of a tree. */
     report,
+    /** The native CLI's hash and per-edit report (`resolved`, `why`) of a tree with hand edits. */
+    edited,
+    /** The content hash of the tree the page shows. */
+    shownHash: () => page.evaluate(() => document.body.dataset.hash),
     /**
      * Opens a tree (with the hand edits `edits`, a link's `e=` value, if given) and waits until it
      * is drawn; returns the camera the embed framed it with.
@@ -110,11 +129,35 @@ export function markdown(done) {
     'Every leaf preset, drawn and rendered, is on the [leaf sheet](gallery-leaves.md).',
     '',
   ];
-  for (const { section, shots } of done) {
-    lines.push(`## ${section.title}`, '', section.intro, '');
-    lines.push(...section.layout(shots), '');
-  }
+  for (const d of done) lines.push(...sectionMarkdown(d));
   return `${lines.join('\n')}\n`;
+}
+
+/** One section's markdown: its heading, intro and images. */
+function sectionMarkdown({ section, shots }) {
+  return [`## ${section.title}`, '', section.intro, '', ...section.layout(shots), ''];
+}
+
+/**
+ * docs/gallery.md `md` with the sections of `done` replaced (each from its heading to the next
+ * one) or, when new, put where `sections` (all of them, in page order) has them: what `--only
+ * SECTION_ID` writes, leaving the other sections as they are.
+ */
+export function updateSections(md, done, sections) {
+  // The page is a header, then per section: its heading, intro and rows, then a blank line.
+  const lines = md.split('\n').slice(0, -1);
+  const starts = lines.flatMap((l, i) => (l.startsWith('## ') ? [i] : []));
+  const header = lines.slice(0, starts[0] ?? lines.length);
+  const chunks = new Map(
+    starts.map((s, k) => [lines[s].slice(3), lines.slice(s, starts[k + 1] ?? lines.length)]),
+  );
+  for (const d of done) chunks.set(d.section.title, sectionMarkdown(d));
+  // Known sections in page order, then any others the page had, at the end.
+  const order = [
+    ...sections.map((s) => s.title).filter((t) => chunks.has(t)),
+    ...[...chunks.keys()].filter((t) => !sections.some((s) => s.title === t)),
+  ];
+  return `${[...header, ...order.flatMap((t) => chunks.get(t))].join('\n')}\n`;
 }
 
 /** Rows of a markdown table of images, `perRow` to a row, with captions. */
