@@ -45,6 +45,20 @@ for (const [name, season] of [
     args: ['--preset', name, '--set', `season=${season}`],
   });
 }
+// Age: the default tree at 10 of its 40 years, Black Tupelo at 30 of its 80, and Grown:
+// Broadleaf at 12 of its 35 (the growth replay: birth years, the growth curve, young stems).
+for (const [name, age] of [
+  ['default', 10],
+  ['black_tupelo', 30],
+  ['grown_broadleaf', 12],
+]) {
+  const preset = presets.find((p) => p.name === name);
+  cases.push({
+    name: `${name} age ${age}`,
+    values: { ...preset.values, age },
+    args: ['--preset', name, '--set', `age=${age}`],
+  });
+}
 // Hand edits (a cut and a bend on two main branches of the default tree): the same edits give
 // the same bytes natively (`--edits FILE`) and in wasm (the `edits` array of the parameters).
 const edits = [

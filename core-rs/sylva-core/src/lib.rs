@@ -14,6 +14,7 @@
 //! * [`rng`]: one portable PRNG with a named stream per stage.
 //! * [`crown`]: Weber & Penn's ShapeRatio crown envelopes.
 //! * [`skeleton`]: Weber & Penn stems.
+//! * [`age`]: a tree's growth replayed to a younger Age.
 //! * [`growth`]: space-colonization growth, an alternative source of stems.
 //! * [`mesh`]: the output buffer type, the bark tube sweep, Bezier twigs and tree holes.
 //! * [`season`]: the Season's spring flush, autumn colours, leaf fall and bare winter trees.
@@ -25,6 +26,7 @@
 // entry per recursion step: the table has more entries than the default limit of 128.
 #![recursion_limit = "256"]
 
+pub mod age;
 pub mod clock;
 pub mod crown;
 pub mod crown_shade;

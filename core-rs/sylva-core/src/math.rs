@@ -24,6 +24,11 @@ pub fn pow(x: f32, y: f32) -> f32 {
 pub fn exp(x: f32) -> f32 {
     libm::expf(x)
 }
+/// Natural logarithm.
+#[inline]
+pub fn ln(x: f32) -> f32 {
+    libm::logf(x)
+}
 /// Arc cosine with the argument clamped to [-1, 1].
 #[inline]
 pub fn acos(x: f32) -> f32 {

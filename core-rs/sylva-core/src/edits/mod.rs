@@ -14,7 +14,7 @@ pub mod crown;
 pub mod cut;
 pub mod paint;
 pub mod resolve;
-mod stems;
+pub(crate) mod stems;
 
 use crate::error::SylvaError;
 use crate::params::{Crown, Edit};

@@ -22,6 +22,10 @@ define_params! {
             "Random seed: the same parameters and seed always give the same tree.";
         levels: u32 = 3; [1, 4, 1] "", "Tree", "Levels", Skeleton,
             "Number of stem levels including the trunk (3 = trunk + two branch levels).";
+        age: f32 = 40.0; [1.0, 300.0, 0.1] "years", "Tree", "Age", Skeleton,
+            "The tree's age: below its Mature Age a younger tree, its growth replayed (each stem born the year after its parent reached it, growing along a Chapman-Richards curve); at or past it the mature tree.";
+        maturity: f32 = 40.0; [1.0, 300.0, 1.0] "years", "Tree", "Mature Age", Skeleton,
+            "The age at which the tree has the form its other parameters describe; each preset's Age starts here.";
         scale: f32 = 13.0; [0.1, 100.0, 0.1] "m", "Tree", "Scale", Skeleton,
             "Overall size of the tree: trunk length = Scale x Trunk Length.";
         scale_v: f32 = 3.0; [0.0, 50.0, 0.1] "m", "Tree", "Scale Variation", Skeleton,

@@ -12,6 +12,8 @@ pub(super) const GROWN_BROADLEAF: Preset = Preset {
     description: "Space colonization in an ellipsoid crown: a round broadleaf.",
     leaf: "maple",
     values: param_values! {
+        skeleton.maturity = 35.0,
+        skeleton.age = 35.0,
         skeleton.growth_mode = GrowthMode::SpaceColonization,
         skeleton.markers = 3000,
         skeleton.crown_base = 2.5,
@@ -32,6 +34,8 @@ pub(super) const GROWN_SHRUB: Preset = Preset {
     description: "Space colonization from several stems low to the ground: a shrub.",
     leaf: "birch",
     values: param_values! {
+        skeleton.maturity = 12.0,
+        skeleton.age = 12.0,
         mesh.bark_type = BarkType::SmoothBanded,
         skeleton.growth_mode = GrowthMode::SpaceColonization,
         skeleton.markers = 2500,
@@ -56,6 +60,8 @@ pub(super) const GROWN_HEDGEROW: Preset = Preset {
     description: "Seven trunks in a row sharing one long crown: a hedgerow.",
     leaf: "birch",
     values: param_values! {
+        skeleton.maturity = 15.0,
+        skeleton.age = 15.0,
         skeleton.growth_mode = GrowthMode::SpaceColonization,
         skeleton.markers = 6000,
         skeleton.start_points = 7,
@@ -77,6 +83,8 @@ pub(super) const GROWN_BESIDE_WALL: Preset = Preset {
     description: "A tree 1.5 m from a wall: the wall shades the markers near it and the crown leans away.",
     leaf: "aspen",
     values: param_values! {
+        skeleton.maturity = 30.0,
+        skeleton.age = 30.0,
         skeleton.growth_mode = GrowthMode::SpaceColonization,
         skeleton.markers = 3000,
         skeleton.wall = true,
@@ -100,6 +108,8 @@ pub(super) const GROWN_BUSHY: Preset = Preset {
     description: "The SCA add-on's bushy tree: 400 end points, internode 0.5, kill distance 2.5 internodes, 3,000 extra markers per 1,000 iterations, in the add-on's default crown.",
     leaf: "oak",
     values: param_values! {
+        skeleton.maturity = 20.0,
+        skeleton.age = 20.0,
         mesh.bark_type = BarkType::SmoothBanded,
         skeleton.growth_mode = GrowthMode::SpaceColonization,
         skeleton.markers = 400,

@@ -12,6 +12,8 @@ pub(super) const FIR: Preset = Preset {
     description: "A conifer: Conical crown, a straight leader and many short whorled branches.",
     leaf: "fir",
     values: param_values! {
+        skeleton.maturity = 60.0,
+        skeleton.age = 60.0,
         mesh.bark_type = BarkType::Plated,
         skeleton.shape = CrownShape::Conical,
         skeleton.levels = 3,
@@ -64,6 +66,8 @@ pub(super) const OAK: Preset = Preset {
     description: "A broad oak: Spherical crown, sturdy trunk, long crooked limbs.",
     leaf: "oak",
     values: param_values! {
+        skeleton.maturity = 100.0,
+        skeleton.age = 100.0,
         skeleton.shape = CrownShape::Spherical,
         skeleton.levels = 3,
         skeleton.scale = 12.0,
@@ -120,6 +124,8 @@ pub(super) const CYPRESS: Preset = Preset {
     description: "A columnar cypress: Flame crown, widest near its base, sharp tip.",
     leaf: "cypress",
     values: param_values! {
+        skeleton.maturity = 60.0,
+        skeleton.age = 60.0,
         mesh.bark_type = BarkType::Fibrous,
         skeleton.shape = CrownShape::Flame,
         skeleton.levels = 3,
@@ -173,6 +179,8 @@ pub(super) const UMBRELLA: Preset = Preset {
     description: "An umbrella tree: a tall bare trunk under a wide flat-topped dome.",
     leaf: "maple",
     values: param_values! {
+        skeleton.maturity = 30.0,
+        skeleton.age = 30.0,
         mesh.bark_type = BarkType::Plated,
         skeleton.shape = CrownShape::Hemispherical,
         skeleton.levels = 3,
@@ -227,6 +235,8 @@ pub(super) const WEEPING: Preset = Preset {
         "A weeping tree: Inverse Conical crown and negative Attraction Up, as Mtree's Crown Shape guide suggests.",
     leaf: "birch",
     values: param_values! {
+        skeleton.maturity = 30.0,
+        skeleton.age = 30.0,
         mesh.bark_type = BarkType::Fibrous,
         skeleton.shape = CrownShape::InverseConical,
         skeleton.levels = 3,

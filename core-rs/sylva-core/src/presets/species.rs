@@ -10,7 +10,12 @@ pub(super) const QUAKING_ASPEN: Preset = Preset {
     label: "Quaking Aspen",
     description: "Weber & Penn's Quaking Aspen: Tend Flame crown, slender and upright.",
     leaf: "aspen",
-    values: param_values! { mesh.bark_type = BarkType::SmoothBanded, skeleton.shape = CrownShape::TendFlame },
+    values: param_values! {
+        skeleton.maturity = 45.0,
+        skeleton.age = 45.0,
+        mesh.bark_type = BarkType::SmoothBanded,
+        skeleton.shape = CrownShape::TendFlame,
+    },
 };
 
 pub(super) const BLACK_TUPELO: Preset = Preset {
@@ -19,6 +24,8 @@ pub(super) const BLACK_TUPELO: Preset = Preset {
     description: "Weber & Penn's Black Tupelo: Tapered Cylindrical, four levels, wavy twigs.",
     leaf: "tupelo",
     values: param_values! {
+        skeleton.maturity = 80.0,
+        skeleton.age = 80.0,
         skeleton.shape = CrownShape::TaperedCylindrical,
         skeleton.levels = 4,
         skeleton.scale = 23.0,
@@ -75,6 +82,8 @@ pub(super) const WEEPING_WILLOW: Preset = Preset {
     description: "Weber & Penn's Weeping Willow (paper values; Levels 3, see README): split trunk, hanging branches, pruned crown.",
     leaf: "willow",
     values: param_values! {
+        skeleton.maturity = 40.0,
+        skeleton.age = 40.0,
         mesh.bark_type = BarkType::Fibrous,
         skeleton.shape = CrownShape::Cylindrical,
         skeleton.levels = 3,
@@ -157,6 +166,8 @@ pub(super) const CA_BLACK_OAK: Preset = Preset {
     description: "Weber & Penn's California Black Oak: Hemispherical, forked trunk, twisting branches.",
     leaf: "black_oak",
     values: param_values! {
+        skeleton.maturity = 90.0,
+        skeleton.age = 90.0,
         skeleton.shape = CrownShape::Hemispherical,
         skeleton.levels = 3,
         skeleton.scale = 10.0,

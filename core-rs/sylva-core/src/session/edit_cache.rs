@@ -92,16 +92,19 @@ fn continues(old: &Paint, new: &Paint) -> bool {
     brush(old) == brush(new) && new.points.len() >= old.points.len() && new.points[..old.points.len()] == old.points[..]
 }
 
-/// The stems as built from `p` (before any edit but the drawn crown) and a grown tree's markers.
+/// The stems as built from `p` (before any edit but the drawn crown), at its Age ([`crate::age`]),
+/// and a grown tree's markers.
 fn build_stems(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<(Skeleton, Vec<Vec3>), SylvaError> {
     let crown = edits::drawn_crown(&p.edits);
-    Ok(match p.growth_mode {
+    let (mut skeleton, markers) = match p.growth_mode {
         GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
         GrowthMode::SpaceColonization => {
             let grown = growth::grow_with_crown(p, crown, progress)?;
             (growth::skeleton(p, &grown), grown.markers)
         }
-    })
+    };
+    crate::age::replay(&mut skeleton, p.age, p.maturity);
+    Ok((skeleton, markers))
 }
 
 impl EditCache {
