@@ -18,10 +18,17 @@ import { closeupsSection } from './gallery/closeups.mjs';
 import { handEditsSection } from './gallery/handEdits.mjs';
 import { presetsSection } from './gallery/presets.mjs';
 import { seasonsSection } from './gallery/seasons.mjs';
+import { growthSection } from './gallery/growth.mjs';
 import { galleryLeaves } from './gallery-leaves.mjs';
 
 /** The gallery's sections, in page order. */
-export const SECTIONS = [presetsSection, seasonsSection, closeupsSection, handEditsSection];
+export const SECTIONS = [
+  presetsSection,
+  seasonsSection,
+  growthSection,
+  closeupsSection,
+  handEditsSection,
+];
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const PORT = 4393;

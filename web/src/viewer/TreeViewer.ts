@@ -47,6 +47,10 @@ export class TreeViewer {
   private readonly lights: SceneLights;
   private readonly ground: Mesh<CircleGeometry, MeshLambertMaterial>;
   private readonly fog = new Fog(BACKGROUND_COLOR, 10, 40);
+  /** Camera distance of the last framing (m): the fog starts no nearer than its multiple. */
+  private frameDistance = 0;
+  /** Radius of the ground disc for the tree (m): twelve of the tree's bounding radius. */
+  private groundRadius = 1;
   /** The tree's meshes, materials and wind (shared with the `sylva-trees` package). */
   private readonly tree = new TreeObject(() => this.requestRender());
   private readonly envelope = new LineSegments(
@@ -270,8 +274,23 @@ export class TreeViewer {
   /** Sizes the ground disc and the sun's shadow frustum to the tree. */
   private fitStage(sphere: Sphere): void {
     const r = Math.max(sphere.radius, 0.01);
-    this.ground.scale.setScalar(r * 12);
+    this.groundRadius = r * 12;
+    this.ground.scale.setScalar(this.groundRadius);
     this.lights.fit(sphere);
+  }
+
+  /**
+   * The ground fades into the sky instead of ending in a hard horizon: the fog starts beyond
+   * the framed tree, and recedes when the view is farther out than its framing (zoomed out, or
+   * a young tree seen from its mature tree's camera), so the tree itself never fades; the ground
+   * disc grows past the fog.
+   */
+  private fitFog(): void {
+    const d = Math.max(this.frameDistance, this.camera.position.distanceTo(this.controls.target));
+    this.fog.near = d * 1.6;
+    this.fog.far = d * 4;
+    // The ground reaches past the fog: its edge never shows.
+    this.ground.scale.setScalar(Math.max(this.groundRadius, d * 5));
   }
 
   /** Places the camera so the bounding sphere fills the view. */
@@ -283,9 +302,8 @@ export class TreeViewer {
     this.camera.position.copy(sphere.center).addScaledVector(VIEW_DIRECTION, distance);
     this.camera.near = distance / 100;
     this.camera.far = distance * 20;
-    // The ground fades into the sky instead of ending in a hard horizon.
-    this.fog.near = distance * 1.6;
-    this.fog.far = distance * 4;
+    this.frameDistance = distance;
+    this.fitFog();
     this.camera.updateProjectionMatrix();
     this.controls.target.copy(sphere.center);
     this.controls.minDistance = r * 0.2;
@@ -368,6 +386,7 @@ export class TreeViewer {
         this.renderer.setPixelRatio(first);
       }
     }
+    this.fitFog();
     this.renderer.render(this.scene, this.camera);
     if (defer) {
       for (const object of casting) object.castShadow = true;
