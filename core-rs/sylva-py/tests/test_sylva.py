@@ -44,7 +44,10 @@ def test_params_apply_over_the_preset_like_set(oak):
 
 
 def test_edits_as_dicts_or_json_are_the_clis(tmp_path):
-    edits = [{"op": "cut", "at": [0.8, 4.1, -0.2]}, {"op": "bend", "at": [2.0, 5.5, 0.0], "to": [2.3, 4.6, 0.0]}]
+    plain = sylva_trees.generate()
+    # A cut at the bark point farthest out along +x (resolves), and a bend in the air (does not).
+    tip = plain.positions[np.argmax(plain.positions[:, 0])].tolist()
+    edits = [{"op": "cut", "at": tip}, {"op": "bend", "at": [2.0, 5.5, 0.0], "to": [2.3, 4.6, 0.0]}]
     path = tmp_path / "edits.json"
     path.write_text(json.dumps(edits))
     want = cli("--edits", str(path))
@@ -52,6 +55,8 @@ def test_edits_as_dicts_or_json_are_the_clis(tmp_path):
     assert from_dicts.hash == want["hash"]
     assert sylva_trees.generate(edits=json.dumps(edits)).hash == want["hash"]
     assert from_dicts.edits == want["edits"]
+    assert [e["resolved"] for e in from_dicts.edits] == [True, False]
+    assert from_dicts.hash != plain.hash
 
 
 def test_arrays_are_read_only_views_of_the_cores_buffers(oak):
