@@ -7,6 +7,8 @@
 //                           PresetId, the registry and the presets as TypeScript)
 //   packages/sylva-trees/src/core/generated/payloads.ts `sylva params --payloads` (the JSON
 //                           the core returns beside the buffers, as TypeScript interfaces)
+//   core-rs/sylva-py/python/sylva_trees/__init__.pyi     `sylva params --python-stub` (the Python
+//                           package's type stub: Params, PresetName, ParamId, Tree, generate)
 import { execFileSync } from 'node:child_process';
 import { writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -20,6 +22,7 @@ const outputs = [
   ['web/src/docs/cli.json', ['cli-reference', '--json']],
   ['packages/sylva-trees/src/core/generated/params.ts', ['params', '--typescript']],
   ['packages/sylva-trees/src/core/generated/payloads.ts', ['params', '--payloads']],
+  ['core-rs/sylva-py/python/sylva_trees/__init__.pyi', ['params', '--python-stub']],
 ];
 for (const [file, args] of outputs) {
   writeFileSync(`${root}/${file}`, execFileSync(sylva, args, { encoding: 'utf8' }));

@@ -3,7 +3,8 @@
 # Idempotent: each step checks before it acts, so a second run with nothing changed takes seconds.
 #   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build
 #   scripts/setup.sh --test     the same, plus the debug wasm build (the test hook `debug_panic`, in
-#                               packages/sylva-trees/src/wasm-debug) and Chromium for the Playwright tests
+#                               packages/sylva-trees/src/wasm-debug), Chromium for the Playwright tests
+#                               and the Python package's venv and wheel (scripts/python.sh)
 #   scripts/setup.sh --native   the same as plain (the bench also builds the native CLI itself)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -83,6 +84,13 @@ if [ "$WANT_TEST" = 1 ]; then
       die "Chromium is needed for the browser tests and $CHROMIUM is missing: install it (Debian/Ubuntu: sudo apt-get install chromium) or set SYLVA_CHROMIUM to a Chromium binary"
     fi
   fi
+fi
+# 7. For tests: the venv with maturin, numpy and pytest (.venv-py) and the sylva-trees wheel
+#    (scripts/python.sh; rebuilt only when a Rust or Python source is newer than the wheel).
+if [ "$WANT_TEST" = 1 ]; then
+  command -v python3 >/dev/null || die "python3 not found: the Python package's tests need Python 3.9 or newer with venv"
+  step "Python package: venv and wheel (scripts/python.sh wheel)"
+  bash scripts/python.sh wheel
 fi
 step "ready ($(( SECONDS ))s)"
 cd "$ROOT"

@@ -10,6 +10,8 @@ step "scripts: node --test (the Node scripts' own helpers)"
 node --test scripts/
 step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
+step "Python: the sylva-trees wheel against the CLI (pytest; the wheel is rebuilt only when a source changed)"
+bash scripts/python.sh test
 step "glTF: every preset's GLB (instanced and baked leaves) through the Khronos validator"
 node scripts/validate-gltf.mjs
 step "wasm vs native: same content hashes"

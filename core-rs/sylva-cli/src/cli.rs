@@ -52,18 +52,23 @@ pub enum Command {
     /// module packages/sylva-trees/src/core/generated/params.ts (`ParamId`, `PresetId`, ...).
     /// With `--payloads`: the JSON objects the core returns beside the buffers (a tree's meta,
     /// a session update's, the levels of detail's, errors, ...) as the TypeScript interfaces of
-    /// packages/sylva-trees/src/core/generated/payloads.ts.
+    /// packages/sylva-trees/src/core/generated/payloads.ts. With `--python-stub`: the type stub of
+    /// the Python package, core-rs/sylva-py/python/sylva_trees/__init__.pyi (`Params` with one
+    /// documented key per parameter, `PresetName`, `ParamId`, ...).
     #[command(args_override_self = true)]
     Params {
         /// Print the parameter reference as Markdown instead
-        #[arg(long, conflicts_with_all = ["typescript", "payloads"])]
+        #[arg(long, conflicts_with_all = ["typescript", "payloads", "python_stub"])]
         markdown: bool,
         /// Print the registry and the presets as a TypeScript module instead
-        #[arg(long, conflicts_with = "payloads")]
+        #[arg(long, conflicts_with_all = ["payloads", "python_stub"])]
         typescript: bool,
         /// Print the TypeScript interfaces of the core's JSON payloads instead
-        #[arg(long)]
+        #[arg(long, conflicts_with = "python_stub")]
         payloads: bool,
+        /// Print the Python package's type stub (__init__.pyi) instead
+        #[arg(long)]
+        python_stub: bool,
     },
     /// Print the tree presets as JSON
     ///
@@ -265,7 +270,15 @@ pub const EXAMPLES: &[(&str, &[&str])] = &[
             "sylva generate --preset oak --set hole_count=3 --report mesh",
         ],
     ),
-    ("params", &["sylva params --markdown", "sylva params --typescript", "sylva params --payloads"]),
+    (
+        "params",
+        &[
+            "sylva params --markdown",
+            "sylva params --typescript",
+            "sylva params --payloads",
+            "sylva params --python-stub",
+        ],
+    ),
     ("presets", &["sylva presets"]),
     ("leaf-presets", &["sylva leaf-presets"]),
     ("envelope", &["sylva envelope --shape flame --samples 11"]),

@@ -8,6 +8,7 @@
 mod cli;
 mod leaf;
 mod payloads;
+mod python;
 mod reference;
 mod synopsis;
 mod tree;
@@ -61,6 +62,7 @@ fn run(args: &[String]) -> Result<String, String> {
         Command::Generate(a) => tree::generate(&a),
         Command::Params { typescript: true, .. } => Ok(typescript::params_module()),
         Command::Params { payloads: true, .. } => Ok(payloads::payloads_module()),
+        Command::Params { python_stub: true, .. } => Ok(python::stub()),
         Command::Params { markdown: true, .. } => Ok(reference::params_markdown()),
         Command::Params { .. } => Ok(sylva_core::params::registry_json()),
         Command::Presets => Ok(presets::presets_json()),

@@ -118,7 +118,7 @@ pub fn number(kind: ParamKind, v: f64) -> String {
 }
 
 /// The valid values of a parameter: `min to max`, or the numbered enum options.
-fn range(p: &ParamSpec) -> String {
+pub(crate) fn range(p: &ParamSpec) -> String {
     match &p.options {
         Some(opts) => opts.iter().enumerate().map(|(i, o)| format!("{i} {o}")).collect::<Vec<_>>().join(", "),
         None if p.kind == ParamKind::Bool => "0 or 1".to_string(),

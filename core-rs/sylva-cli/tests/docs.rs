@@ -1,7 +1,8 @@
 //! The generated references stay true: docs/cli.md, docs/parameters.md, the docs page's
 //! `web/src/docs/cli.json` and the TypeScript types of the registry and presets
 //! (`packages/sylva-trees/src/core/generated/params.ts`) and of the core's JSON payloads
-//! (`packages/sylva-trees/src/core/generated/payloads.ts`) are exactly what the binary prints
+//! (`packages/sylva-trees/src/core/generated/payloads.ts`) and the Python package's type stub
+//! (`core-rs/sylva-py/python/sylva_trees/__init__.pyi`) are exactly what the binary prints
 //! (`npm run docs` writes them), and `sylva help` describes every command and option the CLI
 //! accepts.
 
@@ -31,6 +32,7 @@ fn generated_docs_are_what_the_binary_prints() {
         (&["params", "--markdown"][..], "docs/parameters.md"),
         (&["params", "--typescript"][..], "packages/sylva-trees/src/core/generated/params.ts"),
         (&["params", "--payloads"][..], "packages/sylva-trees/src/core/generated/payloads.ts"),
+        (&["params", "--python-stub"][..], "core-rs/sylva-py/python/sylva_trees/__init__.pyi"),
     ] {
         let (code, out, err) = sylva(args);
         assert_eq!(code, 0, "sylva {args:?}: {err}");

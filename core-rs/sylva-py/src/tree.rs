@@ -1,0 +1,231 @@
+//! A generated tree for Python: the core's buffers moved (not copied) into NumPy arrays, the
+//! rest of the core's `Generated` kept for the exporters, and GLB/OBJ export that writes the
+//! bytes `sylva generate --out` writes.
+
+use numpy::{Element, PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use sylva_core::export::ExportOptions;
+use sylva_core::Generated;
+
+use crate::convert::{json_loads, py_err};
+
+/// One buffer: the flat array that owns the core's `Vec` and its shaped, read-only view.
+struct Buffer {
+    flat: Py<PyAny>,
+    shaped: Py<PyAny>,
+}
+
+impl Buffer {
+    /// Moves `data` into NumPy (the array takes the `Vec`'s allocation) and views it as rows of
+    /// `width`; both are read-only, so the arrays stay the tree the hash was taken of.
+    fn new<T: Element>(py: Python<'_>, data: Vec<T>, width: usize) -> PyResult<Self> {
+        let rows = data.len() / width;
+        let flat = PyArray1::from_vec(py, data);
+        let no_write = PyDict::new(py);
+        no_write.set_item("write", false)?;
+        flat.call_method("setflags", (), Some(&no_write))?;
+        let shaped = flat.reshape([rows, width])?;
+        Ok(Buffer { flat: flat.into_any().unbind(), shaped: shaped.into_any().unbind() })
+    }
+
+    /// A copy of the data back in a `Vec`, for the exporters.
+    fn to_vec<T: Element + Copy>(&self, py: Python<'_>) -> PyResult<Vec<T>> {
+        let array = self.flat.bind(py).cast::<PyArray1<T>>()?;
+        Ok(array.readonly().as_slice()?.to_vec())
+    }
+}
+
+/// A generated tree. The mesh arrays are read-only NumPy views of the core's buffers (no copy):
+/// `positions`, `normals` (float32, one row per vertex), `uvs` (float32, two columns) and
+/// `indices` (uint32, one row per triangle) of the bark, the same `leaf_*` of the leaf mesh
+/// (in leaf units: each leaf is that mesh placed by its transform), `leaf_transforms` (float32
+/// 4x4 per leaf, `leaf_transforms[i] @ [x, y, z, 1]` places a leaf vertex in the tree) and
+/// `leaf_colors` (RGB tint per leaf). `hash` is the content hash `sylva generate` prints.
+#[pyclass(frozen, module = "sylva_trees")]
+pub struct Tree {
+    /// `Generated` without the buffers below (they live in NumPy).
+    rest: Generated,
+    /// The meta JSON, taken while `rest` still had its buffers (it counts them).
+    meta_json: String,
+    bark: [Buffer; 4],
+    leaf: [Buffer; 4],
+    matrices: Buffer,
+    colors: Buffer,
+    leaf_transforms: Py<PyAny>,
+}
+
+impl Tree {
+    /// Moves `g`'s buffers into NumPy arrays.
+    pub fn new(py: Python<'_>, mut g: Generated) -> PyResult<Self> {
+        let meta_json = g.meta_json();
+        let take = std::mem::take::<Vec<f32>>;
+        let m = &mut g.mesh;
+        let bark = [
+            Buffer::new(py, take(&mut m.positions), 3)?,
+            Buffer::new(py, take(&mut m.normals), 3)?,
+            Buffer::new(py, take(&mut m.uvs), 2)?,
+            Buffer::new(py, std::mem::take(&mut m.indices), 3)?,
+        ];
+        let f = &mut g.foliage;
+        let leaf = [
+            Buffer::new(py, take(&mut f.mesh.positions), 3)?,
+            Buffer::new(py, take(&mut f.mesh.normals), 3)?,
+            Buffer::new(py, take(&mut f.mesh.uvs), 2)?,
+            Buffer::new(py, std::mem::take(&mut f.mesh.indices), 3)?,
+        ];
+        let matrices = Buffer::new(py, take(&mut f.matrices), 16)?;
+        let colors = Buffer::new(py, take(&mut f.colors), 3)?;
+        // Column-major 4x4 per leaf: rows of 16 as (4, 4) are the transposes; swap the last
+        // two axes (a strided view, no copy) for matrices that multiply column vectors.
+        let count = matrices.shaped.bind(py).len()?;
+        let transposed = matrices
+            .flat
+            .bind(py)
+            .call_method1("reshape", ((count, 4, 4),))?
+            .call_method1("transpose", ((0, 2, 1),))?;
+        Ok(Tree { rest: g, meta_json, bark, leaf, matrices, colors, leaf_transforms: transposed.unbind() })
+    }
+
+    /// The whole `Generated` again (the buffers copied back from NumPy), for the exporters.
+    fn whole(&self, py: Python<'_>) -> PyResult<Generated> {
+        let mut g = self.rest.clone();
+        let [p, n, uv, i] = &self.bark;
+        (g.mesh.positions, g.mesh.normals, g.mesh.uvs, g.mesh.indices) =
+            (p.to_vec(py)?, n.to_vec(py)?, uv.to_vec(py)?, i.to_vec(py)?);
+        let [p, n, uv, i] = &self.leaf;
+        let f = &mut g.foliage;
+        (f.mesh.positions, f.mesh.normals, f.mesh.uvs, f.mesh.indices) =
+            (p.to_vec(py)?, n.to_vec(py)?, uv.to_vec(py)?, i.to_vec(py)?);
+        f.matrices = self.matrices.to_vec(py)?;
+        f.colors = self.colors.to_vec(py)?;
+        Ok(g)
+    }
+}
+
+/// Export options with `leaves` (`"instanced"`, `"baked"` or `"none"`) over the CLI's defaults.
+fn options(leaves: &str) -> PyResult<ExportOptions> {
+    let json = format!("{{\"leaves\":{}}}", serde_json::to_string(leaves).unwrap_or_default());
+    ExportOptions::from_json(&json).map_err(py_err)
+}
+
+/// Writes `bytes` to `path`, an `OSError` naming the file when it cannot.
+fn write(path: &std::path::Path, bytes: &[u8]) -> PyResult<()> {
+    std::fs::write(path, bytes)
+        .map_err(|e| pyo3::exceptions::PyOSError::new_err(format!("cannot write {}: {e}", path.display())))
+}
+
+#[pymethods]
+impl Tree {
+    /// The content hash (16 hex digits): the same as `sylva generate` and the studio print.
+    #[getter]
+    fn hash(&self) -> String {
+        self.rest.hash_hex()
+    }
+    /// Bark vertex positions, float32 `(vertices, 3)`, metres.
+    #[getter]
+    fn positions(&self, py: Python<'_>) -> Py<PyAny> {
+        self.bark[0].shaped.clone_ref(py)
+    }
+    /// Bark unit normals, float32 `(vertices, 3)`.
+    #[getter]
+    fn normals(&self, py: Python<'_>) -> Py<PyAny> {
+        self.bark[1].shaped.clone_ref(py)
+    }
+    /// Bark texture coordinates, float32 `(vertices, 2)`.
+    #[getter]
+    fn uvs(&self, py: Python<'_>) -> Py<PyAny> {
+        self.bark[2].shaped.clone_ref(py)
+    }
+    /// Bark triangles, uint32 `(triangles, 3)`.
+    #[getter]
+    fn indices(&self, py: Python<'_>) -> Py<PyAny> {
+        self.bark[3].shaped.clone_ref(py)
+    }
+    /// The leaf mesh's positions, float32 `(vertices, 3)`, in leaf units.
+    #[getter]
+    fn leaf_positions(&self, py: Python<'_>) -> Py<PyAny> {
+        self.leaf[0].shaped.clone_ref(py)
+    }
+    /// The leaf mesh's unit normals, float32 `(vertices, 3)`.
+    #[getter]
+    fn leaf_normals(&self, py: Python<'_>) -> Py<PyAny> {
+        self.leaf[1].shaped.clone_ref(py)
+    }
+    /// The leaf mesh's texture coordinates, float32 `(vertices, 2)`.
+    #[getter]
+    fn leaf_uvs(&self, py: Python<'_>) -> Py<PyAny> {
+        self.leaf[2].shaped.clone_ref(py)
+    }
+    /// The leaf mesh's triangles, uint32 `(triangles, 3)`.
+    #[getter]
+    fn leaf_indices(&self, py: Python<'_>) -> Py<PyAny> {
+        self.leaf[3].shaped.clone_ref(py)
+    }
+    /// One float32 4x4 matrix per leaf, `(leaves, 4, 4)`: `leaf_transforms[i] @ [x, y, z, 1]`.
+    #[getter]
+    fn leaf_transforms(&self, py: Python<'_>) -> Py<PyAny> {
+        self.leaf_transforms.clone_ref(py)
+    }
+    /// One RGB tint per leaf, float32 `(leaves, 3)`.
+    #[getter]
+    fn leaf_colors(&self, py: Python<'_>) -> Py<PyAny> {
+        self.colors.shaped.clone_ref(py)
+    }
+    /// Counts, bounds, groups, leaf facts, hash and stage times as a dict (the studio's meta).
+    #[getter]
+    fn meta<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json_loads(py, &self.meta_json)
+    }
+    /// What became of each hand edit, in list order: dicts `{op, resolved, why?, ...}`.
+    #[getter]
+    fn edits<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json_loads(py, &serde_json::to_string(&self.rest.edits).unwrap_or_default())
+    }
+    /// The tree as glTF 2.0 binary bytes; `leaves` is `"instanced"`, `"baked"` or `"none"`.
+    #[pyo3(signature = (leaves="instanced"))]
+    fn glb<'py>(&self, py: Python<'py>, leaves: &str) -> PyResult<Bound<'py, pyo3::types::PyBytes>> {
+        let opts = options(leaves)?;
+        let g = self.whole(py)?;
+        let bytes = py.detach(|| sylva_core::export::to_glb(&g, &opts));
+        Ok(pyo3::types::PyBytes::new(py, &bytes))
+    }
+    /// Writes the tree to `path` as a `.glb`, the bytes `sylva generate --out PATH --leaves
+    /// LEAVES` writes. Returns the number of bytes written.
+    #[pyo3(signature = (path, leaves="instanced"))]
+    fn to_glb(&self, py: Python<'_>, path: std::path::PathBuf, leaves: &str) -> PyResult<usize> {
+        let opts = options(leaves)?;
+        let g = self.whole(py)?;
+        let bytes = py.detach(|| sylva_core::export::to_glb(&g, &opts));
+        write(&path, &bytes)?;
+        Ok(bytes.len())
+    }
+    /// Writes the tree to `path` as Wavefront OBJ with its MTL and PNG textures beside it (named
+    /// after the OBJ's stem), the files `sylva generate --out PATH` writes. Returns the paths
+    /// written.
+    fn to_obj(&self, py: Python<'_>, path: std::path::PathBuf) -> PyResult<Vec<std::path::PathBuf>> {
+        let opts = ExportOptions::default();
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("tree").to_string();
+        let dir = path.parent().map(std::path::Path::to_path_buf).unwrap_or_default();
+        let g = self.whole(py)?;
+        let files = py.detach(|| sylva_core::export::obj::write(&g, &opts, &stem));
+        write(&path, files.obj.as_bytes())?;
+        let mut written = vec![path.clone()];
+        let side = std::iter::once((format!("{stem}.mtl"), files.mtl.into_bytes())).chain(files.textures);
+        for (name, bytes) in side {
+            let file = dir.join(name);
+            write(&file, &bytes)?;
+            written.push(file);
+        }
+        Ok(written)
+    }
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let vertices = self.bark[0].shaped.bind(py).len()?;
+        let triangles = self.bark[3].shaped.bind(py).len()?;
+        let leaves = self.colors.shaped.bind(py).len()?;
+        Ok(format!(
+            "Tree(hash='{}', vertices={vertices}, triangles={triangles}, leaves={leaves})",
+            self.rest.hash_hex()
+        ))
+    }
+}
