@@ -39,6 +39,8 @@ PresetName = Literal[
 ParamId = Literal[
     "seed",
     "levels",
+    "age",
+    "maturity",
     "scale",
     "scale_v",
     "ratio",
@@ -338,6 +340,10 @@ class Params(TypedDict, total=False):
     """Seed (Tree, int; 0 to 4294967295; default 1): Random seed: the same parameters and seed always give the same tree."""
     levels: int
     """Levels (Tree, int; 1 to 4; default 3): Number of stem levels including the trunk (3 = trunk + two branch levels)."""
+    age: float
+    """Age (Tree, float; 1 to 300 years; default 40 years): The tree's age: below its Mature Age a younger tree, its growth replayed (each stem born the year after its parent reached it, growing along a Chapman-Richards curve); at or past it the mature tree."""
+    maturity: float
+    """Mature Age (Tree, float; 1 to 300 years; default 40 years): The age at which the tree has the form its other parameters describe; each preset's Age starts here."""
     scale: float
     """Scale (Tree, float; 0.1 to 100 m; default 13 m): Overall size of the tree: trunk length = Scale x Trunk Length."""
     scale_v: float
