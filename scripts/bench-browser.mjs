@@ -9,6 +9,7 @@
 //     attributes set, ready for the next frame); after each drag, settle_ms = release to the
 //     full-quality tree in the scene; frame_ms = a frame's upload + draw (the GPU waited for),
 //     drawn after each drag and each release (no frames are drawn between the timed steps);
+//   - age: a 20-step drag of Age on the default tree, toward younger trees (the growth replay);
 //   - paint and cut: the hand-edit tools (bench-edits.mjs).
 // Exports `benchBrowser()`; run directly it prints the result.
 import { existsSync } from 'node:fs';
@@ -178,7 +179,8 @@ function dragValues(spec, value) {
   // Ten moves one way and ten back, each about a pixel of a 250 px slider (at least one step):
   // a steady drag, one input event per move.
   const delta = Math.max(spec.step, (spec.max - spec.min) / 250);
-  const dir = value + (delta * STEPS) / 2 <= spec.max ? 1 : -1;
+  // Age drags toward younger trees: past its Mature Age a tree is the mature one.
+  const dir = spec.id !== 'age' && value + (delta * STEPS) / 2 <= spec.max ? 1 : -1;
   return Array.from({ length: STEPS }, (_, i) => {
     const k = i < STEPS / 2 ? i + 1 : STEPS - i - 1;
     const v = value + dir * k * delta;
@@ -187,8 +189,8 @@ function dragValues(spec, value) {
   });
 }
 
-/** 20-step drags of every control in DRAG_PARAMS on the default tree. */
-async function drag(browser, url) {
+/** 20-step drags of every control of `ids` (DRAG_PARAMS) on the default tree. */
+async function drag(browser, url, ids = DRAG_PARAMS) {
   const page = await browser.newPage({
     viewport: { width: 1000, height: 700 },
     reducedMotion: 'reduce',
@@ -214,7 +216,7 @@ async function drag(browser, url) {
   const all = [];
   const frames = [];
   const settles = [];
-  for (const id of DRAG_PARAMS) {
+  for (const id of ids) {
     const spec = await page.evaluate((id) => {
       const el =
         id === 'seed'
@@ -280,6 +282,8 @@ export async function benchBrowser(runs = 7) {
   try {
     const first = await firstTree(browser, url, Math.max(3, Math.min(runs, 7)));
     const dragged = await drag(browser, url);
+    // A 20-step Age drag: the growth replay scrubbed toward a younger tree.
+    const aged = await drag(browser, url, ['age']);
     const paint = await benchPaint(browser, url);
     const cut = await benchCut(browser, url);
     return {
@@ -287,6 +291,7 @@ export async function benchBrowser(runs = 7) {
       first_tree_in_scene_ms: round(median(first.map((t) => t.inScene))),
       first_shadowed_ms: round(median(first.map((t) => t.shadowed))),
       drag: dragged,
+      age: { median_ms: aged.median_ms, p95_ms: aged.p95_ms, settle_ms: aged.settle_ms },
       paint,
       cut,
     };

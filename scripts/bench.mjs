@@ -187,7 +187,10 @@ if (!asJson) {
           .map(([k, v]) => `${k} ${v}`)
           .join(', ')}`,
     );
-    const { paint, cut } = browser;
+    const { age, paint, cut } = browser;
+    console.log(
+      `Age (20-step drag toward younger trees): median ${age.median_ms} ms, p95 ${age.p95_ms} ms; settle ${age.settle_ms} ms.`,
+    );
     console.log(
       `Paint (a ${paint.steps}-point stroke, per move, input to answer in the scene): median ${paint.median_ms} ms, p95 ${paint.p95_ms} ms; settle ${paint.settle_ms} ms.\n` +
         `Cut (${cut.cuts} clicks on main branches, release to answer): median ${cut.median_ms} ms, p95 ${cut.p95_ms} ms; settle ${cut.settle_ms} ms.`,
