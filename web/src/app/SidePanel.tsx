@@ -11,6 +11,7 @@ import {
   type Preset,
   randomSeed,
 } from 'sylva-trees/core';
+import { AgePlayer } from '../ui/AgePlayer';
 import { GrowthTools } from '../ui/GrowthTools';
 import { LeafInspector } from '../ui/LeafInspector';
 import { ParamPanel } from '../ui/ParamPanel';
@@ -107,7 +108,10 @@ export function SidePanel({
           onReset={() => change({ params: defaultParams(registry), key: null, frame: true })}
           onUndo={editor.undo}
           onRedo={editor.redo}
-          extras={{ 'Growth Volume': <GrowthTools editor={growth} /> }}
+          extras={{
+            Tree: <AgePlayer params={params} onChange={onChange} />,
+            'Growth Volume': <GrowthTools editor={growth} />,
+          }}
         />
       ) : null}
     </>
