@@ -10,8 +10,10 @@ step "scripts: node --test (the Node scripts' own helpers)"
 node --test scripts/
 step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
-step "glTF: every preset's GLB (instanced and baked leaves) through the Khronos validator"
+step "glTF: every preset's GLB (instanced, baked and strict) through the Khronos validator"
 node scripts/validate-gltf.mjs
+step "Godot: the strict GLB imports into godot3-server (skipped when it is not installed)"
+bash scripts/godot-import.sh
 step "wasm vs native: same content hashes"
 node scripts/wasm-parity.mjs
 step "Vitest"
