@@ -46,12 +46,17 @@ pub fn lods_glb(l: &TreeLods, opts: &ExportOptions, name: &str) -> Vec<u8> {
         .enumerate()
         .map(|(i, t)| Part {
             name: format!("{name}_LOD{i}"),
-            extras: json!({"sylva_lod": {"level": i, "screen_size": f64::from(LOD_SCREEN_SIZES[i])}}),
+            extras: json!({"sylva_lod": {"level": i, "screen_size": decimal(LOD_SCREEN_SIZES[i])}}),
             glb: super::glb::write(t, opts),
         })
         .collect();
-    let sizes: Vec<f64> = LOD_SCREEN_SIZES.iter().map(|&s| f64::from(s)).collect();
+    let sizes: Vec<f64> = LOD_SCREEN_SIZES.iter().map(|&s| decimal(s)).collect();
     merge(name, json!({"sylva_lod": {"screen_sizes": sizes, "measure": MEASURE}}), &parts)
+}
+
+/// `x` as the decimal it is written as (0.6, not 0.6000000238418579, the `f32`'s exact value).
+fn decimal(x: f32) -> f64 {
+    x.to_string().parse().unwrap_or(f64::from(x))
 }
 
 /// A tree to write for a reduced level: `lod0`'s skeleton, bark type and hash with the level's
