@@ -85,7 +85,17 @@ if [ "$WANT_TEST" = 1 ]; then
     fi
   fi
 fi
-# 7. For tests: the venv with maturin, numpy and pytest (.venv-py) and the sylva-trees wheel
+# 7. For tests: Godot 3 headless from the system (Debian's godot3-server), which imports the
+#    strict GLB (scripts/godot-import.sh); a missing Godot that cannot be installed is an error.
+if [ "$WANT_TEST" = 1 ] && ! command -v "${GODOT:-godot3-server}" >/dev/null; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+    step "apt-get install godot3-server"
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq godot3-server >/dev/null
+  else
+    die "Godot 3 is needed to import the strict GLB in the tests: install it (Debian/Ubuntu: sudo apt-get install godot3-server) or set GODOT to a Godot 3 binary"
+  fi
+fi
+# 8. For tests: the venv with maturin, numpy and pytest (.venv-py) and the sylva-trees wheel
 #    (scripts/python.sh; rebuilt only when a Rust or Python source is newer than the wheel).
 if [ "$WANT_TEST" = 1 ]; then
   command -v python3 >/dev/null || die "python3 not found: the Python package's tests need Python 3.9 or newer with venv"

@@ -12,8 +12,10 @@ step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
 step "Python: the sylva-trees wheel against the CLI (pytest; the wheel is rebuilt only when a source changed)"
 bash scripts/python.sh test
-step "glTF: every preset's GLB (instanced and baked leaves) through the Khronos validator"
+step "glTF: every preset's GLB (instanced, baked and strict) through the Khronos validator"
 node scripts/validate-gltf.mjs
+step "Godot: the strict GLB imports into godot3-server (installed by setup.sh --test)"
+bash scripts/godot-import.sh
 step "wasm vs native: same content hashes"
 node scripts/wasm-parity.mjs
 step "Vitest"

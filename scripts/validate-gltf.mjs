@@ -1,18 +1,21 @@
 // `node scripts/validate-gltf.mjs [--preset NAME]... [--keep DIR]`: exports every preset as GLB
 // through the native CLI (`sylva generate --preset NAME --out FILE.glb --leaves MODE`), in both
 // leaf modes (instanced, baked), and validates each file with the Khronos glTF Validator
-// (npm `gltf-validator`, `validateBytes`). Prints one line per file with the error, warning and
+// (npm `gltf-validator`, `validateBytes`), and the file for strict importers (`--strict`), which
+// must also list no extension at all (no `extensionsUsed`, no `extensionsRequired`). Prints one line per file with the error, warning and
 // info counts and the messages of any error or warning; exits 1 if any file has an error or a
 // warning (both kinds must pass with none).
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
+//
+// The default tree's levels-of-detail GLB (`--lods`), default and strict, passes the same way.
 //
 // Also the default tree with a main branch cut (`--edits`, [`CUT`]): its GLB has the third
 // material, `cut_face` (the end grain).
 //
 // Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
 // `to_glb_file`) write the same bytes as the native one (default tree, with and without the cut,
-// both leaf modes).
+// both leaf modes and strict).
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -46,10 +49,25 @@ let failed = 0;
 let warnings = 0;
 const mb = (n) => (n / 1e6).toFixed(1).padStart(6);
 console.log('preset              leaves      size MB  errors warnings infos');
+/** The extensions a GLB's JSON chunk lists as used or required. */
+function extensionsOf(bytes) {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const json = JSON.parse(
+    new TextDecoder().decode(bytes.subarray(20, 20 + view.getUint32(12, true))),
+  );
+  return [...(json.extensionsUsed ?? []), ...(json.extensionsRequired ?? [])];
+}
+
+/** The export modes: `[label, CLI arguments]`. */
+const MODES = [
+  ['instanced', ['--leaves', 'instanced']],
+  ['baked', ['--leaves', 'baked']],
+  ['strict', ['--strict']],
+];
 for (const [name, treeArgs] of trees) {
-  for (const leaves of ['instanced', 'baked']) {
+  for (const [leaves, modeArgs] of MODES) {
     const file = join(dir, `${name.replace(/\W+/g, '-')}-${leaves}.glb`);
-    execFileSync(sylva, ['generate', ...treeArgs, '--leaves', leaves, '--out', file], {
+    execFileSync(sylva, ['generate', ...treeArgs, ...modeArgs, '--out', file], {
       stdio: 'ignore',
     });
     const bytes = new Uint8Array(readFileSync(file));
@@ -57,6 +75,12 @@ for (const [name, treeArgs] of trees) {
     const report = await validateBytes(bytes, { maxIssues: 100 });
     const { numErrors, numWarnings, numInfos } = report.issues;
     if (numErrors > 0 || numWarnings > 0) failed++;
+    // The strict file lists no extension at all.
+    const extensions = extensionsOf(bytes);
+    if (leaves === 'strict' && extensions.length > 0) {
+      failed++;
+      console.log(`    ${name}: the strict GLB lists extensions ${extensions.join(', ')}`);
+    }
     // The cut tree's third material: the cut faces' end grain.
     const materials = report.info?.materialCount;
     if (treeArgs.includes('--edits') && materials !== 3) {
@@ -73,6 +97,35 @@ for (const [name, treeArgs] of trees) {
         console.log(
           `    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message} (${m.pointer ?? ''})`,
         );
+    }
+  }
+}
+
+// The levels-of-detail file of the default tree (`--lods`: nodes tree_LOD0..2), default and strict.
+let lodFiles = 0;
+if (only.length === 0 || only.includes('default')) {
+  for (const [label, modeArgs] of [
+    ['lods', []],
+    ['lods strict', ['--strict']],
+  ]) {
+    const file = join(dir, `tree-${label.replace(/\W+/g, '-')}.glb`);
+    execFileSync(sylva, ['generate', '--lods', ...modeArgs, '--out', file], { stdio: 'ignore' });
+    const bytes = new Uint8Array(readFileSync(file));
+    if (keepAt < 0) rmSync(file);
+    const report = await validateBytes(bytes, { maxIssues: 100 });
+    const { numErrors, numWarnings, numInfos } = report.issues;
+    const extensions = extensionsOf(bytes);
+    const bad = numErrors > 0 || numWarnings > 0 || (modeArgs.length > 0 && extensions.length > 0);
+    if (bad) failed++;
+    warnings += numWarnings;
+    lodFiles++;
+    console.log(
+      `${'default'.padEnd(19)} ${label.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
+        (bad ? `  FAIL ${extensions.join(', ')}` : ''),
+    );
+    for (const m of report.issues.messages) {
+      if (m.severity <= 1)
+        console.log(`    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message}`);
     }
   }
 }
@@ -94,18 +147,19 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
     if (typeof tree.to_glb !== 'function') {
       console.log('wasm parity: skipped (the wasm build predates to_glb; run scripts/setup.sh)');
     } else {
-      for (const leaves of ['instanced', 'baked']) {
+      for (const [leaves, modeArgs] of MODES) {
         const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
-        execFileSync(sylva, ['generate', ...cliArgs, '--leaves', leaves, '--out', file], {
+        execFileSync(sylva, ['generate', ...cliArgs, ...modeArgs, '--out', file], {
           stdio: 'ignore',
         });
         const native = readFileSync(file);
         rmSync(file);
-        const fromWasm = tree.to_glb(JSON.stringify({ leaves }));
+        const options = JSON.stringify(leaves === 'strict' ? { strict: true } : { leaves });
+        const fromWasm = tree.to_glb(options);
         let same = Buffer.compare(native, Buffer.from(fromWasm)) === 0;
         // `to_glb_file` (the bytes read in place from the module's memory) writes the same file.
         if (typeof tree.to_glb_file === 'function') {
-          const file = tree.to_glb_file(JSON.stringify({ leaves }));
+          const file = tree.to_glb_file(options);
           same &&=
             Buffer.compare(
               native,
@@ -124,5 +178,7 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
 }
 if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 
-console.log(`${trees.length * 2} files, ${failed} failed, ${warnings} warnings`);
+console.log(
+  `${trees.length * MODES.length + lodFiles} files, ${failed} failed, ${warnings} warnings`,
+);
 process.exit(failed ? 1 : 0);

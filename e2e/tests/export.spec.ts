@@ -89,13 +89,22 @@ test('PNG screenshot and preset JSON save → load', async ({ page }) => {
 });
 
 /** The native CLI's GLB of the app's `QUERY` tree (seed 5, two levels) with `leaves`. */
-function cliGlb(leaves: 'instanced' | 'baked'): Buffer {
+function cliGlb(leaves: 'instanced' | 'baked' | 'strict'): Buffer {
   const dir = mkdtempSync(join(tmpdir(), 'sylva-e2e-glb-'));
   try {
     const file = join(dir, 'tree.glb');
     execFileSync(
       nativeCli(),
-      ['generate', '--seed', '5', '--set', 'levels=2', '--leaves', leaves, '--out', file],
+      [
+        'generate',
+        '--seed',
+        '5',
+        '--set',
+        'levels=2',
+        ...(leaves === 'strict' ? ['--strict'] : ['--leaves', leaves]),
+        '--out',
+        file,
+      ],
       { stdio: 'ignore' },
     );
     return readFileSync(file);
@@ -120,6 +129,9 @@ test('GLB and OBJ export follow the core', async ({ page }) => {
     'GLB for Blender and other editors (leaves merged into one mesh)',
   );
   await expect(page.getByTestId('export-glb-baked-hint')).toContainText('Blender');
+  await expect(page.getByTestId('export-glb-strict')).toContainText(
+    'GLB for Godot and strict importers',
+  );
   await expect(glb).toBeEnabled();
   await expect(baked).toBeEnabled();
   await expect(obj).toBeEnabled();
@@ -143,6 +155,16 @@ test('GLB and OBJ export follow the core', async ({ page }) => {
     expect.arrayContaining(['COLOR_0', '_WIND_PIVOT', '_WIND_PARAMS']),
   );
   await expect(page.getByTestId('toolbar-status')).toContainText('.glb');
+  // The strict GLB: the CLI's --strict bytes, no extension listed.
+  const strictDownload = await exportItem(page, 'export-glb-strict');
+  expect(strictDownload.suggestedFilename()).toMatch(/-strict\.glb$/);
+  const strictFile = await bytesOf(strictDownload);
+  expect(strictFile.equals(cliGlb('strict'))).toBe(true);
+  const strictJson = JSON.parse(
+    strictFile.subarray(20, 20 + strictFile.readUInt32LE(12)).toString(),
+  ) as { extensionsUsed?: string[]; extensionsRequired?: string[] };
+  expect(strictJson.extensionsUsed).toBeUndefined();
+  expect(strictJson.extensionsRequired).toBeUndefined();
 
   const zip = await exportItem(page, 'export-obj');
   expect(zip.suggestedFilename()).toMatch(/-obj\.zip$/);

@@ -179,6 +179,10 @@ pub struct ExportArgs {
     /// No wind attributes
     #[arg(long)]
     pub no_wind: bool,
+    /// GLB for Godot and strict importers: no glTF extension (float normals and tangents, no
+    /// KHR_mesh_quantization; instanced leaves written baked)
+    #[arg(long)]
+    pub strict: bool,
 }
 
 /// `sylva generate`.
@@ -190,6 +194,10 @@ pub struct GenerateArgs {
     /// Write the tree as GLB or OBJ (the format follows the extension)
     #[arg(long, value_name = "FILE.glb|FILE.obj")]
     pub out: Option<String>,
+    /// With `--out FILE.glb`: every level of detail in one GLB, root node FILE with children
+    /// FILE_LOD0, FILE_LOD1, FILE_LOD2 and the screen-size thresholds in extras
+    #[arg(long, requires = "out")]
+    pub lods: bool,
     /// The export options.
     #[command(flatten)]
     pub export: ExportArgs,

@@ -190,8 +190,8 @@ mod tests {
         assert_eq!(
             synopsis(generate),
             "sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] \
-             [--edits FILE.json] [--out FILE.glb|FILE.obj] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
-             [--no-wind] [--report skeleton|mesh]..."
+             [--edits FILE.json] [--out FILE.glb|FILE.obj] [--lods] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
+             [--no-wind] [--strict] [--report skeleton|mesh]..."
         );
         let envelope = cmd.find_subcommand("envelope").expect("envelope");
         assert_eq!(synopsis(envelope), "sylva envelope --shape NAME [--samples N]");

@@ -14,6 +14,7 @@ fn export_options(a: &ExportArgs) -> ExportOptions {
     export.textures = !a.no_textures;
     export.tangents = !a.no_tangents;
     export.wind = !a.no_wind;
+    export.strict = a.strict;
     export
 }
 
@@ -27,9 +28,17 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
     for (i, r) in g.edits.iter().enumerate().filter(|(_, r)| !r.resolved) {
         eprintln!("edits[{i}] ({}) is unresolved: {}", r.op, r.why.as_deref().unwrap_or("no stem found"));
     }
-    let written = match &a.out {
-        Some(path) => Some(write_export(&g, &export_options(&a.export), path)?),
-        None => None,
+    let (g, written) = match &a.out {
+        Some(path) if a.lods => {
+            let l = sylva_core::lod::lods_of(g, &params.mesh).map_err(|e| e.to_string())?;
+            let files = write_lods(&l, &export_options(&a.export), path)?;
+            (l.lod0, Some(files))
+        }
+        Some(path) => {
+            let files = write_export(&g, &export_options(&a.export), path)?;
+            (g, Some(files))
+        }
+        None => (g, None),
     };
     let ms: serde_json::Map<String, serde_json::Value> =
         g.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
@@ -93,6 +102,23 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
         out["skeleton"] = serde_json::Value::Array(stems);
     }
     Ok(out.to_string())
+}
+
+/// Writes the levels of `l` to `path` as one GLB ([`sylva_core::export::lods_glb`]), its nodes
+/// named after the file's stem; returns `[file, bytes]`.
+fn write_lods(
+    l: &sylva_core::lod::TreeLods,
+    export: &ExportOptions,
+    path: &str,
+) -> Result<Vec<(String, usize)>, String> {
+    if !path.to_ascii_lowercase().ends_with(".glb") {
+        return Err(format!("--lods: the file must end in .glb, got '{path}'"));
+    }
+    let p = std::path::Path::new(path);
+    let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("tree");
+    let bytes = sylva_core::export::lods_glb(l, export, stem);
+    std::fs::write(path, &bytes).map_err(|e| format!("cannot write {path}: {e}"))?;
+    Ok(vec![(path.to_string(), bytes.len())])
 }
 
 /// Writes `g` to `path` as GLB or OBJ (+ MTL + PNGs, named after the OBJ's stem, next to it);

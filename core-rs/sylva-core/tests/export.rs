@@ -552,3 +552,9 @@ mod baked;
 /// The season's leaf colours in both GLBs.
 #[path = "export/season.rs"]
 mod season;
+
+#[path = "export/strict.rs"]
+mod strict;
+
+#[path = "export/lods.rs"]
+mod lods;

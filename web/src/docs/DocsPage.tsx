@@ -69,7 +69,7 @@ export function DocsPage({ model, version, pageHref }: Props) {
             </li>
             <li>
               <strong>GLB for engines</strong> (glTF 2.0 binary: bark and instanced leaves, PBR
-              materials, embedded textures, wind attributes): for three.js, Unity, Unreal and Godot.
+              materials, embedded textures, wind attributes): for three.js, Unity and Unreal.
             </li>
             <li>
               <strong>GLB for Blender and other editors</strong>: the same, with the leaves merged
@@ -77,10 +77,15 @@ export function DocsPage({ model, version, pageHref }: Props) {
               one object instead of one per leaf.
             </li>
             <li>
+              <strong>GLB for Godot and strict importers</strong>: leaves merged, normals and
+              tangents as plain floats, no glTF extension required (a larger file).
+            </li>
+            <li>
               <strong>OBJ + MTL + textures</strong> (one compressed zip; leaves baked into the
               mesh). All three are written by the core&apos;s exporters in a separate worker (the
               view stays responsive), the same bytes as <code>sylva generate --out</code> (
-              <code>--leaves baked</code> for the editors&apos; GLB).
+              <code>--leaves baked</code> for the editors&apos; GLB, <code>--strict</code> for the
+              strict one).
             </li>
           </ul>
         </Section>

@@ -47,6 +47,8 @@ interface MeshExport {
   format: ExportFormat;
   /** GLB: how the leaves are written (the core's default: instanced). */
   leaves?: LeafExport;
+  /** GLB: no glTF extension (the core's `strict` option), for Godot and strict importers. */
+  strict?: boolean;
   label: string;
   /** One line: when to choose it. */
   hint: string;
@@ -67,6 +69,13 @@ export const MESH_EXPORTS: readonly MeshExport[] = [
     leaves: 'baked',
     label: 'GLB for Blender and other editors (leaves merged into one mesh)',
     hint: 'For Blender, Unreal and other editors, which would make one object per instanced leaf.',
+  },
+  {
+    testId: 'export-glb-strict',
+    format: 'glb',
+    strict: true,
+    label: 'GLB for Godot and strict importers',
+    hint: 'No glTF extension required: float normals, leaves merged; a larger file.',
   },
   {
     testId: 'export-obj',
@@ -161,7 +170,7 @@ export function Toolbar(props: Props) {
     savePresetFile(registry, params, baseName, setStatus);
   };
 
-  const exportMesh = ({ format, leaves, label }: MeshExport) => {
+  const exportMesh = ({ format, leaves, strict, label }: MeshExport) => {
     closeMenu();
     setStatus({ kind: 'busy', text: `Exporting ${label}…` });
     client()
@@ -169,6 +178,7 @@ export function Toolbar(props: Props) {
         name: baseName,
         edits: editsRef.current ?? [],
         ...(leaves ? { leaves } : {}),
+        ...(strict ? { strict } : {}),
       })
       .then((response) => saveExported(response, format, setStatus))
       .catch((error: unknown) => {

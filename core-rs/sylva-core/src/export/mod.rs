@@ -24,6 +24,7 @@
 mod bake;
 mod frames;
 pub mod glb;
+mod lods;
 pub mod obj;
 mod options;
 pub mod png;
@@ -32,6 +33,7 @@ mod textures;
 mod tint;
 
 pub use bake::{bake_leaves, decompose, decompose_rotation, decompose_scale, BakedLeaves};
+pub use lods::{lods_glb, LOD_SCREEN_SIZES};
 pub use options::{ExportOptions, LeafMode};
 pub use tint::{bark_colors, bark_colors_into, TINT_STEPS};
 
@@ -70,7 +72,15 @@ mod tests {
         assert_eq!(o.leaves, LeafMode::Baked);
         assert!(!o.wind && o.textures);
         assert_eq!(o.bark_texture_size, 64);
-        for bad in [r#"{"leaves":"some"}"#, r#"{"wind":1}"#, r#"{"size":1}"#, "[1]", r#"{"bark_texture_size":100}"#] {
+        assert!(!o.strict && ExportOptions::from_json(r#"{"strict":true}"#).unwrap().strict);
+        for bad in [
+            r#"{"leaves":"some"}"#,
+            r#"{"wind":1}"#,
+            r#"{"strict":"yes"}"#,
+            r#"{"size":1}"#,
+            "[1]",
+            r#"{"bark_texture_size":100}"#,
+        ] {
             assert!(ExportOptions::from_json(bad).is_err(), "{bad}");
         }
     }

@@ -50,6 +50,12 @@ pub struct ExportOptions {
     pub vertex_colors: bool,
     /// Edge of the square bark textures in texels, a power of two from 16 to 2048. Default 512.
     pub bark_texture_size: u32,
+    /// GLB only: a file that needs no glTF extension, for strict importers (Godot, engines
+    /// without `KHR_mesh_quantization`): `NORMAL` and `TANGENT` as floats (16 more bytes per
+    /// vertex with tangents, 8 without) and [`LeafMode::Instanced`] leaves written baked
+    /// (`EXT_mesh_gpu_instancing` is an extension too); no `extensionsUsed` or
+    /// `extensionsRequired`. Default `false`.
+    pub strict: bool,
 }
 
 impl Default for ExportOptions {
@@ -62,13 +68,14 @@ impl Default for ExportOptions {
             tangents: true,
             vertex_colors: true,
             bark_texture_size: 512,
+            strict: false,
         }
     }
 }
 
 impl ExportOptions {
     /// Options from a JSON object; missing fields keep their defaults, e.g.
-    /// `{"leaves": "baked", "wind": false, "bark_texture_size": 256}`. An empty string means
+    /// `{"leaves": "baked", "wind": false, "bark_texture_size": 256, "strict": true}`. An empty string means
     /// all defaults. Unknown fields and wrong types are errors.
     pub fn from_json(json: &str) -> Result<ExportOptions, SylvaError> {
         let mut o = ExportOptions::default();
@@ -92,6 +99,7 @@ impl ExportOptions {
                 "normal_maps" => o.normal_maps = flag()?,
                 "tangents" => o.tangents = flag()?,
                 "vertex_colors" => o.vertex_colors = flag()?,
+                "strict" => o.strict = flag()?,
                 "bark_texture_size" => {
                     o.bark_texture_size =
                         v.as_u64().filter(|&s| (16..=2048).contains(&s) && s.is_power_of_two()).ok_or_else(|| {

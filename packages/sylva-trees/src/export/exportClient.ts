@@ -94,7 +94,7 @@ export class ExportClient {
     params: Params,
     volumes: VolumePrimitive[],
     format: ExportFormat,
-    options: { leaves?: LeafExport; name?: string; edits?: readonly Edit[] } = {},
+    options: { leaves?: LeafExport; strict?: boolean; name?: string; edits?: readonly Edit[] } = {},
   ): Promise<ExportResponse> {
     const formats = await this.formats();
     if (!formats.includes(format)) {
@@ -110,6 +110,7 @@ export class ExportClient {
         ...(volumes.length > 0 ? { volumes } : {}),
         ...(options.edits?.length ? { edits: [...options.edits] } : {}),
         ...(options.leaves ? { leaves: options.leaves } : {}),
+        ...(options.strict ? { strict: true } : {}),
         ...(options.name ? { name: options.name } : {}),
       };
       this.client.submit({ request, resolve, reject });

@@ -68,6 +68,13 @@ function exported(sent: { message: WorkerResponse }[]) {
   return message;
 }
 
+/** The JSON chunk of a GLB. */
+function glbJson(bytes: Uint8Array): Record<string, unknown> {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const text = new TextDecoder().decode(bytes.subarray(20, 20 + view.getUint32(12, true)));
+  return JSON.parse(text) as Record<string, unknown>;
+}
+
 describe('export feature check', () => {
   it('lists only the exporters the GeneratedTree class has', () => {
     expect(exportFormatsOf({})).toEqual([]);
@@ -115,6 +122,26 @@ describe('export request (worker handler, real core)', () => {
     // The same bytes as the copying exporter.
     const tree = loadWasm().generate(JSON.stringify({ seed: 3, levels: 2 })) as ExportableTree;
     expect(bytes).toEqual(tree.to_glb?.(JSON.stringify({ leaves: 'baked' })));
+    tree.free();
+  });
+
+  it("strict GLB: the core's strict option, no glTF extension listed, named STEM-strict.glb", async () => {
+    const { sent, handle } = harness();
+    handle({ type: 'export', id: 6, params: SMALL, format: 'glb', strict: true, name: 'oak' });
+    const [file] = exported(sent).files;
+    if (!file || !('blob' in file)) throw new Error('a GLB comes as a Blob');
+    expect(file.name).toBe('oak-strict.glb');
+    const bytes = new Uint8Array(await file.blob.arrayBuffer());
+    expect(glbJson(bytes).extensionsUsed).toBeUndefined();
+    expect(glbJson(bytes).extensionsRequired).toBeUndefined();
+    const tree = loadWasm().generate(JSON.stringify(SMALL)) as ExportableTree;
+    const copy = tree.to_glb?.(JSON.stringify({ strict: true }));
+    // Compared as buffers: a deep equality of megabytes is slow.
+    expect(copy && Buffer.compare(bytes, copy)).toBe(0);
+    // The default file of the same tree requires quantization.
+    expect(glbJson(tree.to_glb?.('{}') ?? bytes).extensionsRequired).toEqual([
+      'KHR_mesh_quantization',
+    ]);
     tree.free();
   });
 

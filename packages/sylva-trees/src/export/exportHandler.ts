@@ -65,10 +65,12 @@ export function exportFiles(
   format: ExportFormat,
   leaves: ExportRequest['leaves'],
   name?: string,
+  strict?: boolean,
 ): ExportedFile[] {
-  const options = JSON.stringify(leaves ? { leaves } : {});
+  const options = JSON.stringify({ ...(leaves ? { leaves } : {}), ...(strict ? { strict } : {}) });
   if (format === 'glb') {
-    const file = { name: `${fileStem(name)}.glb`, mime: 'model/gltf-binary' };
+    const stem = `${fileStem(name)}${strict ? '-strict' : ''}`;
+    const file = { name: `${stem}.glb`, mime: 'model/gltf-binary' };
     if (typeof tree.to_glb_file === 'function') {
       const glb = tree.to_glb_file(options);
       try {
@@ -124,7 +126,13 @@ export function exportTree(
   const tree: ExportableTree = wasm.generate(JSON.stringify(input));
   try {
     const { hash } = parseMeta(tree.meta_json());
-    const exported = exportFiles(tree, request.format, request.leaves, request.name);
+    const exported = exportFiles(
+      tree,
+      request.format,
+      request.leaves,
+      request.name,
+      request.strict,
+    );
     const files = request.format === 'obj' ? [objArchive(exported, request.name)] : exported;
     post(
       { type: 'exported', id: request.id, format: request.format, hash, files },

@@ -27,6 +27,11 @@ export interface ExportRequest {
   format: ExportFormat;
   /** The core's `{"leaves": ...}` export option (GLB; default `instanced`). */
   leaves?: LeafExport;
+  /**
+   * The core's `{"strict": true}` export option (GLB): no glTF extension, for Godot and other
+   * strict importers (float normals and tangents, instanced leaves baked). Named `STEM-strict.glb`.
+   */
+  strict?: boolean;
   /** File stem: the OBJ names its MTL and textures after it (default `tree`). */
   name?: string;
 }

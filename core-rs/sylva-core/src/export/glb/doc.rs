@@ -22,6 +22,8 @@ pub(super) struct Doc<'a> {
     pub(super) bin_len: usize,
     /// Whether an accessor needs `KHR_mesh_quantization`.
     pub(super) quantized: bool,
+    /// Float normals and tangents, no quantisation ([`crate::export::ExportOptions::strict`]).
+    pub(super) strict: bool,
 }
 
 /// One accessor's description.
@@ -113,22 +115,10 @@ impl<'a> Doc<'a> {
         let mut at = Map::new();
         let pos = Acc { minmax: Some((b.min.to_vec(), b.max.to_vec())), ..Acc::new(FLOAT, "VEC3", n) };
         at.insert("POSITION".into(), json!(self.array(Data::F32(&m.positions), Some(ARRAY_BUFFER), pos)));
-        // KHR_mesh_quantization: normals and tangents as normalised bytes, interleaved when
-        // both are written (normal 3 bytes + 1 padding, tangent 4), else the normals alone.
-        self.quantized = true;
-        let (view, stride) = match extra.tangents {
-            Some(t) => (self.view(t, Some(ARRAY_BUFFER), Some(8)), 8),
-            None => (self.view(Data::Snorm3(&m.normals), Some(ARRAY_BUFFER), Some(4)), 4),
-        };
-        let normal = Acc { normalized: true, ..Acc::new(BYTE, "VEC3", n) };
-        at.insert("NORMAL".into(), json!(self.accessor(view, normal)));
-        at.insert(
-            "TEXCOORD_0".into(),
-            json!(self.array(Data::F32(&m.uvs), Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC2", n))),
-        );
-        if stride == 8 {
-            let tangent = Acc { normalized: true, offset: 4, ..Acc::new(BYTE, "VEC4", n) };
-            at.insert("TANGENT".into(), json!(self.accessor(view, tangent)));
+        if self.strict {
+            self.float_frames(m, extra.tangents, &mut at);
+        } else {
+            self.quantized_frames(m, extra.tangents, &mut at);
         }
         let color = Acc { normalized: true, ..Acc::new(UNSIGNED_BYTE, "VEC4", n) };
         let mut wind_view = None;
@@ -153,6 +143,48 @@ impl<'a> Doc<'a> {
             at.insert("_WIND_PARAMS".into(), json!(self.accessor(view, params)));
         }
         at
+    }
+
+    /// `NORMAL`, `TEXCOORD_0` and (with `tangents`) `TANGENT` quantised (`KHR_mesh_quantization`):
+    /// normals and tangents as normalised bytes, interleaved when both are written (normal 3
+    /// bytes + 1 padding, tangent 4), else the normals alone.
+    fn quantized_frames(&mut self, m: &'a TreeMesh, tangents: Option<Data<'a>>, at: &mut Map<String, Value>) {
+        let n = m.vertex_count();
+        self.quantized = true;
+        let (view, stride) = match tangents {
+            Some(t) => (self.view(t, Some(ARRAY_BUFFER), Some(8)), 8),
+            None => (self.view(Data::Snorm3(&m.normals), Some(ARRAY_BUFFER), Some(4)), 4),
+        };
+        let normal = Acc { normalized: true, ..Acc::new(BYTE, "VEC3", n) };
+        at.insert("NORMAL".into(), json!(self.accessor(view, normal)));
+        at.insert(
+            "TEXCOORD_0".into(),
+            json!(self.array(Data::F32(&m.uvs), Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC2", n))),
+        );
+        if stride == 8 {
+            let tangent = Acc { normalized: true, offset: 4, ..Acc::new(BYTE, "VEC4", n) };
+            at.insert("TANGENT".into(), json!(self.accessor(view, tangent)));
+        }
+    }
+
+    /// `NORMAL`, `TEXCOORD_0` and (with `tangents`, given as [`Data::F32`] or
+    /// [`Data::FramesOf`]) `TANGENT` as plain floats, each in a view of its own (core glTF).
+    fn float_frames(&mut self, m: &'a TreeMesh, tangents: Option<Data<'a>>, at: &mut Map<String, Value>) {
+        let n = m.vertex_count();
+        let normal = Acc::new(FLOAT, "VEC3", n);
+        at.insert("NORMAL".into(), json!(self.array(Data::F32(&m.normals), Some(ARRAY_BUFFER), normal)));
+        at.insert(
+            "TEXCOORD_0".into(),
+            json!(self.array(Data::F32(&m.uvs), Some(ARRAY_BUFFER), Acc::new(FLOAT, "VEC2", n))),
+        );
+        let tangents = match tangents {
+            Some(Data::FramesOf(_, t)) | Some(Data::F32(t)) => Some(t),
+            _ => None,
+        };
+        if let Some(t) = tangents {
+            let acc = Acc::new(FLOAT, "VEC4", n);
+            at.insert("TANGENT".into(), json!(self.array(Data::F32(t), Some(ARRAY_BUFFER), acc)));
+        }
     }
 
     /// A mesh with one primitive per non-empty group of `m`; `material` maps a group's material

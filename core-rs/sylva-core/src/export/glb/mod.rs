@@ -31,6 +31,10 @@
 //!   straight into the output ([`super::frames_snorm8_write`]): on the mesh's tube rings
 //!   (`TreeMesh::rings`, nearly every bark vertex) from the ring neighbours, elsewhere by
 //!   Lengyel's method over the triangles touching those vertices ([`super::mesh_tangents`]).
+//! * **Strict** ([`ExportOptions::strict`]): no extension used or required. `NORMAL` and
+//!   `TANGENT` are floats, each in a view of its own (the bark's tangents from
+//!   [`super::mesh_tangents`], the same directions the quantised file rounds), and
+//!   [`LeafMode::Instanced`] leaves are written as [`LeafMode::Baked`].
 //! * **Wind** (when the mesh carries it, see `TreeMesh::wind`): the 8 values per vertex as
 //!   normalised `u16`, interleaved in one view with `byteStride` 16 right after the colours,
 //!   read by two `VEC4` accessors: `_WIND_PIVOT` = `pivot_x, pivot_y, pivot_z` (m, the base of
@@ -92,6 +96,7 @@ mod baked;
 mod data;
 mod doc;
 mod materials;
+pub mod merge;
 
 use super::options::{ExportOptions, LeafMode};
 use super::textures::TexturePngs;
@@ -134,6 +139,8 @@ struct Owned {
     grain_pngs: Option<Arc<TexturePngs>>,
     baked: Option<super::bake::BakedLeaves>,
     leaf_tangents: Option<Vec<f32>>,
+    /// The bark's tangents as floats ([`super::mesh_tangents`]), for [`ExportOptions::strict`].
+    bark_tangents: Option<Vec<f32>>,
 }
 
 /// The GLB file of a generated tree (layout: module docs).
@@ -154,23 +161,27 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let bark = &g.mesh;
     let f = &g.foliage;
     let has_bark = bark.vertex_count() > 0 && !bark.indices.is_empty();
-    let has_leaves = opts.leaves != LeafMode::None && f.count() > 0 && !f.mesh.indices.is_empty();
+    // Instancing is an extension: a strict file bakes the leaves.
+    let leaves = if opts.strict && opts.leaves == LeafMode::Instanced { LeafMode::Baked } else { opts.leaves };
+    let has_leaves = leaves != LeafMode::None && f.count() > 0 && !f.mesh.indices.is_empty();
     let normal_maps = opts.textures && opts.normal_maps;
     // Tangents only for the normal maps, and only when asked for.
     let tangents = normal_maps && opts.tangents;
     let leaf_pngs = if opts.textures && has_leaves { super::textures::leaf_pngs(f) } else { None };
-    let instanced = has_leaves && opts.leaves == LeafMode::Instanced;
+    let instanced = has_leaves && leaves == LeafMode::Instanced;
     let has_cut = has_bark && bark.groups.iter().any(|g| g.material == Material::CutFace && g.count > 0);
     let owned = Owned {
         bark_pngs: (has_bark && opts.textures).then(|| super::textures::bark_pngs(g.bark, opts.bark_texture_size)),
         grain_pngs: (has_cut && opts.textures).then(|| super::textures::end_grain_pngs(g.bark, opts.bark_texture_size)),
-        baked: (has_leaves && opts.leaves == LeafMode::Baked)
+        baked: (has_leaves && leaves == LeafMode::Baked)
             .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads)),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
             .then(|| super::frames::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
+        bark_tangents: (opts.strict && has_bark && tangents && opts.textures)
+            .then(|| super::frames::mesh_tangents(bark)),
         leaf_pngs,
     };
-    let mut doc = Doc::default();
+    let mut doc = Doc { strict: opts.strict, ..Doc::default() };
     let samplers = json!([
         {"magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR, "wrapS": REPEAT, "wrapT": REPEAT},
         {"magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR, "wrapS": CLAMP_TO_EDGE, "wrapT": CLAMP_TO_EDGE},
@@ -195,7 +206,8 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         let (bounds, wind) = bark_ranges(bark, wind, threads);
         bark_wind = wind;
         let extra = VertexExtras {
-            tangents: (tangents && owned.bark_pngs.is_some()).then_some(Data::Frames(bark)),
+            tangents: (tangents && owned.bark_pngs.is_some())
+                .then(|| owned.bark_tangents.as_deref().map_or(Data::Frames(bark), Data::F32)),
             colors: opts.vertex_colors.then_some(Colors::Bark(bounds)),
             wind,
             bounds: Some(bounds),
