@@ -18,19 +18,10 @@ import { chromium } from 'playwright-core';
 import { benchCut, benchPaint } from './bench-edits.mjs';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
 import { freePort, serve } from './preview-server.mjs';
+import { median, percentile, round } from './bench-stats.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const CHROMIUM = chromiumPath();
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = s.length >> 1;
-  return s.length ? (s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2) : null;
-};
-const percentile = (xs, p) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length ? s[Math.min(s.length - 1, Math.ceil((p / 100) * s.length) - 1)] : null;
-};
-const round = (x) => (x === null ? null : Math.round(x * 100) / 100);
 
 /** The sliders (and other controls) the drag benchmark moves, in order. */
 export const DRAG_PARAMS = [

@@ -14,20 +14,10 @@
 // Frames are not drawn between the timed steps (software WebGL takes seconds per frame); the
 // answers are set up, ready for the next frame.
 // Exports `benchPaint(browser, url)` and `benchCut(browser, url)`.
+import { median, percentile, round } from './bench-stats.mjs';
 
 const STROKE_POINTS = 40;
 const CUTS = 10;
-
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = s.length >> 1;
-  return s.length ? (s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2) : null;
-};
-const percentile = (xs, p) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length ? s[Math.min(s.length - 1, Math.ceil((p / 100) * s.length) - 1)] : null;
-};
-const round = (x) => (x === null ? null : Math.round(x * 100) / 100);
 
 /** A page on the default tree, rendering paused, with a log of the trees applied. */
 async function openApp(browser, url) {

@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { benchBrowser } from './bench-browser.mjs';
+import { median } from './bench-stats.mjs';
 import { nativeCli } from './native-cli.mjs';
 
 const args = process.argv.slice(2);
@@ -15,12 +16,6 @@ const asJson = args.includes('--json');
 const runsArg = args.indexOf('--runs');
 const runs = runsArg >= 0 ? Number(args[runsArg + 1]) : 30;
 const root = fileURLToPath(new URL('..', import.meta.url));
-
-const median = (xs) => {
-  const s = [...xs].sort((a, b) => a - b);
-  const m = s.length >> 1;
-  return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
-};
 
 const sylva = nativeCli();
 const wasm = await import(

@@ -19,6 +19,7 @@ import {
   SRGBColorSpace,
   UnsignedByteType,
   Vector2,
+  type Wrapping,
 } from 'three';
 import type { BarkTextureBuffers } from '../core/types';
 import { setBarkStyle, type BarkLookUniforms } from './barkLook';
@@ -35,19 +36,33 @@ export function createBarkMaterial(): MeshStandardMaterial {
   return new MeshStandardMaterial({ color: BARK_FLAT_COLOR, roughness: 0.92 });
 }
 
-/** A repeating, mipmapped texture of RGBA8 texels (row 0 = v 0). */
-export function bakedTexture(rgba: Uint8Array, size: number, srgb: boolean): DataTexture {
+/**
+ * A mipmapped texture of `size`² RGBA8 texels (row 0 = v 0), sRGB colour or linear data,
+ * repeating or clamped at its edges (`wrap`), anisotropic.
+ */
+export function mipmappedTexture(
+  rgba: Uint8Array,
+  size: number,
+  srgb: boolean,
+  wrap: Wrapping,
+): DataTexture {
   const texture = new DataTexture(rgba, size, size, RGBAFormat, UnsignedByteType);
   texture.colorSpace = srgb ? SRGBColorSpace : NoColorSpace;
-  texture.wrapS = RepeatWrapping;
-  texture.wrapT = RepeatWrapping;
-  texture.repeat.set(BARK_REPEAT, BARK_REPEAT);
+  texture.wrapS = wrap;
+  texture.wrapT = wrap;
   texture.magFilter = LinearFilter;
   texture.minFilter = LinearMipmapLinearFilter;
   texture.generateMipmaps = true;
   texture.anisotropy = 4;
   texture.flipY = false;
   texture.needsUpdate = true;
+  return texture;
+}
+
+/** A repeating, mipmapped texture of RGBA8 texels (row 0 = v 0). */
+export function bakedTexture(rgba: Uint8Array, size: number, srgb: boolean): DataTexture {
+  const texture = mipmappedTexture(rgba, size, srgb, RepeatWrapping);
+  texture.repeat.set(BARK_REPEAT, BARK_REPEAT);
   return texture;
 }
 

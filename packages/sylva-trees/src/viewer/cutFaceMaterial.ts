@@ -5,19 +5,10 @@
  * the rim at radius 0.49 · 0.92), so the disc texture lies on the face with its rings round the
  * stem's axis; the maps clamp at the edge (nothing is drawn outside the disc).
  */
-import {
-  ClampToEdgeWrapping,
-  DataTexture,
-  LinearFilter,
-  LinearMipmapLinearFilter,
-  MeshStandardMaterial,
-  NoColorSpace,
-  RGBAFormat,
-  SRGBColorSpace,
-  UnsignedByteType,
-  Vector2,
-} from 'three';
+import type { DataTexture } from 'three';
+import { ClampToEdgeWrapping, MeshStandardMaterial, Vector2 } from 'three';
 import type { EndGrainBuffers } from '../core/types';
+import { mipmappedTexture } from './barkMaterial';
 
 /** Pale wood until the end grain arrives (and the multiplier is white after). */
 export const CUT_FACE_FLAT_COLOR = '#c8a57a';
@@ -38,17 +29,7 @@ export function createCutFaceMaterial(): MeshStandardMaterial {
 
 /** A clamped, mipmapped disc texture of RGBA8 texels (row 0 = v 0). */
 function discTexture(rgba: Uint8Array, size: number, srgb: boolean): DataTexture {
-  const texture = new DataTexture(rgba, size, size, RGBAFormat, UnsignedByteType);
-  texture.colorSpace = srgb ? SRGBColorSpace : NoColorSpace;
-  texture.wrapS = ClampToEdgeWrapping;
-  texture.wrapT = ClampToEdgeWrapping;
-  texture.magFilter = LinearFilter;
-  texture.minFilter = LinearMipmapLinearFilter;
-  texture.generateMipmaps = true;
-  texture.anisotropy = 4;
-  texture.flipY = false;
-  texture.needsUpdate = true;
-  return texture;
+  return mipmappedTexture(rgba, size, srgb, ClampToEdgeWrapping);
 }
 
 /** Owns the end-grain maps of one cut-face material. */
