@@ -141,6 +141,10 @@ pub struct TreeArgs {
     /// Random seed, the same as `--set seed=N`
     #[arg(long, value_name = "N")]
     pub seed: Option<String>,
+    /// The tree's age in years, the same as `--set age=N`: below the preset's Mature Age a
+    /// younger tree, its growth replayed (docs/user-guide.md, Growth over years)
+    #[arg(long, value_name = "YEARS")]
+    pub age: Option<String>,
     /// The `--set` values.
     #[command(flatten)]
     pub set: Sets,
@@ -150,7 +154,7 @@ pub struct TreeArgs {
     /// Hand edits (paint, crown, cut, bend): a JSON document `{"version": 1, "edits": [...]}` (docs/formats.md)
     #[arg(long, value_name = "FILE.json")]
     pub edits: Option<String>,
-    /// `--seed` and `--set` in the order they were given (filled in by `main`).
+    /// `--seed`, `--age` and `--set` in the order they were given (filled in by `main`).
     #[arg(skip)]
     pub in_order: Vec<(String, String)>,
 }

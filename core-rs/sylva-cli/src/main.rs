@@ -106,11 +106,14 @@ fn usage_error(e: clap::Error) -> String {
     }
 }
 
-/// The `--seed` and `--set` values of a `generate` or `bench` command line, in the order given.
+/// The `--seed`, `--age` and `--set` values of a `generate` or `bench` command line, in the
+/// order given.
 fn ordered_sets(m: &ArgMatches) -> Vec<(String, String)> {
     let mut all: Vec<(usize, (String, String))> = Vec::new();
-    if let (Some(at), Some(values)) = (m.indices_of("seed"), m.get_many::<String>("seed")) {
-        all.extend(at.zip(values.map(|v| ("seed".to_string(), v.clone()))));
+    for id in ["seed", "age"] {
+        if let (Some(at), Some(values)) = (m.indices_of(id), m.get_many::<String>(id)) {
+            all.extend(at.zip(values.map(|v| (id.to_string(), v.clone()))));
+        }
     }
     if let (Some(at), Some(values)) = (m.indices_of("set"), m.get_many::<(String, String)>("set")) {
         all.extend(at.zip(values.cloned()));
@@ -228,5 +231,6 @@ mod tests {
             [kv("seed", "5"), kv("seed", "3"), kv("levels", "2")]
         );
         assert_eq!(parse("sylva bench --seed 3 --set seed=5"), [kv("seed", "3"), kv("seed", "5")]);
+        assert_eq!(parse("sylva generate --age 12 --set age=20 --seed 2"), [kv("age", "12"), kv("age", "20"), kv("seed", "2")]);
     }
 }

@@ -189,7 +189,7 @@ mod tests {
         let generate = cmd.find_subcommand("generate").expect("generate");
         assert_eq!(
             synopsis(generate),
-            "sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json] \
+            "sylva generate [--preset NAME] [--seed N] [--age YEARS] [--set id=value]... [--volumes FILE.json] \
              [--edits FILE.json] [--out FILE.glb|FILE.obj] [--lods] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
              [--no-wind] [--strict] [--report skeleton|mesh]..."
         );

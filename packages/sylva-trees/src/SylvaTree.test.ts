@@ -47,6 +47,22 @@ describe('sylva-trees', () => {
     tree.dispose();
   });
 
+  it('set({ age }) grows the tree through its years; its Mature Age gives the preset tree', async () => {
+    const tree = await SylvaTree.create({ preset: 'oak', worker: false });
+    const mature = tree.stats;
+    expect(tree.params.age).toBe(100);
+    await tree.set({ age: 20 });
+    expect(tree.stats.vertices).toBeLessThan(mature.vertices / 2);
+    expect(tree.stats.leaves).toBeLessThan(mature.leaves);
+    await tree.set({ age: 100 });
+    expect(tree.stats.hash).toBe(mature.hash);
+    await expect(tree.set({ age: 0 })).rejects.toMatchObject({
+      kind: 'invalid_param',
+      param: 'age',
+    });
+    tree.dispose();
+  });
+
   it('rejects invalid parameters with the core message and keeps the tree', async () => {
     await expect(SylvaTree.create({ params: { l1_length: 3 }, worker: false })).rejects.toThrow(
       'l1_length (Length) is 3: allowed range is 0 to 2',
