@@ -231,6 +231,9 @@ mod tests {
             [kv("seed", "5"), kv("seed", "3"), kv("levels", "2")]
         );
         assert_eq!(parse("sylva bench --seed 3 --set seed=5"), [kv("seed", "3"), kv("seed", "5")]);
-        assert_eq!(parse("sylva generate --age 12 --set age=20 --seed 2"), [kv("age", "12"), kv("age", "20"), kv("seed", "2")]);
+        assert_eq!(
+            parse("sylva generate --age 12 --set age=20 --seed 2"),
+            [kv("age", "12"), kv("age", "20"), kv("seed", "2")]
+        );
     }
 }
