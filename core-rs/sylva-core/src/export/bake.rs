@@ -88,9 +88,45 @@ pub struct BakedLeaves {
     pub tangents: Vec<f32>,
 }
 
+/// Per colour channel, the largest leaf tint above 1 (1 where none is). A baked file's colours
+/// are the tints divided by it and its leaf texture is multiplied by it
+/// ([`bake_leaves_scaled`], [`scale_texels`]), so what a viewer shows, their product, is the
+/// tint times the texture even where a tint is over 1 (an autumn leaf's red: glTF's `COLOR_0`
+/// and a PNG's texels stop at 1). Summer tints reach a few per cent over 1 (the leaves' yellow
+/// variation), autumn reds up to about 5.
+pub fn tint_scale(f: &Foliage) -> [f32; 3] {
+    let mut s = [1.0f32; 3];
+    for rgb in f.colors.chunks_exact(3) {
+        for (c, &v) in s.iter_mut().zip(rgb) {
+            if v.is_finite() && v > *c {
+                *c = v;
+            }
+        }
+    }
+    s
+}
+
+/// RGBA8 texels with R, G and B multiplied by `scale` (rounded, clamped to 255), alpha kept:
+/// the leaf texture of a file whose colours are divided by [`tint_scale`].
+pub fn scale_texels(rgba: &[u8], scale: [f32; 3]) -> Vec<u8> {
+    let mut out = rgba.to_vec();
+    for px in out.chunks_exact_mut(4) {
+        for (c, s) in px.iter_mut().zip(scale) {
+            *c = (f32::from(*c) * s + 0.5).min(255.0) as u8;
+        }
+    }
+    out
+}
+
 /// Bakes the instanced foliage into one mesh ([`BakedLeaves`]); `with_tangents` also transforms
-/// the leaf mesh's tangents.
+/// the leaf mesh's tangents. The colours are the tints clamped to 0..1; see
+/// [`bake_leaves_scaled`] for tints over 1.
 pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
+    bake_leaves_scaled(f, with_tangents, [1.0; 3])
+}
+
+/// [`bake_leaves`] with each tint divided by `scale` ([`tint_scale`]) before it is clamped.
+pub fn bake_leaves_scaled(f: &Foliage, with_tangents: bool, scale: [f32; 3]) -> BakedLeaves {
     let leaf = &f.mesh;
     let (nv, count) = (leaf.vertex_count(), f.count());
     let leaf_t =
@@ -139,7 +175,7 @@ pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
                 mesh.indices.extend_from_slice(&[a, b, c]);
             }
         }
-        let c = [unorm8(rgb[0]), unorm8(rgb[1]), unorm8(rgb[2]), 255];
+        let c = [unorm8(rgb[0] / scale[0]), unorm8(rgb[1] / scale[1]), unorm8(rgb[2] / scale[2]), 255];
         for _ in 0..nv {
             colors.extend_from_slice(&c);
         }

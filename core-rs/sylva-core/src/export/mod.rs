@@ -32,13 +32,16 @@ mod quant;
 mod textures;
 mod tint;
 
-pub use bake::{bake_leaves, decompose, decompose_rotation, decompose_scale, BakedLeaves};
+pub use bake::{
+    bake_leaves, bake_leaves_scaled, decompose, decompose_rotation, decompose_scale, scale_texels, tint_scale,
+    BakedLeaves,
+};
 pub use lods::{lods_glb, LOD_SCREEN_SIZES};
 pub use options::{ExportOptions, LeafMode};
 pub use tint::{bark_colors, bark_colors_into, TINT_STEPS};
 
 pub use frames::{frames_of_snorm8_write, frames_snorm8_write, mesh_tangents, normals_snorm8_write, tangents};
-pub use textures::{bark_pngs, end_grain_pngs, leaf_pngs, TexturePngs};
+pub use textures::{bark_pngs, end_grain_pngs, leaf_pngs, leaf_pngs_scaled, TexturePngs};
 
 use crate::Generated;
 

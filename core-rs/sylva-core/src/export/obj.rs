@@ -59,7 +59,8 @@ fn texture_names_all(name: &str) -> [String; 6] {
 /// The `.obj` text.
 pub fn obj(g: &Generated, opts: &ExportOptions, name: &str) -> String {
     let bark = &g.mesh;
-    let baked = has_leaves(g, opts).then(|| super::bake_leaves(&g.foliage, false));
+    let scale = super::tint_scale(&g.foliage);
+    let baked = has_leaves(g, opts).then(|| super::bake_leaves_scaled(&g.foliage, false, scale));
     let leaves = baked.as_ref().map(|b| &b.mesh);
     let verts = bark.vertex_count() + leaves.map_or(0, TreeMesh::vertex_count);
     let tris = bark.triangle_count() + leaves.map_or(0, TreeMesh::triangle_count);
@@ -212,7 +213,11 @@ pub fn texture_png(g: &Generated, opts: &ExportOptions, index: usize) -> Option<
         }
         Tex::LeafColor | Tex::LeafNormal => {
             let t = g.foliage.texture()?;
-            Some(png(t.width, t.height, if tex == Tex::LeafColor { &t.color } else { &t.normal }))
+            if tex == Tex::LeafNormal {
+                return Some(png(t.width, t.height, &t.normal));
+            }
+            // The colours are the tints divided by this scale (`tint_scale`): the texture takes it.
+            Some(png(t.width, t.height, &super::scale_texels(&t.color, super::tint_scale(&g.foliage))))
         }
         Tex::CutFaceColor | Tex::CutFaceNormal => {
             let m = crate::mesh::bark::end_grain::bake(g.bark, opts.bark_texture_size as usize);

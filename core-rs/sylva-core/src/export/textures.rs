@@ -29,6 +29,7 @@ type PngCache = Mutex<Option<(u64, Arc<TexturePngs>)>>;
 static BARK_PNGS: PngCache = Mutex::new(None);
 static LEAF_PNGS: PngCache = Mutex::new(None);
 static GRAIN_PNGS: PngCache = Mutex::new(None);
+static SCALED_LEAF_PNGS: PngCache = Mutex::new(None);
 
 /// `make()` once per `key` (the last key is kept; the textures are pure functions of the key,
 /// so the cache never changes a result, it only saves the encoding time of repeated exports).
@@ -87,6 +88,24 @@ pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
         width: t.width,
         height: t.height,
         color: png::encode_rgba(t.width, t.height, &t.color),
+        normal: png::encode_rgba(t.width, t.height, &t.normal),
+        orm: None,
+    }))
+}
+
+/// [`leaf_pngs`] with the colour map's R, G and B multiplied by `scale` ([`super::bake::tint_scale`]:
+/// the texture of leaves whose colours are divided by it); [`leaf_pngs`] itself when it is 1.
+pub fn leaf_pngs_scaled(f: &Foliage, scale: [f32; 3]) -> Option<Arc<TexturePngs>> {
+    if scale == [1.0; 3] {
+        return leaf_pngs(f);
+    }
+    let leaf = f.leaf.as_deref()?;
+    let t = &leaf.texture;
+    let key = scale.iter().fold(leaf.hash, |h, s| h.rotate_left(21) ^ u64::from(s.to_bits()));
+    Some(cached(&SCALED_LEAF_PNGS, key, || TexturePngs {
+        width: t.width,
+        height: t.height,
+        color: png::encode_rgba(t.width, t.height, &super::bake::scale_texels(&t.color, scale)),
         normal: png::encode_rgba(t.width, t.height, &t.normal),
         orm: None,
     }))

@@ -80,12 +80,14 @@ fn baked_leaves_carry_their_tint_and_their_twigs_wind() {
         assert_eq!(glb.json["nodes"].as_array().unwrap().len(), 3, "{name}: sylva_tree, bark, leaves");
         assert_eq!(glb.json["meshes"].as_array().unwrap().len(), 2, "{name}");
         // The tint: the instanced file's (`_COLOR_0`, the crown's shade included) as bytes,
-        // clamped to 0..1.
+        // divided by the scale of the tints over 1, which the leaf texture takes (`tint_scale`).
+        let scale = sylva_core::export::tint_scale(f);
         let colors = unorm8(&glb, attrs["COLOR_0"].as_u64().unwrap());
         assert_eq!(colors.len(), nv * f.count(), "{name}");
         for (k, tint) in f.colors.chunks_exact(3).enumerate() {
-            let want: [u8; 4] =
-                std::array::from_fn(|i| tint.get(i).map_or(255, |&c| (c.clamp(0.0, 1.0) * 255.0).round() as u8));
+            let want: [u8; 4] = std::array::from_fn(|i| {
+                tint.get(i).map_or(255, |&c| ((c / scale[i]).clamp(0.0, 1.0) * 255.0 + 0.5) as u8)
+            });
             assert!(colors[k * nv..(k + 1) * nv].iter().all(|c| *c == want), "{name} leaf {k}: {want:?}");
         }
         assert!(leaves["extras"].get("leaf_tint_scale").is_none());

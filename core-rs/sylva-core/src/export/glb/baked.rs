@@ -18,18 +18,18 @@
 //!   has no per-leaf wind record: a shader there takes a leaf's anchor from its instance
 //!   translation, which the baked file no longer has.)
 
-use crate::export::bake::{bake_leaves, BakedLeaves};
+use crate::export::bake::{bake_leaves_scaled, BakedLeaves};
 use crate::mesh::{Bounds, WIND_STRIDE};
 use crate::Generated;
 use glam::Vec3;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
-/// The baked leaves of `g` ([`bake_leaves`]: the clamped tints as colours) and, with `wind`,
+/// The baked leaves of `g` ([`bake_leaves_scaled`]: the tints divided by `scale` as colours) and, with `wind`,
 /// each leaf's wind record repeated on its vertices (`mesh.wind`, when the bark carries wind
 /// data; [`leaf_wind`]).
-pub(super) fn bake(g: &Generated, with_tangents: bool, wind: bool, threads: usize) -> BakedLeaves {
-    let mut b = bake_leaves(&g.foliage, with_tangents);
+pub(super) fn bake(g: &Generated, with_tangents: bool, wind: bool, threads: usize, scale: [f32; 3]) -> BakedLeaves {
+    let mut b = bake_leaves_scaled(&g.foliage, with_tangents, scale);
     let nv = g.foliage.mesh.vertex_count();
     if let Some(records) = wind.then(|| leaf_wind(g, threads)).flatten() {
         b.mesh.wind = Vec::with_capacity(records.len() * nv * WIND_STRIDE);

@@ -54,7 +54,8 @@
 //!   `instanceColor`). The extension is listed in `extensionsUsed` but not required: a viewer
 //!   without it shows the single leaf mesh at the origin. [`LeafMode::Baked`] (the file for
 //!   editors, which import the extension as one object per leaf): all leaves transformed into
-//!   one mesh (`baked.rs`) with the tint as `COLOR_0` (RGBA8, clamped to 0..1) and, with
+//!   one mesh (`baked.rs`) with the tint as `COLOR_0` (RGBA8, divided per channel by the tints'
+//!   largest value over 1, which the leaf texture takes: `bake::tint_scale`) and, with
 //!   wind, each leaf's twig's wind record, coded as the bark's (the bark's codec and
 //!   `extras`); indices `u32` past 65,535 vertices, as the bark's.
 //! * **Materials** (metallic-roughness, metallic 0; `materials.rs`): `bark` (roughness 0.9, bark colour map,
@@ -167,14 +168,16 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
     let normal_maps = opts.textures && opts.normal_maps;
     // Tangents only for the normal maps, and only when asked for.
     let tangents = normal_maps && opts.tangents;
-    let leaf_pngs = if opts.textures && has_leaves { super::textures::leaf_pngs(f) } else { None };
     let instanced = has_leaves && leaves == LeafMode::Instanced;
+    // Baked colours are bytes: tints over 1 (autumn) move into the texture (`tint_scale`).
+    let scale = if has_leaves && leaves == LeafMode::Baked { super::bake::tint_scale(f) } else { [1.0; 3] };
+    let leaf_pngs = if opts.textures && has_leaves { super::textures::leaf_pngs_scaled(f, scale) } else { None };
     let has_cut = has_bark && bark.groups.iter().any(|g| g.material == Material::CutFace && g.count > 0);
     let owned = Owned {
         bark_pngs: (has_bark && opts.textures).then(|| super::textures::bark_pngs(g.bark, opts.bark_texture_size)),
         grain_pngs: (has_cut && opts.textures).then(|| super::textures::end_grain_pngs(g.bark, opts.bark_texture_size)),
         baked: (has_leaves && leaves == LeafMode::Baked)
-            .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads)),
+            .then(|| baked::bake(g, tangents && leaf_pngs.is_some(), opts.wind && has_bark, threads, scale)),
         leaf_tangents: (instanced && tangents && leaf_pngs.is_some())
             .then(|| super::frames::tangents(&f.mesh.positions, &f.mesh.normals, &f.mesh.uvs, &f.mesh.indices)),
         bark_tangents: (opts.strict && has_bark && tangents && opts.textures)
