@@ -126,7 +126,7 @@ test('embedding, package and command-line sections, reachable from the contents'
     for (const e of c.examples) await expect(command).toContainText(e);
   }
   for (const usage of [
-    'sylva generate [--preset NAME] [--seed N] [--set id=value]... [--volumes FILE.json]',
+    'sylva generate [--preset NAME] [--seed N] [--age YEARS] [--set id=value]... [--volumes FILE.json]',
     '[--no-tangents]',
     'sylva envelope --shape NAME [--samples N]',
     'sylva leaf [--preset NAME]',
