@@ -36,6 +36,18 @@ struct Prefix {
     reports: Vec<EditReport>,
 }
 
+impl Prefix {
+    /// This tree with the next edit, the stroke whose growth (from this tree) is `growth`.
+    fn grown(&self, growth: &PaintGrowth) -> Result<Prefix, SylvaError> {
+        let mut after = self.clone();
+        growth.apply(&mut after.skeleton)?;
+        after.markers.extend_from_slice(growth.markers());
+        after.reports.push(EditReport::resolved("paint"));
+        after.edits += 1;
+        Ok(after)
+    }
+}
+
 /// The growth of the list's last edit, a stroke, from the tree before it.
 struct Stroke {
     /// The prefix it grew from: the list's length minus one.
@@ -136,7 +148,7 @@ impl EditCache {
             self.edits.clear();
             self.stroke = None;
         }
-        let (skeleton, markers, reports) = result?;
+        let Prefix { skeleton, markers, reports, .. } = result?;
         let crown = edits::drawn_crown(&p.edits);
         let envelope = skeleton::preview_profile_with_crown(&skeleton, p, crown, ENVELOPE_SAMPLES);
         Ok(SkeletonOut { skeleton, markers, envelope, edits: reports })
@@ -144,7 +156,7 @@ impl EditCache {
 
     /// The tree after every edit of `list`, from the longest kept prefix it shares with the last
     /// list (or the stroke being drawn, extended).
-    fn apply(&mut self, list: &[Edit]) -> Result<(Skeleton, Vec<Vec3>, Vec<EditReport>), SylvaError> {
+    fn apply(&mut self, list: &[Edit]) -> Result<Prefix, SylvaError> {
         let shared = self.edits.iter().zip(list).take_while(|(a, b)| a == b).count();
         if let Some(out) = self.extend_stroke(list, shared)? {
             return Ok(out);
@@ -156,41 +168,36 @@ impl EditCache {
             }
         }
         self.prefixes.retain(|q| q.edits <= shared);
-        let start = self.prefixes.last().expect("the empty prefix is always kept").clone();
-        let Prefix { mut skeleton, mut markers, mut reports, .. } = start;
-        self.resume = Resume { rebuilt: false, reused_edits: reports.len(), extended_stroke: false };
+        let mut tree = self.prefixes.last().expect("the empty prefix is always kept").clone();
+        self.resume = Resume { rebuilt: false, reused_edits: tree.edits, extended_stroke: false };
         let n = list.len();
-        for (i, edit) in list.iter().enumerate().skip(reports.len()) {
-            if i + 1 == n {
-                if let Edit::Paint(paint) = edit {
-                    self.keep(i, &skeleton, &markers, &reports);
-                    let mut growth = PaintGrowth::new(&skeleton, paint, skeleton.seed, i, skeleton.max_vertices)?;
-                    growth.extend(&paint.points)?;
-                    growth.apply(&mut skeleton)?;
-                    markers.extend_from_slice(growth.markers());
-                    reports.push(EditReport::resolved(edit.op()));
-                    self.stroke = Some(Stroke { from: i, growth, paint: paint.clone() });
-                    break;
-                }
+        for (i, edit) in list.iter().enumerate().skip(tree.edits) {
+            if let (true, Edit::Paint(paint)) = (i + 1 == n, edit) {
+                // The last edit is a stroke: keep its growth, which the next update may extend.
+                let (seed, budget) = (tree.skeleton.seed, tree.skeleton.max_vertices);
+                let mut growth = PaintGrowth::new(&tree.skeleton, paint, seed, i, budget)?;
+                growth.extend(&paint.points)?;
+                let after = tree.grown(&growth)?;
+                self.keep(tree);
+                self.stroke = Some(Stroke { from: i, growth, paint: paint.clone() });
+                tree = after;
+                break;
             }
-            reports.push(edits::apply_one(&mut skeleton, edit, i, &mut markers)?);
+            let report = edits::apply_one(&mut tree.skeleton, edit, i, &mut tree.markers)?;
+            tree.reports.push(report);
+            tree.edits = i + 1;
             // Keep the trees near the end of the list: the next update most likely continues it.
             if i + 1 + KEEP > n {
-                self.keep(i + 1, &skeleton, &markers, &reports);
+                self.keep(tree.clone());
             }
         }
         self.edits = list.to_vec();
-        Ok((skeleton, markers, reports))
+        Ok(tree)
     }
 
     /// The list's last edit continues the stroke being drawn: grow its new points from the
     /// tree before it. `None` when it does not.
-    #[allow(clippy::type_complexity, reason = "the stage's three outputs, or none")]
-    fn extend_stroke(
-        &mut self,
-        list: &[Edit],
-        shared: usize,
-    ) -> Result<Option<(Skeleton, Vec<Vec3>, Vec<EditReport>)>, SylvaError> {
+    fn extend_stroke(&mut self, list: &[Edit], shared: usize) -> Result<Option<Prefix>, SylvaError> {
         let Some(stroke) = self.stroke.as_mut() else { return Ok(None) };
         let n = list.len();
         let Some(Edit::Paint(paint)) = list.last() else { return Ok(None) };
@@ -198,40 +205,31 @@ impl EditCache {
             return Ok(None);
         }
         let Some(before) = self.prefixes.iter().find(|q| q.edits == stroke.from) else { return Ok(None) };
-        let (mut skeleton, mut markers, mut reports) =
-            (before.skeleton.clone(), before.markers.clone(), before.reports.clone());
         stroke.growth.extend(&paint.points)?;
-        stroke.growth.apply(&mut skeleton)?;
         stroke.paint.points.clone_from(&paint.points);
-        markers.extend_from_slice(stroke.growth.markers());
-        reports.push(EditReport::resolved(list[n - 1].op()));
+        let after = before.grown(&stroke.growth)?;
         self.edits = list.to_vec();
         self.resume = Resume { rebuilt: false, reused_edits: n - 1, extended_stroke: true };
-        Ok(Some((skeleton, markers, reports)))
+        Ok(Some(after))
     }
 
     /// Keeps the tree after `stroke`, the last edit of the last list.
     fn keep_stroke(&mut self, stroke: &Stroke) -> Result<(), SylvaError> {
         let Some(before) = self.prefixes.iter().find(|q| q.edits == stroke.from) else { return Ok(()) };
-        let (mut skeleton, mut markers, mut reports) =
-            (before.skeleton.clone(), before.markers.clone(), before.reports.clone());
-        stroke.growth.apply(&mut skeleton)?;
-        markers.extend_from_slice(stroke.growth.markers());
-        reports.push(EditReport::resolved("paint"));
-        self.keep(stroke.from + 1, &skeleton, &markers, &reports);
+        let after = before.grown(&stroke.growth)?;
+        self.keep(after);
         Ok(())
     }
 
-    /// Keeps the tree after the first `edits` edits (replacing one kept for as many), and at most
-    /// [`KEEP`] besides the empty one.
-    fn keep(&mut self, edits: usize, skeleton: &Skeleton, markers: &[Vec3], reports: &[EditReport]) {
-        if edits == 0 {
+    /// Keeps `tree`, the tree after the first `tree.edits` edits (replacing one kept for as
+    /// many), and at most [`KEEP`] besides the empty one.
+    fn keep(&mut self, tree: Prefix) {
+        if tree.edits == 0 {
             return;
         }
-        self.prefixes.retain(|q| q.edits != edits);
-        let prefix = Prefix { edits, skeleton: skeleton.clone(), markers: markers.to_vec(), reports: reports.to_vec() };
-        let at = self.prefixes.partition_point(|q| q.edits < edits);
-        self.prefixes.insert(at, prefix);
+        self.prefixes.retain(|q| q.edits != tree.edits);
+        let at = self.prefixes.partition_point(|q| q.edits < tree.edits);
+        self.prefixes.insert(at, tree);
         while self.prefixes.len() > KEEP + 1 {
             self.prefixes.remove(1);
         }
