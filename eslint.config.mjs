@@ -12,7 +12,12 @@ export default [
   },
   // Its callbacks run in the page (Playwright's evaluate / waitForFunction).
   {
-    files: ['scripts/bench-browser.mjs', 'scripts/bench-edits.mjs', 'scripts/gallery/*.mjs'],
+    files: [
+      'scripts/bench-browser.mjs',
+      'scripts/bench-edits.mjs',
+      'scripts/bench-page.mjs',
+      'scripts/gallery/*.mjs',
+    ],
     languageOptions: { globals: { ...globals.browser } },
   },
 ];

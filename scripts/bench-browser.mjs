@@ -16,6 +16,7 @@ import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { benchCut, benchPaint } from './bench-edits.mjs';
+import { openDefaultTree } from './bench-page.mjs';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
 import { freePort, serve } from './preview-server.mjs';
 import { median, percentile, round } from './bench-stats.mjs';
@@ -182,26 +183,8 @@ function dragValues(spec, value) {
 
 /** 20-step drags of every control of `ids` (DRAG_PARAMS) on the default tree. */
 async function drag(browser, url, ids = DRAG_PARAMS) {
-  const page = await browser.newPage({
-    viewport: { width: 1000, height: 700 },
-    reducedMotion: 'reduce',
-  });
-  page.on('crash', () => console.error('bench: the page crashed'));
-  page.on('pageerror', (e) => console.error(`bench: page error: ${e.message}`));
-  await page.goto(`${url}?debug=1&v=1`);
-  await page.waitForFunction(() =>
-    /^[0-9a-f]{16}$/.test(
-      document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
-    ),
-  );
-  // Software WebGL draws a frame of this tree in seconds: frames are not drawn between the
-  // timed steps (the answers are still set up, ready for a frame), and one frame is drawn and
-  // timed after each drag and after each release (frame_ms). With frames that slow a drag would
-  // also read as a pause and settle by itself: only the release settles here, as on a real GPU.
-  await page.evaluate(() => {
-    window.__sylva.pauseRendering(true);
-    window.__sylva.settleWhenIdle(false);
-  });
+  // Frames are drawn and timed only after each drag and each release (frame_ms).
+  const page = await openDefaultTree(browser, url, { query: '?debug=1&v=1' });
   const probe = () => page.evaluate(() => window.__sylva.probeFrame());
   const per = {};
   const all = [];

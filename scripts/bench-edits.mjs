@@ -14,85 +14,75 @@
 // Frames are not drawn between the timed steps (software WebGL takes seconds per frame); the
 // answers are set up, ready for the next frame.
 // Exports `benchPaint(browser, url)` and `benchCut(browser, url)`.
+import { openDefaultTree } from './bench-page.mjs';
 import { median, percentile, round } from './bench-stats.mjs';
 
 const STROKE_POINTS = 40;
 const CUTS = 10;
 
-/** A page on the default tree, rendering paused, with a log of the trees applied. */
-async function openApp(browser, url) {
-  const page = await browser.newPage({
-    viewport: { width: 1000, height: 700 },
-    reducedMotion: 'reduce',
-  });
-  page.on('crash', () => console.error('bench: the page crashed'));
-  page.on('pageerror', (e) => console.error(`bench: page error: ${e.message}`));
-  await page.addInitScript(() => {
-    window.__benchApplied = [];
-    addEventListener('sylva:applied', (e) => window.__benchApplied.push(e.detail));
-    /**
-     * Dispatches pointer event `type` at client `(x, y)` on the viewer's canvas and resolves
-     * with `{ first, full, parts }`: ms from the dispatch to the next tree applied and to the
-     * next full one, or null when `wait` says the event asked for nothing.
-     */
-    window.__benchPointer = (type, x, y, wait) =>
-      new Promise((resolve, reject) => {
-        const canvas = document.querySelector('canvas[data-testid="viewer-canvas"]');
-        const n = window.__benchApplied.length;
-        const timer = setTimeout(() => reject(new Error(`no answer to ${type}`)), 30_000);
-        const t0 = performance.now();
-        const poll = () => {
-          const after = window.__benchApplied.slice(n);
-          const full = after.find((a) => !a.preview);
-          if (after.length && (full || wait === 'first')) {
+/** The default tree's page (`openDefaultTree`) with a log of the trees applied. */
+function openApp(browser, url) {
+  return openDefaultTree(browser, url, {
+    init: () => {
+      window.__benchApplied = [];
+      addEventListener('sylva:applied', (e) => window.__benchApplied.push(e.detail));
+      /**
+       * Dispatches pointer event `type` at client `(x, y)` on the viewer's canvas and resolves
+       * with `{ first, full, parts }`: ms from the dispatch to the next tree applied and to the
+       * next full one (`wait`: 'first' or 'full'), or null at once (`wait` 'none', or a move
+       * that adds no brush point: it asks for nothing).
+       */
+      window.__benchPointer = (type, x, y, wait) =>
+        new Promise((resolve, reject) => {
+          const canvas = document.querySelector('canvas[data-testid="viewer-canvas"]');
+          const n = window.__benchApplied.length;
+          const timer = setTimeout(() => reject(new Error(`no answer to ${type}`)), 30_000);
+          const t0 = performance.now();
+          const poll = () => {
+            const after = window.__benchApplied.slice(n);
+            const full = after.find((a) => !a.preview);
+            if (after.length && (full || wait === 'first')) {
+              clearTimeout(timer);
+              const a = after[0];
+              resolve({
+                first: a.at - t0,
+                full: full ? full.at - t0 : null,
+                parts: [
+                  a.requestedAt - t0,
+                  a.workerMs,
+                  a.received - a.requestedAt,
+                  a.at - a.received,
+                ],
+              });
+            } else setTimeout(poll, 1);
+          };
+          const points = window.__sylva.edits().strokePoints;
+          for (const t of type.split('+')) {
+            canvas.dispatchEvent(
+              new PointerEvent(t, {
+                clientX: x,
+                clientY: y,
+                pointerId: 1,
+                pointerType: 'mouse',
+                isPrimary: true,
+                button: 0,
+                buttons: t === 'pointerup' ? 0 : 1,
+                bubbles: true,
+                cancelable: true,
+              }),
+            );
+          }
+          if (wait === 'none') {
             clearTimeout(timer);
-            const a = after[0];
-            resolve({
-              first: a.at - t0,
-              full: full ? full.at - t0 : null,
-              parts: [
-                a.requestedAt - t0,
-                a.workerMs,
-                a.received - a.requestedAt,
-                a.at - a.received,
-              ],
-            });
-          } else setTimeout(poll, 1);
-        };
-        const points = window.__sylva.edits().strokePoints;
-        for (const t of type.split('+')) {
-          canvas.dispatchEvent(
-            new PointerEvent(t, {
-              clientX: x,
-              clientY: y,
-              pointerId: 1,
-              pointerType: 'mouse',
-              isPrimary: true,
-              button: 0,
-              buttons: t === 'pointerup' ? 0 : 1,
-              bubbles: true,
-              cancelable: true,
-            }),
-          );
-        }
-        // A move that adds no brush point asks for nothing.
-        if (wait === 'first' && window.__sylva.edits().strokePoints === points) {
-          clearTimeout(timer);
-          resolve(null);
-        } else poll();
-      });
+            resolve(null);
+          } else if (wait === 'first' && window.__sylva.edits().strokePoints === points) {
+            // A move that adds no brush point asks for nothing.
+            clearTimeout(timer);
+            resolve(null);
+          } else poll();
+        });
+    },
   });
-  await page.goto(`${url}?debug=1`);
-  await page.waitForFunction(() =>
-    /^[0-9a-f]{16}$/.test(
-      document.querySelector('[data-testid=stat-hash]')?.textContent?.trim() ?? '',
-    ),
-  );
-  await page.evaluate(() => {
-    window.__sylva.pauseRendering(true);
-    window.__sylva.settleWhenIdle(false);
-  });
-  return page;
 }
 
 /** Dispatches pointer events `type` (`+`-joined) at `(x, y)`: see `__benchPointer`. */
@@ -193,22 +183,7 @@ export async function benchCut(browser, url) {
       if (!branch) break;
       cuts.push(branch.at);
       // A click: the press (it finds the branch), a tenth of a second, the release (it cuts).
-      await page.evaluate(
-        ([x, y]) => {
-          document.querySelector('canvas[data-testid="viewer-canvas"]').dispatchEvent(
-            new PointerEvent('pointerdown', {
-              clientX: x,
-              clientY: y,
-              pointerId: 1,
-              button: 0,
-              buttons: 1,
-              bubbles: true,
-              cancelable: true,
-            }),
-          );
-        },
-        [branch.x, branch.y],
-      );
+      await pointer(page, 'pointerdown', branch.x, branch.y, 'none');
       await page.waitForTimeout(100);
       const r = await pointer(page, 'pointerup', branch.x, branch.y, 'full');
       // A user looks at the result before the next cut.

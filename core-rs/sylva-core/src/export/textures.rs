@@ -82,31 +82,32 @@ pub fn end_grain_pngs(kind: BarkType, size: u32) -> Arc<TexturePngs> {
 
 /// The baked leaf textures of `f` as PNGs (`None` when the tree is bare). Cached by leaf hash.
 pub fn leaf_pngs(f: &Foliage) -> Option<Arc<TexturePngs>> {
-    let leaf = f.leaf.as_deref()?;
-    let t = &leaf.texture;
-    Some(cached(&LEAF_PNGS, leaf.hash, || TexturePngs {
-        width: t.width,
-        height: t.height,
-        color: png::encode_rgba(t.width, t.height, &t.color),
-        normal: png::encode_rgba(t.width, t.height, &t.normal),
-        orm: None,
-    }))
+    leaf_pngs_scaled(f, [1.0; 3])
 }
 
 /// [`leaf_pngs`] with the colour map's R, G and B multiplied by `scale` ([`super::bake::tint_scale`]:
-/// the texture of leaves whose colours are divided by it); [`leaf_pngs`] itself when it is 1.
+/// the texture of leaves whose colours are divided by it); [`leaf_pngs`]' own when it is 1.
 pub fn leaf_pngs_scaled(f: &Foliage, scale: [f32; 3]) -> Option<Arc<TexturePngs>> {
-    if scale == [1.0; 3] {
-        return leaf_pngs(f);
-    }
     let leaf = f.leaf.as_deref()?;
     let t = &leaf.texture;
-    let key = scale.iter().fold(leaf.hash, |h, s| h.rotate_left(21) ^ u64::from(s.to_bits()));
-    Some(cached(&SCALED_LEAF_PNGS, key, || TexturePngs {
-        width: t.width,
-        height: t.height,
-        color: png::encode_rgba(t.width, t.height, &super::bake::scale_texels(&t.color, scale)),
-        normal: png::encode_rgba(t.width, t.height, &t.normal),
-        orm: None,
+    let plain = scale == [1.0; 3];
+    let (cache, key) = if plain {
+        (&LEAF_PNGS, leaf.hash)
+    } else {
+        (&SCALED_LEAF_PNGS, scale.iter().fold(leaf.hash, |h, s| h.rotate_left(21) ^ u64::from(s.to_bits())))
+    };
+    Some(cached(cache, key, || {
+        let color = if plain {
+            png::encode_rgba(t.width, t.height, &t.color)
+        } else {
+            png::encode_rgba(t.width, t.height, &super::bake::scale_texels(&t.color, scale))
+        };
+        TexturePngs {
+            width: t.width,
+            height: t.height,
+            color,
+            normal: png::encode_rgba(t.width, t.height, &t.normal),
+            orm: None,
+        }
     }))
 }
