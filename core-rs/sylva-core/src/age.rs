@@ -30,7 +30,7 @@
 //! monotonically with Age.
 
 use crate::edits::cut::reattach_children;
-use crate::edits::stems::{remove, subtree};
+use crate::edits::stems::remove;
 use crate::math::{exp, ln, pow};
 use crate::skeleton::{Points, Skeleton, StemKind};
 
@@ -116,9 +116,17 @@ pub fn replay(skeleton: &mut Skeleton, age: f32, mature: f32) {
                 continue;
             }
         }
+        let s = &skeleton.stems[i];
+        // A branch is born after its parent reached it; one attached past its young parent's tip
+        // by rounding goes too (the parent, earlier in the list, is already young).
+        if let Some(p) = s.parent.filter(|_| s.kind != StemKind::Root) {
+            if s.offset > skeleton.stems[p as usize].length {
+                gone[i] = true;
+                continue;
+            }
+        }
         let tau = (age - birth[i]) / (mature - birth[i]).max(1e-3);
         let reached = length_fraction(tau);
-        let s = &skeleton.stems[i];
         // The record spans the chain from its start to the chain's end.
         let kept = (reached - s.chain_start) / (1.0 - s.chain_start).max(1e-6);
         // A shoot shows once it is longer than a few of the thinnest radius (a bud before that;
@@ -128,20 +136,6 @@ pub fn replay(skeleton: &mut Skeleton, age: f32, mature: f32) {
             continue;
         }
         young(skeleton, i, kept.min(1.0), reached, tau.clamp(0.0, 1.0));
-    }
-    // Children attached beyond a young stem's tip go with their subtrees.
-    for i in 0..n {
-        if gone[i] {
-            continue;
-        }
-        if let Some(p) = skeleton.stems[i].parent {
-            let parent = &skeleton.stems[p as usize];
-            if skeleton.stems[i].kind != StemKind::Root && skeleton.stems[i].offset > parent.length {
-                for (g, m) in gone.iter_mut().zip(subtree(skeleton, i)) {
-                    *g |= m;
-                }
-            }
-        }
     }
     // The kept children sit on their young parent's resampled curve exactly.
     for i in 0..n {
