@@ -1,7 +1,8 @@
 /**
  * Shape by hand on the real app, with Playwright's mouse: a paint stroke beside the tree makes
  * it grow there (the bounds and the pixels), a click cuts a branch (fewer vertices), the share
- * link reproduces the edited tree's hash in a fresh page, and undo restores the hash.
+ * link reproduces the edited tree's hash in a fresh page (a younger Age has the branch whole, an
+ * older one a callus over the cut), and undo restores the hash.
  *
  * Needs a core that reads the edit list (`SkeletonParams::edits`, the `"edits"` key of the
  * generate JSON): a core without it rejects the key and the edited tree never comes.
@@ -137,11 +138,33 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
 
   await page.waitForTimeout(DEBOUNCE_WAIT_MS);
   const link = page.url();
-  expect(new URL(link).searchParams.get('e')).toMatch(/^1~c-?\d+\.\d+\.-?\d+$/);
+  // The cut carries the tree's Age (40) as its year.
+  expect(new URL(link).searchParams.get('e')).toMatch(/^1~c-?\d+\.\d+\.-?\d+\.40$/);
   const fresh = await browser.newPage();
   await fresh.goto(link);
   expect(await waitForTree(fresh)).toBe(cut);
   await expect(fresh.getByTestId('edit-row')).toHaveCount(1);
+  // Younger than the cut: the branch is whole (the uncut tree of that age), the cut pending.
+  const at = (age: number, edits: boolean) => {
+    const u = new URL(link);
+    if (!edits) u.searchParams.delete('e');
+    u.searchParams.set('age', String(age));
+    return u.toString();
+  };
+  await fresh.goto(at(30, false));
+  const young = await waitForTree(fresh);
+  await fresh.goto(at(30, true));
+  expect(await waitForTree(fresh)).toBe(young);
+  await expect(fresh.getByTestId('edit-pending')).toHaveText('in year 40');
+  // Fifteen years on (the tree keeps its mature form): woundwood rolls over the face, one more
+  // ring of vertices around the stump.
+  await fresh.goto(at(55, true));
+  expect(await waitForTree(fresh)).not.toBe(cut);
+  await expect(fresh.getByTestId('edit-pending')).toHaveCount(0);
+  const extra =
+    (await statNumber(fresh, 'stat-vertices')) - (await statNumber(page, 'stat-vertices'));
+  expect(extra).toBeGreaterThanOrEqual(5);
+  expect(extra).toBeLessThanOrEqual(65);
   await fresh.close();
 
   await page.keyboard.press('Control+z');

@@ -1,7 +1,8 @@
 // Gallery section: close-ups at the distance a user inspects a tree from: the four bark types on
 // species trunks, a shifted fork, a branch collar, tree holes (the issue's and the default size),
-// a leaf cluster, conifer needles and a cut branch's stump (end grain in its bark rim, opened from
-// a share link's `e=`). Camera positions come from the native CLI's reports of the same trees.
+// a leaf cluster, conifer needles and a cut branch's stump (end grain in its bark rim, and the
+// callus closing over it in the years after the cut), opened from a share link's `e=`. Camera
+// positions come from the native CLI's reports of the same trees.
 import { imageTable } from './context.mjs';
 
 const BARKS = [
@@ -17,7 +18,7 @@ export const closeupsSection = {
   id: 'closeups',
   title: 'Close-ups',
   intro:
-    'Bark types on species trunks at about a metre, a fork, a branch collar, tree holes, a leaf cluster, conifer needles and the stump of a cut branch, as a user sees them up close.',
+    'Bark types on species trunks at about a metre, a fork, a branch collar, tree holes, a leaf cluster, conifer needles and the stump of a cut branch (fresh, then closing over with woundwood in the years after the cut), as a user sees them up close.',
   layout: (shots) => imageTable(shots, 2),
   async shots(ctx) {
     const shots = [];
@@ -106,6 +107,17 @@ export const closeupsSection = {
     await shot('cut-stump.png', 'A cut main branch of the default tree: end grain in a bark rim');
     await ctx.view(add(add(cut, along, 1.2), [0.3, 0.4, 0]), cut);
     await shot('cut-stump-far.png', 'The same cut from a step back');
+    // The same cut made in year 40 (the default tree's Age), seen 1, 2 and 5 years later: the
+    // callus rolls in over the end grain from the bark rim (about 1 cm a year) and closes.
+    for (const years of [1, 2, 5]) {
+      await ctx.open({ age: 40 + years }, `${edits}.40`);
+      await ctx.view(add(add(cut, along, 0.2), [0.05, 0.06, 0]), add(cut, along, -0.02));
+      const when = years === 1 ? 'a year' : `${years} years`;
+      await shot(
+        `cut-callus-${years}.png`,
+        `The same cut ${when} after it was made: woundwood rolls over the face`,
+      );
+    }
     return shots;
   },
 };

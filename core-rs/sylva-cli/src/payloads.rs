@@ -174,6 +174,11 @@ pub const INTERFACES: &[Interface] = &[
             f("op", Ty::String, "The edit's op: `paint`, `crown`, `cut` or `bend`."),
             f("resolved", Ty::Bool, "Whether the edit found its stem and was applied."),
             opt("why", Ty::String, "Why not, when unresolved."),
+            opt(
+                "pending_year",
+                Ty::Number,
+                "A dated cut the tree is too young for: the year it happens (the branch is whole until then).",
+            ),
         ],
     },
     Interface {

@@ -68,7 +68,7 @@ fn a_cut_removes_the_subtree_and_leaves_a_closed_capped_end() {
     let (at, _) = sk.stems[i].point_at(along);
     let removed = beyond(sk, i, along);
     assert!(removed > 3, "the cut takes children with it");
-    let g = generate(&with_edits(vec![Edit::Cut(Cut { at })])).unwrap();
+    let g = generate(&with_edits(vec![Edit::Cut(Cut { at, year: None })])).unwrap();
     assert_eq!(g.skeleton.stems.len(), sk.stems.len() - removed);
     assert_eq!(g.edits.len(), 1);
     assert!(g.edits[0].resolved, "{:?}", g.edits);
@@ -100,7 +100,7 @@ fn cutting_the_trunk_keeps_the_roots_and_stays_closed() {
     let p = TreeParams::from_values([("root_count", 3.0)]).unwrap();
     let g0 = generate(&p).unwrap();
     let mut q = p.clone();
-    q.skeleton.edits = vec![Edit::Cut(Cut { at: g0.skeleton.stems[0].point_at(2.0).0 })];
+    q.skeleton.edits = vec![Edit::Cut(Cut { at: g0.skeleton.stems[0].point_at(2.0).0, year: None })];
     let g = generate(&q).unwrap();
     assert!(g.edits[0].resolved);
     assert_eq!(g.skeleton.stems.iter().filter(|s| s.kind == sylva_core::skeleton::StemKind::Root).count(), 3);
@@ -146,7 +146,7 @@ fn an_edit_that_no_longer_resolves_is_reported_and_changes_nothing() {
     let plain = generate(&TreeParams::default()).unwrap();
     let mid_air = Vec3::new(40.0, 5.0, 40.0);
     let g = generate(&with_edits(vec![
-        Edit::Cut(Cut { at: mid_air }),
+        Edit::Cut(Cut { at: mid_air, year: None }),
         Edit::Bend(Bend { at: mid_air, to: mid_air + Vec3::X }),
     ]))
     .unwrap();
@@ -165,7 +165,7 @@ fn an_edit_that_no_longer_resolves_is_reported_and_changes_nothing() {
         .find(|&p| resolve::nearest(&sk5, p).is_err())
         .expect("some twig tip of seed 0 is far from every stem of seed 5");
     assert!(resolve::nearest(&plain.skeleton, at).is_ok());
-    other.skeleton.edits = vec![Edit::Cut(Cut { at })];
+    other.skeleton.edits = vec![Edit::Cut(Cut { at, year: None })];
     let g = generate(&other).unwrap();
     assert!(!g.edits[0].resolved);
     assert!(g.meta_json().contains(r#""resolved":false"#));
@@ -183,7 +183,7 @@ fn same_edits_same_bytes_cold_or_through_a_session() {
             at: s.point_at(0.6 * s.length).0,
             to: s.point_at(0.6 * s.length).0 + Vec3::new(0.0, 0.4, 0.0),
         }),
-        Edit::Cut(Cut { at: s.point_at(0.8 * s.length).0 }),
+        Edit::Cut(Cut { at: s.point_at(0.8 * s.length).0, year: None }),
     ];
     let p = with_edits(edits);
     let a = generate(&p).unwrap();
@@ -206,7 +206,7 @@ fn a_bend_across_the_tree_is_an_error_naming_the_edit() {
     let s = &g0.skeleton.stems[i];
     let at = s.point_at(0.5 * s.length).0;
     let e = generate(&with_edits(vec![
-        Edit::Cut(Cut { at: Vec3::new(90.0, 1.0, 0.0) }),
+        Edit::Cut(Cut { at: Vec3::new(90.0, 1.0, 0.0), year: None }),
         Edit::Bend(Bend { at, to: s.base() + (s.base() - at).normalize() * (s.length + 1.0) }),
     ]))
     .unwrap_err();

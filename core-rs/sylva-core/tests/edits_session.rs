@@ -70,7 +70,7 @@ fn edits_added_undone_and_redone_resume_from_the_tree_before_them() {
     let at = s.point_at(0.6 * s.length).0;
     let paint = Edit::Paint(stroke(12));
     let bend = Edit::Bend(Bend { at, to: at + Vec3::new(0.0, -0.4, 0.0) });
-    let cut = Edit::Cut(Cut { at: s.point_at(0.85 * s.length).0 });
+    let cut = Edit::Cut(Cut { at: s.point_at(0.85 * s.length).0, year: None });
     let mut session = Session::new();
     let r = full(&mut session, &[]);
     assert!(r.rebuilt);

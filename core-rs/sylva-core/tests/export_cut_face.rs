@@ -13,7 +13,7 @@ fn cut_tree() -> Generated {
     let g0 = generate(&TreeParams::default()).unwrap();
     let s = g0.skeleton.stems.iter().find(|s| s.level == 1 && s.length > 2.0).expect("a main branch");
     let (at, _) = s.point_at(0.15 * s.length);
-    let edits = vec![Edit::Cut(Cut { at })];
+    let edits = vec![Edit::Cut(Cut { at, year: None })];
     let g = generate(&TreeParams { skeleton: SkeletonParams { edits, ..Default::default() }, ..TreeParams::default() })
         .unwrap();
     assert!(g.edits[0].resolved);

@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import { MAX_EDITS_LINK_LENGTH } from 'sylva-trees/url';
 import type { Edit } from 'sylva-trees/core';
-import { appendEdit, editsFromSearch, linkText } from './useHandEdits';
+import { appendEdit, dateEdit, editsFromSearch, linkText } from './useHandEdits';
 
 const cut: Edit = { op: 'cut', at: [1, 4, 0] };
 const crown = (h: number): Edit => ({
@@ -19,6 +19,15 @@ describe('the tools’ edit list', () => {
     const list = appendEdit(appendEdit(appendEdit([], crown(8)), cut), crown(9));
     expect(list).toEqual([cut, crown(9)]);
     expect(appendEdit(list, cut)).toEqual([cut, crown(9), cut]);
+  });
+
+  it('a cut made now carries the tree’s Age as its year (whole years); other edits do not', () => {
+    expect(dateEdit(cut, { age: 37.6 })).toEqual({ ...cut, year: 38 });
+    expect(dateEdit({ ...cut, year: 12 }, { age: 37.6 })).toEqual({ ...cut, year: 12 });
+    expect(dateEdit(crown(8), { age: 37.6 })).toEqual(crown(8));
+    expect(dateEdit(cut, {})).toEqual(cut);
+    expect(dateEdit(cut, null)).toEqual(cut);
+    expect(linkText([dateEdit(cut, { age: 40 })])).toBe('1~c100.400.0.40');
   });
 
   it('the share link carries the list, or nothing when it is too long (never a part)', () => {

@@ -14,6 +14,7 @@ import {
   quantizeEdit,
   type Edit,
   type EditReport,
+  type Params,
 } from 'sylva-trees/core';
 import { decodeEdits, EDITS_KEY, encodeEdits, MAX_EDITS_LINK_LENGTH } from 'sylva-trees/url';
 import { HandEditTools, type Brush, type EditTool } from '../viewer/HandEditTools';
@@ -88,6 +89,16 @@ function typing(event: KeyboardEvent): boolean {
   );
 }
 
+/**
+ * `edit` as made now: a cut carries the tree's Age as its year, so a younger tree still has the
+ * branch and an older one grows woundwood over the face (a callus ring a year).
+ */
+export function dateEdit(edit: Edit, params: Params | null): Edit {
+  const age = params?.age;
+  if (edit.op !== 'cut' || edit.year !== undefined || age === undefined) return edit;
+  return quantizeEdit({ ...edit, year: age });
+}
+
 /** What the tools' callbacks read at the time they run. */
 interface Latest {
   editor: Editor;
@@ -111,10 +122,11 @@ function useToolsInViewer(
     /** The list before the drag began, for its draft and its commit. */
     let base: Edit[] | null = null;
     const start = () => (base ??= latest.current.editor.editsRef.current ?? []);
+    const dated = (edit: Edit) => dateEdit(edit, latest.current.editor.paramsRef.current);
     const tools = new HandEditTools(host, {
-      draft: (edit) => latest.current.editor.draft(appendEdit(start(), edit)),
+      draft: (edit) => latest.current.editor.draft(appendEdit(start(), dated(edit))),
       commit: (edit) => {
-        const list = appendEdit(start(), edit);
+        const list = appendEdit(start(), dated(edit));
         base = null;
         // Interactive: a cut answers with a quick preview; the release settles to the full tree.
         latest.current.editor.change({ edits: list, key: null }, true);

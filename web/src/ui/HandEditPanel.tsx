@@ -130,6 +130,15 @@ export function HandEditPanel({ hand }: { hand: HandEdits }) {
                     unresolved{report.why ? `: ${report.why}` : ''}
                   </span>
                 ) : null}
+                {report?.pending_year !== undefined ? (
+                  <span
+                    className="edit-pending"
+                    data-testid="edit-pending"
+                    title="The tree is younger than this cut: the branch is whole until then"
+                  >
+                    in year {report.pending_year}
+                  </span>
+                ) : null}
                 <button
                   type="button"
                   aria-label={`Delete edit ${i + 1} (${edit.op})`}

@@ -85,7 +85,9 @@ fn params(json: &str) -> TreeParams {
 fn samples() -> Vec<(&'static str, Value)> {
     let mut out = Vec::new();
     let (leafy, bare) = (params(r#"{"levels": 2}"#), params(r#"{"levels": 2, "leaves": 0}"#));
-    let cut = params(r#"{"levels": 2, "edits": [{"op": "cut", "at": [0, 30, 0]}]}"#);
+    let cut = params(
+        r#"{"levels": 2, "edits": [{"op": "cut", "at": [0, 30, 0]}, {"op": "cut", "at": [0, 3, 0], "year": 250}]}"#,
+    );
     for p in [&leafy, &bare, &cut] {
         let g = sylva_core::generate(p).expect("a tree");
         out.push(("TreeMeta", parse(&g.meta_json())));

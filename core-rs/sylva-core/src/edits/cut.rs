@@ -3,7 +3,11 @@
 //! tip) and is marked [`Stem::cut_end`](crate::skeleton::Stem::cut_end), which the mesh stage
 //! closes with a cut face; every child attached beyond the cut (its footprint reaching past it)
 //! goes, with all its descendants, and so with their leaves. A cut so near a branch's base that
-//! the stump would sit inside its parent removes the whole branch.
+//! the stump would sit inside its parent removes the whole branch. A cut made years before the
+//! tree's Age (a dated cut, [`crate::params::Cut::year`]) carries woundwood: [`Stem::callus`]
+//! ([`callus`]), which the mesh stage rolls over the face.
+//!
+//! [`Stem::callus`]: crate::skeleton::Stem::callus
 
 use super::stems::{remove, subtree, transform};
 use crate::skeleton::{Points, Skeleton};
@@ -15,8 +19,20 @@ pub const FOOTPRINT: f32 = 3.0;
 /// Fewest segments a stump's centre polyline gets.
 const MIN_SEGMENTS: usize = 4;
 
-/// Cut stem `i` at fraction `t` of its length.
-pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32) {
+/// Woundwood closing over a cut (m a year, from the bark rim inward): a vigorous tree's callus
+/// closes a wound by about 1–2 cm of its width a year, from both sides (Neely 1988, *Closure of
+/// branch pruning wounds*), so about 1 cm of radius.
+pub const CALLUS_RATE: f32 = 0.01;
+
+/// How far woundwood has closed over a cut of radius `radius` (m) `years` after it was made, as
+/// a fraction of the radius.
+pub fn callus(years: f32, radius: f32) -> f32 {
+    (CALLUS_RATE * years.max(0.0) / radius.max(1e-3)).min(1.0)
+}
+
+/// Cut stem `i` at fraction `t` of its length, `years` ago (0: a fresh cut; older cuts carry
+/// woundwood, [`callus`]).
+pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32, years: f32) {
     let s = &skeleton.stems[i];
     let t = t.clamp(0.0, 1.0);
     let along = t * s.length;
@@ -46,6 +62,7 @@ pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32) {
     stem.radii = Some(radii);
     stem.length = along.max(1e-3);
     stem.cut_end = true;
+    stem.callus = callus(years, stem.radius_at(1.0));
     // The kept children sit on the resampled curve exactly (it differs from the old one by
     // rounding between the samples).
     reattach_children(skeleton, i, &gone);

@@ -31,12 +31,21 @@ pub struct EditReport {
     /// Why not, when unresolved.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub why: Option<String>,
+    /// The year of a dated cut the tree is too young for: it has not happened yet (the branch
+    /// is whole) and happens when the tree's Age reaches this year.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pending_year: Option<f32>,
 }
 
 impl EditReport {
     /// An edit that was applied.
     pub fn resolved(op: &'static str) -> EditReport {
-        EditReport { op, resolved: true, why: None }
+        EditReport { op, resolved: true, why: None, pending_year: None }
+    }
+
+    /// An edit that found nothing to apply to, and why.
+    pub fn unresolved(op: &'static str, why: String) -> EditReport {
+        EditReport { op, resolved: false, why: Some(why), pending_year: None }
     }
 }
 
@@ -47,7 +56,8 @@ pub fn drawn_crown(edits: &[Edit]) -> Option<&Crown> {
 }
 
 /// Apply `edits` to `skeleton` in order; the markers of paint strokes are appended to
-/// `markers` (for Show Markers). Unresolved cuts and bends are reported and change nothing; a
+/// `markers` (for Show Markers). Unresolved cuts and bends are reported and change nothing, and so does a
+/// dated cut the tree is too young for (reported as pending); a
 /// bend whose target is further from its stem's base than the stem is long (a bend across the
 /// tree) is an error naming the edit, and so is a stroke past the budgets.
 pub fn apply(
@@ -76,19 +86,23 @@ pub fn apply_one(
         }
         // Applied before the stems are built (`drawn_crown`).
         Edit::Crown(_) => EditReport::resolved(edit.op()),
+        Edit::Cut(c) if c.year.is_some_and(|year| skeleton.age < year) => {
+            EditReport { pending_year: c.year, ..EditReport::resolved(edit.op()) }
+        }
         Edit::Cut(c) => match resolve::nearest(skeleton, c.at) {
             Ok(hit) => {
-                cut::cut(skeleton, hit.stem, hit.t);
+                let years = c.year.map_or(0.0, |year| skeleton.age - year);
+                cut::cut(skeleton, hit.stem, hit.t, years);
                 EditReport::resolved(edit.op())
             }
-            Err(why) => EditReport { op: edit.op(), resolved: false, why: Some(why) },
+            Err(why) => EditReport::unresolved(edit.op(), why),
         },
         Edit::Bend(b) => match resolve::nearest(skeleton, b.at) {
             Ok(hit) => {
                 bend::bend(skeleton, hit.stem, hit.t, b.to, index)?;
                 EditReport::resolved(edit.op())
             }
-            Err(why) => EditReport { op: edit.op(), resolved: false, why: Some(why) },
+            Err(why) => EditReport::unresolved(edit.op(), why),
         },
     })
 }

@@ -236,6 +236,7 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
             lobed: false,
             radii: Some(r),
             cut_end: false,
+            callus: 0.0,
             points,
         });
     }
@@ -248,6 +249,7 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
         seed: p.seed,
         levels: p.levels,
         max_vertices: p.max_vertices,
+        age: p.age,
     }
 }
 

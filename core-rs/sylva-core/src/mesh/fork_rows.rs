@@ -59,6 +59,7 @@ mod tests {
             lobed: false,
             radii: Some(vec![0.1, 0.1]),
             cut_end: false,
+            callus: 0.0,
             points: [Vec3::ZERO, Vec3::Y * 10.0].into_iter().collect(),
         };
         let short = fork(0.1, 0.1 + 2.5 * 0.1 / 10.0);

@@ -29,7 +29,7 @@ pub(crate) struct StemMesh {
     pub v0: f32,
     /// A cut end ([`super::cut_face`]): the first vertex of its bevel ring (the face ring
     /// follows; `apex` is the face's centre).
-    pub cut: Option<u32>,
+    pub cut: Option<super::cut_face::CutEnd>,
 }
 
 impl StemMesh {

@@ -62,6 +62,8 @@ pub const DENSITY_RANGE: (f32, f32) = (1.0, 5_000.0);
 pub const SEGMENT_RANGE: (f32, f32) = (0.02, 2.0);
 /// Allowed paint kill distance (m); it must also be at least the stroke's segment length.
 pub const KILL_RANGE: (f32, f32) = (0.02, 10.0);
+/// Allowed year of a dated cut (years; the range of the Age parameter, and year 0).
+pub const YEAR_RANGE: (f32, f32) = (0.0, 300.0);
 /// A cut or bend at or below this height names the ground, not a branch (m).
 pub const GROUND: f32 = 0.05;
 /// The version of the edit list document (`{"version": 1, "edits": [...]}`).
@@ -101,10 +103,17 @@ pub struct Crown {
 
 /// Cut the stem nearest to `at` there: everything beyond goes, with its leaves, and the stump
 /// shows a cut face.
+///
+/// A cut may carry the **year** it was made in (the tree's Age then; the studio records it).
+/// A dated cut has not happened while the tree is younger: the branch is whole. From that year
+/// on the branch is cut, and the years since then close the wound: woundwood rolls in over the
+/// face from the bark rim ([`crate::mesh::cut_face`]). An undated cut is a fresh cut at any Age.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cut {
     /// A point on the branch where it is cut (m, tree space).
     pub at: Vec3,
+    /// The tree's Age when the cut was made (years, within [`YEAR_RANGE`]), if dated.
+    pub year: Option<f32>,
 }
 
 /// Bend the stem nearest to `at` so that its point at `at` follows to `to`; the bend is spread

@@ -42,6 +42,8 @@ pub struct Skeleton {
     pub levels: u32,
     /// Max Vertices: the vertex budget the mesh stage checks too.
     pub max_vertices: u32,
+    /// The tree's Age (years): dated hand edits happen only from their year on.
+    pub age: f32,
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
@@ -155,6 +157,7 @@ pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Ske
         seed: p.seed,
         levels: p.levels,
         max_vertices: p.max_vertices,
+        age: p.age,
     })
 }
 
@@ -229,6 +232,7 @@ impl Builder<'_> {
             lobed: trunk,
             radii: None,
             cut_end: false,
+            callus: 0.0,
         });
         if s.level + 1 < p.levels as usize {
             self.grow_children(s.level, index, &mut rng)?;

@@ -64,6 +64,9 @@ pub struct Stem {
     /// The stem was cut at its tip by a hand edit ([`crate::edits`]): the mesh stage closes it
     /// with a cut face (a bark rim around end grain) instead of a pointed tip.
     pub cut_end: bool,
+    /// How far woundwood has closed over the cut end, as a fraction of its radius (0: a fresh
+    /// cut; 1: closed). A dated cut's years since it was made set it ([`crate::edits::cut`]).
+    pub callus: f32,
 }
 
 impl Stem {

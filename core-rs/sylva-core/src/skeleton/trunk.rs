@@ -70,6 +70,7 @@ pub(super) fn add_roots(p: &SkeletonParams, stems: &mut Vec<Stem>) {
             lobed: false,
             radii: None,
             cut_end: false,
+            callus: 0.0,
         });
     }
 }

@@ -32,10 +32,15 @@ export interface CrownEdit {
   outline: [number, number][];
 }
 
-/** Cut the stem nearest to `at` there. */
+/**
+ * Cut the stem nearest to `at` there. A dated cut (`year`, the tree's Age when it was made) has
+ * not happened while the tree is younger; later, woundwood closes over its face a ring a year.
+ */
 export interface CutEdit {
   op: 'cut';
   at: EditPoint;
+  /** The tree's Age when the cut was made (years, within `YEAR_RANGE`); absent: undated. */
+  year?: number;
 }
 
 /** Bend the stem nearest to `at` so that its point at `at` follows to `to`. */
@@ -72,6 +77,8 @@ export const DENSITY_RANGE: readonly [number, number] = [1, 5000];
 export const SEGMENT_RANGE: readonly [number, number] = [0.02, 2];
 /** Allowed paint kill distance (m). */
 export const KILL_RANGE: readonly [number, number] = [0.02, 10];
+/** Allowed year of a dated cut (years). */
+export const YEAR_RANGE: readonly [number, number] = [0, 300];
 /** A cut or bend at or below this height names the ground (m). */
 export const GROUND = 0.05;
 /** Version of the edit list document. */
@@ -222,6 +229,7 @@ export function validateEdits(edits: readonly Edit[]): void {
         break;
       case 'cut':
         checkAboveGround(f('at'), e.at);
+        if (e.year !== undefined) checkRange(f('year'), e.year, YEAR_RANGE, ' years');
         break;
       case 'bend':
         checkAboveGround(f('at'), e.at);
@@ -311,7 +319,7 @@ export function summarizeEdit(e: Edit): string {
     case 'crown':
       return `outline of ${e.outline.length} points`;
     case 'cut':
-      return `at (${p(e.at)})`;
+      return `at (${p(e.at)})${e.year === undefined ? '' : `, year ${e.year}`}`;
     case 'bend':
       return `(${p(e.at)}) → (${p(e.to)})`;
   }

@@ -22,7 +22,7 @@ type Json = Record<string, unknown>;
 const FIELDS: Record<Edit['op'], readonly string[]> = {
   paint: ['op', 'points', 'radius', 'density', 'segment', 'kill'],
   crown: ['op', 'outline'],
-  cut: ['op', 'at'],
+  cut: ['op', 'at', 'year'],
   bend: ['op', 'at', 'to'],
 };
 
@@ -111,8 +111,10 @@ function parseEdit(i: number, item: unknown): Edit {
       checkPoints(f('outline'), items.length, MAX_OUTLINE_POINTS, 3);
       return { op: 'crown', outline: items.map((v, k) => vec2(v, `${f('outline')}[${k}]`)) };
     }
-    case 'cut':
-      return { op: 'cut', at: vec3(required(item, 'at', f('at')), f('at')) };
+    case 'cut': {
+      const at = vec3(required(item, 'at', f('at')), f('at'));
+      return 'year' in item ? { op: 'cut', at, year: number(item.year, f('year')) } : { op: 'cut', at };
+    }
     case 'bend':
       return {
         op: 'bend',
@@ -173,7 +175,7 @@ export function editsToCore(edits: readonly Edit[]): Record<string, unknown>[] {
       case 'crown':
         return { op: 'crown', outline: e.outline };
       case 'cut':
-        return { op: 'cut', at: e.at };
+        return e.year === undefined ? { op: 'cut', at: e.at } : { op: 'cut', at: e.at, year: e.year };
       case 'bend':
         return { op: 'bend', at: e.at, to: e.to };
     }

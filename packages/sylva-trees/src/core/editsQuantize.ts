@@ -11,6 +11,7 @@ import {
   MAX_COORD,
   RADIUS_RANGE,
   SEGMENT_RANGE,
+  YEAR_RANGE,
   type Edit,
   type EditPoint,
 } from './edits';
@@ -57,7 +58,9 @@ export function quantizeEdit(e: Edit): Edit {
         outline: e.outline.map(([r, h]) => [roundCm(clamp(r, [0, MAX_COORD])), coord(h)]),
       };
     case 'cut':
-      return { op: 'cut', at: above(e.at) };
+      return e.year === undefined
+        ? { op: 'cut', at: above(e.at) }
+        : { op: 'cut', at: above(e.at), year: Math.round(clamp(e.year, YEAR_RANGE)) };
     case 'bend':
       return { op: 'bend', at: above(e.at), to: point(e.to) };
   }

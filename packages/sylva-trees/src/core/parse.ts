@@ -203,6 +203,7 @@ function parseEditReport(value: unknown, i: number): EditReport {
     op: str(o, 'op', where),
     resolved: bool(o, 'resolved', where),
     ...(o.why !== undefined ? { why: str(o, 'why', where) } : {}),
+    ...(o.pending_year !== undefined ? { pending_year: num(o, 'pending_year', where) } : {}),
   };
 }
 

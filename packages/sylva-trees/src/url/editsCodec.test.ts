@@ -36,6 +36,7 @@ const edit: fc.Arbitrary<Edit> = fc.oneof(
       }),
     })),
   fc.record({ op: fc.constant('cut' as const), at: point }),
+  fc.record({ op: fc.constant('cut' as const), at: point, year: fc.integer({ min: 0, max: 300 }) }),
   fc.record({ op: fc.constant('bend' as const), at: point, to: point }),
 );
 
@@ -99,10 +100,11 @@ describe('e= codec', () => {
       },
       { op: 'cut', at: [0.8, 4.1, -0.2] },
       { op: 'bend', at: [2, 5.5, 0], to: [2.3, 4.6, 0] },
+      { op: 'cut', at: [0.5, 3, 0.1], year: 40 },
     ];
     const text = encodeEdits(edits);
     expect(text).toBe(
-      '1~p60.400.25.40.120.600.30.5.10.-10~o0.200.250.200.-50.400.-200.100~c80.410.-20~b200.550.0.230.460.0',
+      '1~p60.400.25.40.120.600.30.5.10.-10~o0.200.250.200.-50.400.-200.100~c80.410.-20~b200.550.0.230.460.0~c50.300.10.40',
     );
     expect(encodeURIComponent(text)).toBe(text);
     expect(decodeEdits(text)).toEqual({ edits, messages: [] });
@@ -126,7 +128,10 @@ describe('e= codec', () => {
 
   it.each([
     ['2~c80.410.-20', /unsupported version "2"/],
-    ['1~c80.410', /e\[0\]: a cut takes 3 numbers, got 2/],
+    ['1~c80.410', /e\[0\]: a cut takes 3 numbers \(and a year\), got 2/],
+    ['1~c80.410.0.40.1', /e\[0\]: a cut takes 3 numbers \(and a year\), got 5/],
+    ['1~c80.410.0.301', /edits\[0\]\.year is 301: allowed range is 0 to 300 years/],
+    ['1~c80.410.0.-1', /edits\[0\]\.year is -1: allowed range is 0 to 300 years/],
     ['1~cNaN.410.0', /e\[0\]: "NaN" is not a whole number/],
     ['1~c1e5.410.0', /"1e5" is not a whole number/],
     ['1~c0x10.410.0', /"0x10" is not a whole number/],

@@ -6,7 +6,7 @@
  * - `p` paint: radius, density (markers per m³), segment, kill, then the points' x,y,z: the
  *   first point as it is, every next one as the difference to the one before;
  * - `o` crown outline: the points' radius,height, the first as it is, the next as differences;
- * - `c` cut: at x,y,z;
+ * - `c` cut: at x,y,z, then for a dated cut its year (whole years);
  * - `b` bend: at x,y,z, to x,y,z.
  *
  * Decoding is strict and all-or-nothing (an edit list is ordered; a list with a hole would be
@@ -64,7 +64,7 @@ function encodeEdit(e: Edit): string {
     case 'crown':
       return `o${deltas(e.outline).join('.')}`;
     case 'cut':
-      return `c${e.at.map(cm).join('.')}`;
+      return `c${[...e.at.map(cm), ...(e.year === undefined ? [] : [Math.round(e.year)])].join('.')}`;
     case 'bend':
       return `b${[...e.at, ...e.to].map(cm).join('.')}`;
   }
@@ -113,9 +113,12 @@ function decodeEdit(item: string): Edit | string {
         return `a crown outline takes radius,height per point (at least 3), got ${n} numbers`;
       return { op: 'crown', outline: undeltas(values, 2) as [number, number][] };
     }
-    case 'c':
-      if (n !== 3) return `a cut takes 3 numbers, got ${n}`;
-      return { op: 'cut', at: values.map(metres) as EditPoint };
+    case 'c': {
+      if (n !== 3 && n !== 4) return `a cut takes 3 numbers (and a year), got ${n}`;
+      const at = values.slice(0, 3).map(metres) as EditPoint;
+      const year = values[3];
+      return year === undefined ? { op: 'cut', at } : { op: 'cut', at, year };
+    }
     case 'b':
       if (n !== 6) return `a bend takes 6 numbers, got ${n}`;
       return {

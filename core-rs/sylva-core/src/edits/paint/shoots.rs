@@ -133,6 +133,7 @@ pub fn shoots(stems: &[Stem], nodes: &[Node], existing: usize, anchors: &[Anchor
             lobed: false,
             radii: Some(r),
             cut_end: false,
+            callus: 0.0,
             points,
         });
     }

@@ -135,8 +135,8 @@ impl Plan {
             self.indices += (plan.rings.len() as u64 + 1) * u64::from(plan.sides) * 6;
             if s.cut_end {
                 // A cut end's bevel and face rings, its rim quads and face fan.
-                self.vertices += crate::mesh::cut_face::extra_vertices(plan.sides);
-                self.indices += u64::from(plan.sides) * 9;
+                self.vertices += crate::mesh::cut_face::extra_vertices(s, plan.sides);
+                self.indices += crate::mesh::cut_face::extra_indices(s, plan.sides);
             }
             if let Some(j) = self.junctions[i] {
                 // Either the footprint loop and the collar loops, or a fallback swept from the

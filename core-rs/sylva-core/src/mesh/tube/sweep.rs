@@ -39,7 +39,7 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
     let free = claims.iter().filter(|&&c| !c).count();
     debug_assert!(m.base != Base::Open, "a base is welded or closed before the index pass");
     // The tip's fan (or a cut end's rim: two triangles a side) and the base's.
-    let tip = s as usize * if m.cut.is_some() { 2 } else { 1 };
+    let tip = s as usize * m.cut.map_or(1, cut_face::rim_triangles);
     let fans = tip + s as usize * if matches!(m.base, Base::Welded | Base::Open) { 0 } else { 1 };
     let idx = out.alloc_indices(free * 6 + fans * 3);
     let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
@@ -58,7 +58,7 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
     let (tip_idx, base_idx) = fan_idx.split_at_mut(tip * 3);
     let row = m.first + (m.rings - 1) * st;
     match m.cut {
-        Some(bevel) => cut_face::rim_indices(m, bevel, tip_idx),
+        Some(end) => cut_face::rim_indices(m, end, tip_idx),
         None => {
             for (j, f) in (0..s).zip(tip_idx.chunks_exact_mut(3)) {
                 f.copy_from_slice(&[row + j, row + j + 1, m.apex]);
@@ -147,7 +147,7 @@ fn sweep_with(
     let rings = ts.len();
     let trunk = stem.parent.is_none();
     let cap = if trunk { stride + 1 } else { 0 };
-    let count = rings * stride + 1 + cap + if stem.cut_end { 2 * stride } else { 0 };
+    let count = rings * stride + 1 + cap + if stem.cut_end { cut_face::rings(stem) * stride } else { 0 };
     let mut block = out.alloc_vertices(count);
     let first = block.first;
     let mut ring_factor = vec![1.0f32; stride];
@@ -219,8 +219,9 @@ fn sweep_with(
         let last = (rings - 1) * stride;
         let record = wind.record(stem, 1.0, end_r);
         let frame = &frames[rings - 1];
-        cut_face::write(&mut block, slot, apex_slot, (last, stride), frame, last_nominal, v, (tip, tip_tan), &record);
-        first + slot as u32
+        let radius = (last_nominal, stem.callus);
+        cut_face::write(&mut block, slot, apex_slot, (last, stride), frame, radius, v, (tip, tip_tan), &record);
+        cut_face::CutEnd { first: first + slot as u32, callus: stem.callus > 0.0 }
     });
     out.rings(first, rings as u32, stride as u32);
     StemMesh {

@@ -64,7 +64,10 @@ pub fn to_json_value(edits: &[Edit]) -> Value {
                 Edit::Crown(c) => {
                     json!({"op": "crown", "outline": c.outline.iter().map(|q| q.to_array()).collect::<Vec<_>>()})
                 }
-                Edit::Cut(c) => json!({"op": "cut", "at": v3(c.at)}),
+                Edit::Cut(c) => match c.year {
+                    Some(year) => json!({"op": "cut", "at": v3(c.at), "year": year}),
+                    None => json!({"op": "cut", "at": v3(c.at)}),
+                },
                 Edit::Bend(b) => json!({"op": "bend", "at": v3(b.at), "to": v3(b.to)}),
             })
             .collect(),
@@ -81,7 +84,7 @@ fn fields(op: &str) -> Option<&'static [&'static str]> {
     Some(match op {
         "paint" => &["op", "points", "radius", "density", "segment", "kill"],
         "crown" => &["op", "outline"],
-        "cut" => &["op", "at"],
+        "cut" => &["op", "at", "year"],
         "bend" => &["op", "at", "to"],
         _ => return None,
     })
@@ -127,7 +130,10 @@ fn edit(i: usize, item: &Value) -> Result<Edit, SylvaError> {
                 .collect::<Result<_, _>>()?;
             Edit::Crown(Crown { outline })
         }
-        "cut" => Edit::Cut(Cut { at: vec3(required(o, "at", &f("at"))?, &f("at"))? }),
+        "cut" => Edit::Cut(Cut {
+            at: vec3(required(o, "at", &f("at"))?, &f("at"))?,
+            year: o.get("year").map(|v| number(v, &f("year"))).transpose()?,
+        }),
         _ => Edit::Bend(Bend {
             at: vec3(required(o, "at", &f("at"))?, &f("at"))?,
             to: vec3(required(o, "to", &f("to"))?, &f("to"))?,

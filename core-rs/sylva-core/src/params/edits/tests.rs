@@ -124,7 +124,7 @@ fn hostile_edits_get_messages_naming_the_edit_and_field() {
     assert!(e.message().starts_with("the edits hold more than 65536 points in all (at edits[16])"), "{e}");
     // The same checks hold for a list built in code.
     let mut p = crate::TreeParams::default();
-    p.skeleton.edits = vec![Edit::Cut(Cut { at: Vec3::new(f32::NAN, 5.0, 0.0) })];
+    p.skeleton.edits = vec![Edit::Cut(Cut { at: Vec3::new(f32::NAN, 5.0, 0.0), year: None })];
     assert_eq!(p.validate().unwrap_err().message(), "edits[0].at[0] is NaN: allowed range is -200 to 200 m");
 }
 

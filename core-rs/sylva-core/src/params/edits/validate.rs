@@ -5,7 +5,7 @@
 
 use super::{
     bad, Edit, DENSITY_RANGE, GROUND, KILL_RANGE, MAX_COORD, MAX_EDITS, MAX_OUTLINE_POINTS, MAX_POINTS,
-    MAX_STROKE_POINTS, RADIUS_RANGE, SEGMENT_RANGE,
+    MAX_STROKE_POINTS, RADIUS_RANGE, SEGMENT_RANGE, YEAR_RANGE,
 };
 use crate::error::SylvaError;
 use glam::{Vec2, Vec3};
@@ -58,7 +58,12 @@ pub fn validate(edits: &[Edit]) -> Result<(), SylvaError> {
                     ));
                 }
             }
-            Edit::Cut(c) => check_above_ground(&f("at"), c.at)?,
+            Edit::Cut(c) => {
+                check_above_ground(&f("at"), c.at)?;
+                if let Some(year) = c.year {
+                    check_range(&f("year"), year, YEAR_RANGE, " years")?;
+                }
+            }
             Edit::Bend(b) => {
                 check_above_ground(&f("at"), b.at)?;
                 check_vec3(&f("to"), b.to)?;

@@ -114,6 +114,10 @@ export interface EditReport {
   resolved: boolean;
   /** Why not, when unresolved. */
   why?: string;
+  /**
+   * A dated cut the tree is too young for: the year it happens (the branch is whole until then).
+   */
+  pending_year?: number;
 }
 
 /** One level's counts in `GeneratedLods.meta_json()` (`sylva_core::meta::LodLevelMeta`). */
