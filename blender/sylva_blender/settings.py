@@ -53,7 +53,8 @@ def _property(spec):
             name=name, description=text, items=items, default=str(int(spec["default"])), update=_regenerate
         )
     if wide(spec):
-        return bpy.props.StringProperty(name=name, description=text, default=str(int(spec["default"])), update=_regenerate)
+        default = str(int(spec["default"]))
+        return bpy.props.StringProperty(name=name, description=text, default=default, update=_regenerate)
     if kind == "int":
         return bpy.props.IntProperty(
             name=name, description=text, default=int(spec["default"]), min=int(spec["min"]), max=int(spec["max"]),

@@ -75,7 +75,8 @@ def test_add(preset="quaking_aspen", seed=7):
     # Materials with the core's textures, packed into the file.
     assert [m.name for m in bark.data.materials] == [f"{bark.name} bark", f"{bark.name} cut_face"]
     leaf_material = shape.data.materials[0]
-    images = {n.image.name for m in (*bark.data.materials, leaf_material) for n in m.node_tree.nodes if n.type == "TEX_IMAGE"}
+    nodes = [n for m in (*bark.data.materials, leaf_material) for n in m.node_tree.nodes]
+    images = {n.image.name for n in nodes if n.type == "TEX_IMAGE"}
     assert {f"{bark.name} {k}" for k in ("bark_color", "bark_normal", "leaf_color", "leaf_normal")} <= images
     assert all(bpy.data.images[i].packed_file and bpy.data.images[i].size[0] > 0 for i in images)
     # The wind records as attributes of every bark vertex; the trunk sways about its base.
