@@ -101,6 +101,9 @@ if [ "$WANT_TEST" = 1 ]; then
   command -v python3 >/dev/null || die "python3 not found: the Python package's tests need Python 3.9 or newer with venv"
   step "Python package: venv and wheel (scripts/python.sh wheel)"
   bash scripts/python.sh wheel
+  # 9. For tests: Blender as a Python module (bpy 4.5 from PyPI) in .venv-blender, once.
+  step "Blender add-on: the bpy venv (scripts/blender.sh venv)"
+  bash scripts/blender.sh venv
 fi
 step "ready ($(( SECONDS ))s)"
 cd "$ROOT"

@@ -12,6 +12,8 @@ step "Rust: cargo test --workspace"
 cargo test --workspace --quiet
 step "Python: the sylva-trees wheel against the CLI (pytest; the wheel is rebuilt only when a source changed)"
 bash scripts/python.sh test
+step "Blender: the add-on zip installed into headless Blender; add, edit and share a tree (zip rebuilt only when changed)"
+bash scripts/blender.sh test
 step "glTF: every preset's GLB (instanced, baked and strict) through the Khronos validator"
 node scripts/validate-gltf.mjs
 step "Godot: the strict GLB imports into godot3-server (installed by setup.sh --test)"

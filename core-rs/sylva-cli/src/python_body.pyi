@@ -66,6 +66,11 @@ class Tree:
     def leaf_colors(self) -> npt.NDArray[np.float32]:
         """One RGB tint per leaf, ``(leaves, 3)``."""
     @property
+    def wind(self) -> npt.NDArray[np.float32]:
+        """Per bark vertex ``(vertices, 8)``: pivot x, y, z, level, phase, stiffness, distance, radius."""
+    def textures(self, bark_size: int = 512) -> dict[str, bytes]:
+        """PNG bytes by name: ``bark_color``, ``bark_normal``, ``cut_face_color``, ``cut_face_normal``, ``leaf_color``, ``leaf_normal``."""
+    @property
     def meta(self) -> dict[str, Any]:
         """Counts, bounds, groups, leaf facts, hash and stage times (the studio's meta)."""
     @property
@@ -83,10 +88,34 @@ def generate(
     seed: float | None = None,
     params: Params | None = None,
     edits: Sequence[Mapping[str, Any]] | Mapping[str, Any] | str | None = None,
+    volumes: Sequence[Mapping[str, Any]] | str | None = None,
 ) -> Tree:
     """Grow a tree: the preset (or the registry's defaults), then ``params``, then ``seed``, then
-    the hand edits (dicts in the edit-list JSON form of docs/formats.md, or that JSON as text).
-    Raises ``ValueError`` with the core's message, ``BudgetError`` past a budget."""
+    the hand edits (dicts in the edit-list JSON form of docs/formats.md, or that JSON as text)
+    and the growth primitives (the ``"volumes"`` JSON form). Raises ``ValueError`` with the
+    core's message, ``BudgetError`` past a budget."""
+
+def share_link(
+    preset: PresetName | None = None,
+    seed: float | None = None,
+    params: Params | None = None,
+    edits: Sequence[Mapping[str, Any]] | Mapping[str, Any] | str | None = None,
+    volumes: Sequence[Mapping[str, Any]] | str | None = None,
+) -> str:
+    """The studio's share-link query (``v=1&id=value&...``) of the tree ``generate`` grows from
+    the same arguments."""
+
+class SharedTree(TypedDict):
+    """A share link read by ``read_share_link``."""
+
+    params: dict[str, float]
+    volumes: list[dict[str, Any]]
+    edits: list[dict[str, Any]]
+    messages: list[str]
+
+def read_share_link(link: str) -> SharedTree:
+    """A share link (an address or its query) read as the studio reads it: every value, the
+    primitives, the edits and what was ignored."""
 
 def presets() -> list[Preset]:
     """The tree presets (``sylva presets``)."""

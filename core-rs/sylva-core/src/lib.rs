@@ -47,6 +47,7 @@ pub mod presets;
 pub mod rng;
 pub mod season;
 pub mod session;
+pub mod share;
 pub mod skeleton;
 
 pub use clock::Clock;

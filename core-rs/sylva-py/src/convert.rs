@@ -1,6 +1,6 @@
 //! Python values to the core's inputs and the core's errors to Python exceptions: a dict of
 //! parameter values applied like the CLI's `--set` (numbers, booleans, enum option labels), a
-//! hand edit list from dicts or JSON, JSON text to Python objects.
+//! hand edit list and growth primitives from dicts or JSON, JSON text to Python objects.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -81,6 +81,16 @@ pub fn edits(value: &Bound<'_, PyAny>) -> PyResult<Vec<Edit>> {
         Err(_) => value.py().import("json")?.call_method1("dumps", (value,))?.extract()?,
     };
     sylva_core::params::edits::from_json(&text).map_err(py_err)
+}
+
+/// Growth primitives: JSON text, or Python lists and dicts in the `"volumes"` form, parsed and
+/// checked by the core.
+pub fn volumes(value: &Bound<'_, PyAny>) -> PyResult<Vec<sylva_core::params::VolumePrimitive>> {
+    let text: String = match value.cast::<PyString>() {
+        Ok(s) => s.extract()?,
+        Err(_) => value.py().import("json")?.call_method1("dumps", (value,))?.extract()?,
+    };
+    sylva_core::params::volumes::from_json(&text).map_err(py_err)
 }
 
 /// JSON text as Python objects (`json.loads`).

@@ -1,13 +1,15 @@
 //! Python binding of `sylva-core`, the extension module `sylva_trees._sylva` of the Python
 //! package `sylva-trees` (docs/python.md). Like `sylva-wasm` it only converts: Python values in
 //! ([`convert`]), NumPy arrays that own the core's buffers and export files out ([`tree`]),
-//! the core's errors as Python exceptions with the core's messages.
+//! share links to and from the core's codec ([`share`]), the core's errors as Python exceptions
+//! with the core's messages.
 
 use pyo3::prelude::*;
 use sylva_core::params::TreeParams;
 use sylva_core::presets as core_presets;
 
 mod convert;
+mod share;
 mod tree;
 
 use convert::{py_err, BudgetError};
@@ -16,18 +18,33 @@ use tree::Tree;
 /// Grow a tree. `preset` names a preset (see `presets()`; none = the registry's defaults),
 /// `params` maps parameter ids (see `params()`) to numbers, booleans or enum option labels and is
 /// applied over the preset, `seed` is applied last, `edits` is a list of hand edits (dicts in
-/// the edit-list JSON form, or that JSON as a string). The same input gives the same `hash` as
+/// the edit-list JSON form, or that JSON as a string), `volumes` a list of growth primitives
+/// (dicts in the `"volumes"` JSON form, or that JSON). The same input gives the same `hash` as
 /// `sylva generate` and the studio. Raises `ValueError` with the core's message for invalid
 /// input and `BudgetError` (a `ValueError`) when the tree would exceed a budget.
 #[pyfunction]
-#[pyo3(signature = (preset=None, seed=None, params=None, edits=None))]
+#[pyo3(signature = (preset=None, seed=None, params=None, edits=None, volumes=None))]
 fn generate(
     py: Python<'_>,
     preset: Option<&str>,
     seed: Option<f64>,
     params: Option<&Bound<'_, PyAny>>,
     edits: Option<&Bound<'_, PyAny>>,
+    volumes: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Tree> {
+    let p = tree_params(preset, seed, params, edits, volumes)?;
+    let generated = py.detach(|| sylva_core::generate(&p)).map_err(py_err)?;
+    Tree::new(py, generated)
+}
+
+/// The core's parameters of `generate`'s arguments.
+pub(crate) fn tree_params(
+    preset: Option<&str>,
+    seed: Option<f64>,
+    params: Option<&Bound<'_, PyAny>>,
+    edits: Option<&Bound<'_, PyAny>>,
+    volumes: Option<&Bound<'_, PyAny>>,
+) -> PyResult<TreeParams> {
     let mut p = match preset {
         Some(name) => core_presets::find(name).ok_or_else(|| unknown_preset(name))?.params().map_err(py_err)?,
         None => TreeParams::default(),
@@ -41,8 +58,10 @@ fn generate(
     if let Some(edits) = edits {
         p.skeleton.edits = convert::edits(edits)?;
     }
-    let generated = py.detach(|| sylva_core::generate(&p)).map_err(py_err)?;
-    Tree::new(py, generated)
+    if let Some(volumes) = volumes {
+        p.skeleton.volumes = convert::volumes(volumes)?;
+    }
+    Ok(p)
 }
 
 /// The error for a preset name no preset has, in the CLI's words.
@@ -78,6 +97,8 @@ fn _sylva(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(params, m)?)?;
     m.add_function(wrap_pyfunction!(core_version, m)?)?;
+    m.add_function(wrap_pyfunction!(share::share_link, m)?)?;
+    m.add_function(wrap_pyfunction!(share::read_share_link, m)?)?;
     m.add_class::<Tree>()?;
     m.add("BudgetError", m.py().get_type::<BudgetError>())?;
     Ok(())

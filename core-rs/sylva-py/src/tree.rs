@@ -6,6 +6,8 @@ use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use sylva_core::export::ExportOptions;
+use sylva_core::export::{bark_pngs, end_grain_pngs, leaf_pngs};
+use sylva_core::mesh::WIND_STRIDE;
 use sylva_core::Generated;
 
 use crate::convert::{json_loads, py_err};
@@ -52,6 +54,7 @@ pub struct Tree {
     leaf: [Buffer; 4],
     matrices: Buffer,
     colors: Buffer,
+    wind: Buffer,
     leaf_transforms: Py<PyAny>,
 }
 
@@ -74,6 +77,8 @@ impl Tree {
             Buffer::new(py, take(&mut f.mesh.uvs), 2)?,
             Buffer::new(py, std::mem::take(&mut f.mesh.indices), 3)?,
         ];
+        let wind = Buffer::new(py, take(&mut g.mesh.wind), WIND_STRIDE)?;
+        let f = &mut g.foliage;
         let matrices = Buffer::new(py, take(&mut f.matrices), 16)?;
         let colors = Buffer::new(py, take(&mut f.colors), 3)?;
         // Column-major 4x4 per leaf: rows of 16 as (4, 4) are the transposes; swap the last
@@ -84,7 +89,7 @@ impl Tree {
             .bind(py)
             .call_method1("reshape", ((count, 4, 4),))?
             .call_method1("transpose", ((0, 2, 1),))?;
-        Ok(Tree { rest: g, meta_json, bark, leaf, matrices, colors, leaf_transforms: transposed.unbind() })
+        Ok(Tree { rest: g, meta_json, bark, leaf, matrices, colors, wind, leaf_transforms: transposed.unbind() })
     }
 
     /// The whole `Generated` again (the buffers copied back from NumPy), for the exporters.
@@ -93,6 +98,7 @@ impl Tree {
         let [p, n, uv, i] = &self.bark;
         (g.mesh.positions, g.mesh.normals, g.mesh.uvs, g.mesh.indices) =
             (p.to_vec(py)?, n.to_vec(py)?, uv.to_vec(py)?, i.to_vec(py)?);
+        g.mesh.wind = self.wind.to_vec(py)?;
         let [p, n, uv, i] = &self.leaf;
         let f = &mut g.foliage;
         (f.mesh.positions, f.mesh.normals, f.mesh.uvs, f.mesh.indices) =
@@ -171,6 +177,37 @@ impl Tree {
     #[getter]
     fn leaf_colors(&self, py: Python<'_>) -> Py<PyAny> {
         self.colors.shaped.clone_ref(py)
+    }
+    /// The wind record of each bark vertex, float32 `(vertices, 8)`: pivot x, y, z (the base of
+    /// the vertex's stem, m), level (0 trunk to 3), phase (0..1), stiffness (0..1), distance from
+    /// the root along the stems (m) and stem radius (m); `(0, 8)` when the mesh has none. The
+    /// GLB's `_WIND_PIVOT` and `_WIND_PARAMS` (docs/formats.md, "Wind attributes") unquantised.
+    #[getter]
+    fn wind(&self, py: Python<'_>) -> Py<PyAny> {
+        self.wind.shaped.clone_ref(py)
+    }
+    /// The textures the viewer draws, as PNG bytes by name: `bark_color`, `bark_normal`,
+    /// `cut_face_color`, `cut_face_normal` (`bark_size` texels square, a power of two) and, when
+    /// the tree has leaves, `leaf_color` and `leaf_normal`. Rows run top to bottom as in glTF: a
+    /// texture coordinate `v` is a distance down from the top row.
+    #[pyo3(signature = (bark_size=512))]
+    fn textures<'py>(&self, py: Python<'py>, bark_size: u32) -> PyResult<Bound<'py, PyDict>> {
+        let opts = ExportOptions::from_json(&format!("{{\"bark_texture_size\":{bark_size}}}")).map_err(py_err)?;
+        let size = opts.bark_texture_size;
+        let (bark, grain, leaf) = py.detach(|| {
+            (bark_pngs(self.rest.bark, size), end_grain_pngs(self.rest.bark, size), leaf_pngs(&self.rest.foliage))
+        });
+        let out = PyDict::new(py);
+        let put = |name: &str, png: &[u8]| out.set_item(name, pyo3::types::PyBytes::new(py, png));
+        put("bark_color", &bark.color)?;
+        put("bark_normal", &bark.normal)?;
+        put("cut_face_color", &grain.color)?;
+        put("cut_face_normal", &grain.normal)?;
+        if let Some(leaf) = leaf {
+            put("leaf_color", &leaf.color)?;
+            put("leaf_normal", &leaf.normal)?;
+        }
+        Ok(out)
     }
     /// Counts, bounds, groups, leaf facts, hash and stage times as a dict (the studio's meta).
     #[getter]
