@@ -113,8 +113,11 @@ fn bad_primitives_are_skipped_and_bad_edits_drop_the_list() {
     let d = share::decode("v=1&e=1~c80.2.-20");
     assert!(d.params.skeleton.edits.is_empty());
     assert!(d.messages[0].contains("edits[0].at"), "{:?}", d.messages);
-    let d = share::decode("v=1&e=1~c80.4100.1.5");
-    assert!(d.messages[0].contains("a cut takes 3 numbers, got 4"), "{:?}", d.messages);
+    let d = share::decode("v=1&e=1~c80.4100.1.5.6");
+    assert!(d.messages[0].contains("a cut takes 3 numbers (and a year), got 5"), "{:?}", d.messages);
+    let d = share::decode("v=1&e=1~c80.410.1.301");
+    assert!(d.params.skeleton.edits.is_empty());
+    assert!(d.messages[0].contains("edits[0].year is 301: allowed range is 0 to 300 years"), "{:?}", d.messages);
 }
 
 #[test]

@@ -127,7 +127,11 @@ fn encode_edit(e: &Edit) -> String {
             ('p', head.into_iter().chain(deltas(p.points.iter().map(|q| q.to_array()))).collect())
         }
         Edit::Crown(c) => ('o', deltas(c.outline.iter().map(|q| q.to_array()))),
-        Edit::Cut(c) => ('c', c.at.to_array().map(cm).to_vec()),
+        Edit::Cut(c) => {
+            // A dated cut's year follows its point, in whole years.
+            let year = c.year.map(|y| (f64::from(y) + 0.5).floor() as i64);
+            ('c', c.at.to_array().map(cm).into_iter().chain(year).collect())
+        }
         Edit::Bend(b) => ('b', b.at.to_array().into_iter().chain(b.to.to_array()).map(cm).collect::<Vec<_>>()),
     };
     let numbers: Vec<String> = numbers.iter().map(i64::to_string).collect();
@@ -190,8 +194,11 @@ fn decode_edit(item: &str) -> Result<Edit, String> {
             Ok(Edit::Crown(Crown { outline: undeltas::<2>(&v).into_iter().map(Vec2::from_array).collect() }))
         }
         'o' => Err(format!("a crown outline takes radius,height per point (at least 3), got {n} numbers")),
-        'c' if n == 3 => Ok(Edit::Cut(Cut { at: Vec3::new(metres(v[0]), metres(v[1]), metres(v[2])) })),
-        'c' => Err(format!("a cut takes 3 numbers, got {n}")),
+        'c' if n == 3 || n == 4 => Ok(Edit::Cut(Cut {
+            at: Vec3::new(metres(v[0]), metres(v[1]), metres(v[2])),
+            year: v.get(3).map(|&y| y as f32),
+        })),
+        'c' => Err(format!("a cut takes 3 numbers (and a year), got {n}")),
         'b' if n == 6 => Ok(Edit::Bend(Bend {
             at: Vec3::new(metres(v[0]), metres(v[1]), metres(v[2])),
             to: Vec3::new(metres(v[3]), metres(v[4]), metres(v[5])),
