@@ -122,6 +122,8 @@ export interface BarkBuffers {
   indices: Uint32Array;
   /** Wind data, 8 floats per vertex, or empty. */
   wind: Float32Array;
+  /** Boxes of runs of triangles for picking (`core/pickBoxes.ts`); absent: pick every triangle. */
+  pick?: Float32Array;
 }
 
 /** The leaf mesh drawn once per leaf (leaf units). */
@@ -183,6 +185,8 @@ export interface TreeBuffers {
   endGrain?: EndGrainBuffers;
   /** Bark occlusion, one byte per vertex (0 dark .. 255 open sky; `TreeMesh.shade`); may be empty. */
   shade?: Uint8Array;
+  /** Boxes of runs of bark triangles for picking (`core/pickBoxes.ts`); absent: none. */
+  pick?: Float32Array;
 }
 
 /** The core's procedural bark maps (`bark_maps`): RGBA8, `size`², row 0 = v 0. */

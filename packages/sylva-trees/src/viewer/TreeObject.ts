@@ -22,6 +22,7 @@ import { BarkTextures, createBarkMaterial } from './barkMaterial';
 import { createCutFaceMaterial, EndGrainTextures } from './cutFaceMaterial';
 import { applyBarkLook, createBarkLookUniforms } from './barkLook';
 import { Foliage } from './Foliage';
+import { pickBark } from './barkPick';
 import { buildTreeGeometry, updateShade, updateTreeGeometry } from './geometry';
 import { applyLeafCoverage } from './leafCoverage';
 import { applyLeafTranslucency } from './lighting';
@@ -51,6 +52,8 @@ export class TreeObject {
   private readonly foliage = new Foliage(this.group);
   private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
   private mesh: Mesh<BufferGeometry, MeshStandardMaterial[]> | null = null;
+  /** The current bark's pick boxes (`core/pickBoxes.ts`), or null. */
+  private pickBoxes: Float32Array | null = null;
   /** The whole current tree (session updates are merged into it). */
   private current: TreeBuffers | null = null;
 
@@ -143,6 +146,7 @@ export class TreeObject {
   }
 
   private setBark(bark: BarkBuffers, buffers: TreeBuffers): void {
+    this.pickBoxes = bark.pick ?? null;
     if (this.mesh && updateTreeGeometry(this.mesh.geometry, bark, buffers.meta)) return;
     const geometry = buildTreeGeometry(buffers);
     if (this.mesh) {
@@ -150,7 +154,10 @@ export class TreeObject {
       this.mesh.geometry = geometry;
       return;
     }
-    this.mesh = new Mesh(geometry, [this.bark, this.leaves, this.cutFace]);
+    const mesh = new Mesh(geometry, [this.bark, this.leaves, this.cutFace]);
+    // The tools pick on every pointer move: through the pick boxes, nearest hit only.
+    mesh.raycast = (raycaster, hits) => pickBark(mesh, this.pickBoxes, raycaster, hits);
+    this.mesh = mesh;
     this.mesh.name = 'sylva-bark';
     this.mesh.castShadow = true;
     this.mesh.receiveShadow = true;

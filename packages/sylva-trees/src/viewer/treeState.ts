@@ -17,6 +17,7 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
       uvs: tree.uvs,
       indices: tree.indices,
       wind: tree.wind ?? new Float32Array(0),
+      ...(tree.pick ? { pick: tree.pick } : {}),
     },
     envelope: tree.envelope,
     markers: tree.markers ?? new Float32Array(0),
@@ -59,6 +60,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     leafHash: update.meta.leaf_texture ? update.meta.leaf_hash : '',
   };
   const wind = update.bark ? update.bark.wind : current?.wind;
+  const pick = update.bark ? update.bark.pick : current?.pick;
   const markers = update.markers ?? current?.markers;
   const textures = update.barkTextures ?? current?.bark;
   const endGrain = update.endGrain ?? current?.endGrain;
@@ -76,5 +78,6 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     ...(textures ? { bark: textures } : {}),
     ...(endGrain ? { endGrain } : {}),
     ...(shade ? { shade } : {}),
+    ...(pick ? { pick } : {}),
   };
 }

@@ -15,6 +15,7 @@ import type {
   WasmSession,
 } from '../core/types';
 import { coreInput } from '../core/editsJson';
+import { pickBoxes } from '../core/pickBoxes';
 import { volumeToCore } from '../core/volumes';
 import type { GenerateRequest, WorkerResponse } from './protocol';
 
@@ -91,6 +92,7 @@ export function transferOf(update: TreeUpdate): Transferable[] {
   const views: ArrayBufferView[] = [];
   const b = update.bark;
   if (b) views.push(b.positions, b.normals, b.uvs, b.indices, b.wind);
+  if (b?.pick) views.push(b.pick);
   if (update.envelope) views.push(update.envelope);
   if (update.markers) views.push(update.markers);
   if (update.instances) views.push(update.instances.matrices, update.instances.colors);
@@ -227,12 +229,15 @@ export class SessionGenerator {
     this.sentAny = true;
     const update: TreeUpdate = { meta };
     if (changes.bark) {
+      const positions = s.positions();
+      const indices = s.indices();
       update.bark = {
-        positions: s.positions(),
+        positions,
         normals: s.normals(),
         uvs: s.uvs(),
-        indices: s.indices(),
+        indices,
         wind: windOf(s.wind(), meta.vertices),
+        pick: pickBoxes(positions, indices),
       };
     }
     if (changes.skeleton) {

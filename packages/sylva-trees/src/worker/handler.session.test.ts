@@ -57,7 +57,8 @@ describe('session generation in the worker', () => {
       expect(parts(result), JSON.stringify(edit)).toEqual(expected);
       // Transferred: exactly the buffers it carries.
       const sent = h.sent.find((s) => s.message === result);
-      const buffers: Partial<Record<string, number>> = { bark: 5, instances: 2, leafMesh: 4 };
+      // The bark: positions, normals, uvs, indices, wind and its pick boxes.
+      const buffers: Partial<Record<string, number>> = { bark: 6, instances: 2, leafMesh: 4 };
       expect(sent?.transfer.length).toBe(parts(result).reduce((n, k) => n + (buffers[k] ?? 1), 0));
       expect(h.tree().meta.hash, JSON.stringify(edit)).toBe(coldHash(params));
       id++;
