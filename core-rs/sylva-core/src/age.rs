@@ -100,8 +100,20 @@ pub fn birth_years(skeleton: &Skeleton, mature: f32) -> Vec<f32> {
     birth
 }
 
-/// Brings `skeleton`, built as it is at age `mature`, to age `age` (years); nothing changes at
-/// or past `mature`. See the module doc.
+/// Dates the wood of `skeleton`, built as it is at age `mature`: each record's
+/// [`born`](crate::skeleton::Stem::born) (the year its base wood grew: its chain's birth year, or
+/// for a split clone the year its chain reached the split) and
+/// [`tip_year`](crate::skeleton::Stem::tip_year) (`mature`: a mature chain reaches its tip then).
+pub fn date(skeleton: &mut Skeleton, mature: f32) {
+    let birth = birth_years(skeleton, mature);
+    for (s, b) in skeleton.stems.iter_mut().zip(birth) {
+        s.born = b + (mature - b) * time_to_length(s.chain_start);
+        s.tip_year = mature;
+    }
+}
+
+/// Brings `skeleton`, built as it is at age `mature` and [`date`]d, to age `age` (years);
+/// nothing changes at or past `mature`. See the module doc.
 pub fn replay(skeleton: &mut Skeleton, age: f32, mature: f32) {
     if age >= mature {
         return;
@@ -136,6 +148,8 @@ pub fn replay(skeleton: &mut Skeleton, age: f32, mature: f32) {
             continue;
         }
         young(skeleton, i, kept.min(1.0), reached, tau.clamp(0.0, 1.0));
+        // A young tip is this year's wood.
+        skeleton.stems[i].tip_year = age;
     }
     // The kept children sit on their young parent's resampled curve exactly.
     for i in 0..n {

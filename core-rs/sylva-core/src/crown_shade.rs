@@ -67,6 +67,11 @@ impl CrownLight {
                 (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length())
             })
             .collect();
+        CrownLight::from_area(&leaves)
+    }
+
+    /// The field of leaf area given as `(centre, area m²)` pairs; `None` without any.
+    pub fn from_area(leaves: &[(Vec3, f32)]) -> Option<CrownLight> {
         let first = leaves.first()?.0;
         let (lo, hi) = leaves.iter().fold((first, first), |(lo, hi), &(p, _)| (lo.min(p), hi.max(p)));
         let extent = (hi - lo).max_element().max(1e-3);
@@ -81,7 +86,7 @@ impl CrownLight {
         };
         // Optical depth of one cell crossed along a ray of one cell length: k · area / cell².
         let per_area = EXTINCTION / (cell * cell);
-        for &(p, area) in &leaves {
+        for &(p, area) in leaves {
             depth[index(p)] += area * per_area;
         }
         let mut sky = vec![0.0f32; depth.len()];

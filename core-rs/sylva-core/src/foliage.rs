@@ -300,6 +300,8 @@ pub fn place_lit_by(
     let angle = (math::cos(a), math::sin(a));
     let turns = golden_turns(spans.iter().map(|s| s.3).sum());
     let mut season = crate::season::Sites::new(skeleton.seed, p);
+    // Leafy Years: whether each leaf's wood is recent enough to carry it (empty: all are).
+    let mut recent: Vec<bool> = Vec::new();
     let mut k = 0usize;
     for &(si, t0, t1, count) in &spans {
         let stem = &skeleton.stems[si];
@@ -353,11 +355,21 @@ pub fn place_lit_by(
                 if let Some(s) = season.as_mut() {
                     s.leaf(pos);
                 }
+                if p.leaf_years > 0.0 {
+                    let wood = stem.born + (stem.tip_year - stem.born) * t;
+                    recent.push(skeleton.age - wood <= p.leaf_years);
+                }
                 let v = p.foliage_color_v;
                 let b = 1.0 + rng.var(0.5 * v);
                 let yellow = 0.5 * v * rng.next_f32();
                 colors.extend_from_slice(&[b * (1.0 + yellow), b * (1.0 + 0.4 * yellow), b * (1.0 - yellow)]);
             }
+        }
+    }
+    if recent.contains(&false) {
+        keep_recent(&recent, &mut matrices, &mut colors);
+        if let Some(s) = season.as_mut() {
+            s.keep(&recent);
         }
     }
     // Inner leaves see less sky: the crown-depth term multiplies into the tints.
@@ -368,6 +380,19 @@ pub fn place_lit_by(
     }
     crate::crown_shade::darken_with(light.as_ref(), &matrices, &mut colors);
     Ok((Foliage { matrices, colors, ..bare }, light))
+}
+
+/// Keeps the leaves marked in `recent` (Leafy Years: leaves only on wood grown in the last years;
+/// older, inner wood goes bare), their matrices and tints.
+fn keep_recent(recent: &[bool], matrices: &mut Vec<f32>, colors: &mut Vec<f32>) {
+    let mut n = 0;
+    for (i, _) in recent.iter().enumerate().filter(|(_, &r)| r) {
+        matrices.copy_within(i * 16..i * 16 + 16, n * 16);
+        colors.copy_within(i * 3..i * 3 + 3, n * 3);
+        n += 1;
+    }
+    matrices.truncate(n * 16);
+    colors.truncate(n * 3);
 }
 
 /// The leaf stage: the leaf of the Leaf parameters (generated once per leaf shape, see

@@ -37,6 +37,7 @@ pub mod foliage;
 mod generated;
 pub mod growth;
 pub mod leaf;
+pub mod life;
 pub mod lod;
 pub mod math;
 pub mod mesh;

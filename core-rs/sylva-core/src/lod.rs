@@ -240,8 +240,8 @@ pub fn main_stems(skeleton: &Skeleton) -> Skeleton {
         kept.parent = parent;
         stems.push(kept);
     }
-    let Skeleton { mode, scale, crown_base, seed, levels, max_vertices, age, .. } = *skeleton;
-    Skeleton { mode, stems, scale, crown_base, seed, levels, max_vertices, age }
+    let Skeleton { mode, scale, crown_base, seed, levels, max_vertices, age, maturity, .. } = *skeleton;
+    Skeleton { mode, stems, scale, crown_base, seed, levels, max_vertices, age, maturity }
 }
 
 /// The leaf mesh one step lighter than `mesh`: blade → billboard cloud → card.

@@ -282,6 +282,15 @@ impl Sites {
         self.draw();
     }
 
+    /// Keeps the sites of the leaves marked in `keep` (in leaf order), as the foliage stage
+    /// keeps their leaves.
+    pub fn keep(&mut self, keep: &[bool]) {
+        let mut k = keep.iter();
+        self.origins.retain(|_| *k.next().unwrap_or(&true));
+        let mut k = keep.iter();
+        self.dice.retain(|_| *k.next().unwrap_or(&true));
+    }
+
     /// Applies the season to the placed leaves (`matrices` and `colors` as [`crate::foliage`]
     /// has them, not yet darkened), reading each leaf's light in `light` (the summer crown's
     /// field; `None`: every leaf in the open). Absent leaves are removed. Returns whether the

@@ -135,7 +135,7 @@ fn solve(old: &Stem, a: f32, to: Vec3, weight: &dyn Fn(f32, f32) -> f32) -> (Qua
 
 /// Stem `s` with at least [`MIN_SEGMENTS`] segments (its curve and radii resampled at equal
 /// fractions), or as it is.
-fn resampled(s: &Stem) -> Stem {
+pub(crate) fn resampled(s: &Stem) -> Stem {
     let segs = s.points.len() - 1;
     if segs >= MIN_SEGMENTS {
         return s.clone();

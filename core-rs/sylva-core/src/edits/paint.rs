@@ -157,7 +157,7 @@ impl PaintGrowth {
             paint: Paint { points: Vec::new(), ..paint.clone() },
             seed,
             index,
-            dress: Dress { tip, delta: PIPE_POWER, deepest, first: own.len() as u32 },
+            dress: Dress { tip, delta: PIPE_POWER, deepest, first: own.len() as u32, year: skeleton.age },
             stems: skeleton.stems.len(),
             tree_vertices,
             max_vertices,

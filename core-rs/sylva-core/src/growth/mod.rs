@@ -237,6 +237,8 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
             radii: Some(r),
             cut_end: false,
             callus: 0.0,
+            born: 0.0,
+            tip_year: 0.0,
             points,
         });
     }
@@ -250,6 +252,7 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
         levels: p.levels,
         max_vertices: p.max_vertices,
         age: p.age,
+        maturity: p.maturity,
     }
 }
 

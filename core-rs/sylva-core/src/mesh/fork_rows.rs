@@ -60,6 +60,8 @@ mod tests {
             radii: Some(vec![0.1, 0.1]),
             cut_end: false,
             callus: 0.0,
+            born: 0.0,
+            tip_year: 0.0,
             points: [Vec3::ZERO, Vec3::Y * 10.0].into_iter().collect(),
         };
         let short = fork(0.1, 0.1 + 2.5 * 0.1 / 10.0);

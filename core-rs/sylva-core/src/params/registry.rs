@@ -26,6 +26,14 @@ define_params! {
             "The tree's age: below its Mature Age a younger tree, its growth replayed (each stem born the year after its parent reached it, growing along a Chapman-Richards curve); at or past it the mature tree.";
         maturity: f32 = 40.0; [1.0, 300.0, 1.0] "years", "Tree", "Mature Age", Skeleton,
             "The age at which the tree has the form its other parameters describe; each preset's Age starts here.";
+        ring_width: f32 = 3.0; [0.0, 20.0, 0.1] "mm/year", "Life", "Ring Width", Skeleton,
+            "Past the Mature Age, the trunk's base radius grows this much a year, and every stem thickens by the pipe model: its new wood in proportion to the shoot tips it carries.";
+        shed_light: f32 = 0.3; [0.0, 1.0, 0.01] "", "Life", "Shedding Light", Skeleton,
+            "Past the Mature Age, a branch whose shoots see less sky than this (0 to 1, the crown's light field) dies and drops, leaving a stub the trunk overgrows into a scar (0: none shed).";
+        shed_years: f32 = 15.0; [1.0, 100.0, 1.0] "years", "Life", "Shedding Delay", Skeleton,
+            "Years a branch in half the Shedding Light lives on past the Mature Age: one seeing sky s lives Delay s / (Light - s) years, so the darkest drop first and those near the threshold decades later.";
+        droop: f32 = 4.0; [0.0, 30.0, 0.5] "°/decade", "Life", "Droop", Skeleton,
+            "Past the Mature Age, a typical main branch sinks this much per decade under its growing load (long, slender ones more), its outer part turning up again toward the light.";
         scale: f32 = 13.0; [0.1, 100.0, 0.1] "m", "Tree", "Scale", Skeleton,
             "Overall size of the tree: trunk length = Scale x Trunk Length.";
         scale_v: f32 = 3.0; [0.0, 50.0, 0.1] "m", "Tree", "Scale Variation", Skeleton,
@@ -186,6 +194,8 @@ define_params! {
             "Random per-leaf tint: brightness and a shift toward yellow.";
         season: f32 = 7.0; [1.0, 12.99, 0.05] "month", "Foliage", "Season", Foliage,
             "Month of the year (northern temperate; 1 = 1 January, 7.5 = mid-July): spring leaves flush small and pale, autumn leaves turn by species and light (sun leaves first) and fall, deciduous trees are bare in winter and conifers bronze slightly. July (the default) is the summer tree.";
+        leaf_years: f32 = 0.0; [0.0, 100.0, 1.0] "years", "Life", "Leafy Years", Foliage,
+            "Leaves only on wood grown in the last this many years (the youngest shoots): older, inner wood goes bare (0: leaves on all wood).";
         foliage_lod: LeafLod = LeafLod::Auto; [0, 3, 1] "", "Foliage", "Leaf Mesh", Leaf,
             "Geometry drawn for every leaf: Auto (the full blade while the foliage stays under 200,000 triangles, else billboards, else cards), Blade, Billboards or Card.";
         mesh_quality: f32 = 1.0; [0.25, 4.0, 0.05] "", "Quality", "Mesh Quality", Mesh,

@@ -166,8 +166,9 @@ impl ParamValue for bool {
     }
 }
 /// Panel sections in display order. Every parameter's group is one of these.
-pub const GROUPS: [&str; 15] = [
+pub const GROUPS: [&str; 16] = [
     "Tree",
+    "Life",
     "Crown",
     "Trunk",
     "Level 1",

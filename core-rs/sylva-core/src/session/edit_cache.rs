@@ -115,7 +115,9 @@ fn build_stems(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Res
             (growth::skeleton(p, &grown), grown.markers)
         }
     };
+    crate::age::date(&mut skeleton, p.maturity);
     crate::age::replay(&mut skeleton, p.age, p.maturity);
+    crate::life::live(&mut skeleton, p);
     Ok((skeleton, markers))
 }
 

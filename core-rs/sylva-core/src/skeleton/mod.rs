@@ -44,6 +44,8 @@ pub struct Skeleton {
     pub max_vertices: u32,
     /// The tree's Age (years): dated hand edits happen only from their year on.
     pub age: f32,
+    /// The tree's Mature Age (years): the form the stems were built in ([`crate::age`]).
+    pub maturity: f32,
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
@@ -158,6 +160,7 @@ pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Ske
         levels: p.levels,
         max_vertices: p.max_vertices,
         age: p.age,
+        maturity: p.maturity,
     })
 }
 
@@ -233,6 +236,8 @@ impl Builder<'_> {
             radii: None,
             cut_end: false,
             callus: 0.0,
+            born: 0.0,
+            tip_year: 0.0,
         });
         if s.level + 1 < p.levels as usize {
             self.grow_children(s.level, index, &mut rng)?;

@@ -67,6 +67,11 @@ pub struct Stem {
     /// How far woundwood has closed over the cut end, as a fraction of its radius (0: a fresh
     /// cut; 1: closed). A dated cut's years since it was made set it ([`crate::edits::cut`]).
     pub callus: f32,
+    /// The year the wood at this record's base grew (0 for the trunk; see [`crate::age`]).
+    pub born: f32,
+    /// The year the wood at this record's tip grew (the Mature Age for a mature stem, the Age
+    /// for one still growing); leaves on wood between are dated by linear interpolation.
+    pub tip_year: f32,
 }
 
 impl Stem {

@@ -71,6 +71,8 @@ pub(super) fn add_roots(p: &SkeletonParams, stems: &mut Vec<Stem>) {
             radii: None,
             cut_end: false,
             callus: 0.0,
+            born: 0.0,
+            tip_year: 0.0,
         });
     }
 }

@@ -46,6 +46,11 @@ ParamId = Literal[
     "ratio",
     "ratio_power",
     "attraction_up",
+    "ring_width",
+    "shed_light",
+    "shed_years",
+    "droop",
+    "leaf_years",
     "shape",
     "base_size",
     "angle_spread",
@@ -354,6 +359,16 @@ class Params(TypedDict, total=False):
     """Ratio Power (Tree, float; 0 to 5; default 1.2): How fast child radii shrink with their length relative to the parent (r_child = r_parent (L/L_parent)^power)."""
     attraction_up: float
     """Attraction Up (Tree, float; -10 to 10; default 0.5): Bends branches of level 2 and deeper toward the sky (positive) or the ground (negative: weeping)."""
+    ring_width: float
+    """Ring Width (Life, float; 0 to 20 mm/year; default 3 mm/year): Past the Mature Age, the trunk's base radius grows this much a year, and every stem thickens by the pipe model: its new wood in proportion to the shoot tips it carries."""
+    shed_light: float
+    """Shedding Light (Life, float; 0 to 1; default 0.3): Past the Mature Age, a branch whose shoots see less sky than this (0 to 1, the crown's light field) dies and drops, leaving a stub the trunk overgrows into a scar (0: none shed)."""
+    shed_years: float
+    """Shedding Delay (Life, float; 1 to 100 years; default 15 years): Years a branch in half the Shedding Light lives on past the Mature Age: one seeing sky s lives Delay s / (Light - s) years, so the darkest drop first and those near the threshold decades later."""
+    droop: float
+    """Droop (Life, float; 0 to 30 °/decade; default 4 °/decade): Past the Mature Age, a typical main branch sinks this much per decade under its growing load (long, slender ones more), its outer part turning up again toward the light."""
+    leaf_years: float
+    """Leafy Years (Life, float; 0 to 100 years; default 0 years): Leaves only on wood grown in the last this many years (the youngest shoots): older, inner wood goes bare (0: leaves on all wood)."""
     shape: int | ShapeOption
     """Crown Shape (Crown, enum; 0 Conical, 1 Spherical, 2 Hemispherical, 3 Cylindrical, 4 Tapered Cylindrical, 5 Flame, 6 Inverse Conical, 7 Tend Flame, 8 Drawn; default Cylindrical): Envelope that sets level-1 branch length by height on the trunk (Weber & Penn ShapeRatio); Drawn follows the crown outline drawn by hand (Cylindrical until one is drawn)."""
     base_size: float

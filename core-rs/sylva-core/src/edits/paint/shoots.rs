@@ -30,6 +30,8 @@ pub struct Dress {
     pub deepest: u8,
     /// Index the first new stem will have in the skeleton.
     pub first: u32,
+    /// The year the shoots grow (the tree's Age): their wood's date.
+    pub year: f32,
 }
 
 /// One stem still to make: its first new node, the node it branches from, the parent stem (its
@@ -134,6 +136,8 @@ pub fn shoots(stems: &[Stem], nodes: &[Node], existing: usize, anchors: &[Anchor
             radii: Some(r),
             cut_end: false,
             callus: 0.0,
+            born: d.year,
+            tip_year: d.year,
             points,
         });
     }
