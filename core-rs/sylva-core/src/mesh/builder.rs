@@ -107,11 +107,6 @@ impl MeshBuilder {
         }
     }
 
-    /// Makes room for about `rings` more records of [`MeshBuilder::rings`].
-    pub fn reserve_rings(&mut self, rings: usize) {
-        self.mesh.rings.reserve(rings);
-    }
-
     /// Record `count` tube rings of `stride` vertices each (`sides + 1`, see [`TreeMesh::rings`]),
     /// the first starting at vertex `first`, the others following it back to back.
     pub fn rings(&mut self, first: u32, count: u32, stride: u32) {

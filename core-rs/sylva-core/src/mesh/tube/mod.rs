@@ -88,7 +88,6 @@ pub struct Built {
 pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, SylvaError> {
     let plan = Plan::new(skeleton, p)?;
     let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
-    out.reserve_rings(plan.ts.len());
     out.begin_group(Material::Bark);
     // Circle tables by number of sides.
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
