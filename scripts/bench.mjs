@@ -8,6 +8,7 @@ import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { benchBrowser } from './bench-browser.mjs';
+import { benchBatch, benchCold } from './bench-cold.mjs';
 import { median } from './bench-stats.mjs';
 import { nativeCli } from './native-cli.mjs';
 
@@ -18,14 +19,12 @@ const runs = runsArg >= 0 ? Number(args[runsArg + 1]) : 30;
 const root = fileURLToPath(new URL('..', import.meta.url));
 
 const sylva = nativeCli();
-const wasm = await import(
-  new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url)
+const wasmGlue = new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url);
+const wasmModule = new WebAssembly.Module(
+  readFileSync(new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url)),
 );
-wasm.initSync({
-  module: readFileSync(
-    new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
-  ),
-});
+const wasm = await import(wasmGlue);
+wasm.initSync({ module: wasmModule });
 
 // Every preset, plus the named cases the issues set targets for.
 const cases = JSON.parse(wasm.presets_json()).map((p) => ({
@@ -90,6 +89,13 @@ for (const preset of cases) {
     same_hash: native.hash === meta.hash,
   });
 }
+
+// The cold path of every preset (a whole generation with nothing kept from an earlier tree,
+// native and wasm, 3 runs each) and a native batch of 100 default trees on every core
+// (bench-cold.mjs).
+const presetCases = cases.filter((c) => c.args[0] === '--preset');
+const cold = await benchCold(sylva, wasmModule, wasmGlue.href, presetCases, 3);
+const batch = benchBatch(sylva, 100);
 
 // Incremental regeneration (the worker's session), default tree in wasm: an edit of each stage,
 // at full quality and as a drag is answered (a preview bark when the full one is over the
@@ -156,7 +162,7 @@ if (typeof wasm.Session === 'function') {
 execFileSync('npm', ['run', 'build', '-w', 'web'], { cwd: root, stdio: 'ignore' });
 const browser = await benchBrowser(runs);
 // With --json everything goes into this one object, printed at the end.
-const report = { runs, results, incremental, browser };
+const report = { runs, results, cold, batch, incremental, browser };
 
 if (!asJson) {
   const inc = Object.entries(incremental).filter(([, v]) => typeof v === 'object');
@@ -195,6 +201,21 @@ if (!asJson) {
   }
   const f = (x) => x.toFixed(2).padStart(8);
   const mv = (x) => (x / 1e6).toFixed(1).padStart(7);
+  console.log(
+    'Cold path (a whole generation, nothing kept from an earlier tree; medians of 3; µs per bark vertex, ms):\n' +
+      'preset            vertices | native µs/v      ms | wasm µs/v      ms',
+  );
+  for (const c of cold) {
+    console.log(
+      `${c.preset.padEnd(16)} ${String(c.vertices).padStart(9)} |${c.native.us_per_vertex.toFixed(3).padStart(11)}${c.native.median_ms.toFixed(1).padStart(8)} |` +
+        `${c.wasm.us_per_vertex.toFixed(3).padStart(10)}${c.wasm.median_ms.toFixed(1).padStart(8)}` +
+        (c.same_hash ? '' : '  HASH MISMATCH'),
+    );
+  }
+  console.log(
+    `Batch: ${batch.trees} default trees (seeds 1-${batch.trees}) natively on ${batch.threads} threads: ` +
+      `${batch.trees_per_second.toFixed(1)} trees/s (${batch.tree_median_ms.toFixed(1)} ms a tree)\n`,
+  );
   console.log(
     `Medians over ${runs} runs (ms; M vertices/s). wasm e2e = generate + copy buffers out.`,
   );
@@ -376,9 +397,9 @@ if (typeof wasm.leaf_json === 'function') {
       stdio: 'ignore',
     },
   );
-  const report = JSON.parse(readFileSync(out, 'utf8'));
+  const vitest = JSON.parse(readFileSync(out, 'utf8'));
   rmSync(out, { force: true });
-  const forest = report.files
+  const forest = vitest.files
     .flatMap((f) => f.groups)
     .flatMap((g) => g.benchmarks)
     .map((b) => ({ name: b.name, median_ms: b.median, samples: b.sampleCount }));

@@ -104,6 +104,21 @@ pub enum Command {
     /// `first_ms`, `bytes`, `runs`. `npm run bench` runs this for every preset.
     #[command(args_override_self = true)]
     Bench(BenchArgs),
+    /// Generate many trees on every core: GLB files and a manifest
+    ///
+    /// The trees are every `--preset` (the defaults without one) with every seed of `--seeds` (the
+    /// preset's own seed without it), then the `--set` values; or the trees of `--list`, a JSON
+    /// array of `{"preset": NAME, "seed": N, "set": {"id": value, ...}, "name": FILE}` (each key
+    /// optional). Each tree is generated on one of `--threads` worker threads (default: every
+    /// core) and, with `--out DIR`, written to `DIR/NAME.glb` (NAME: `preset_seed`, `default_seed`
+    /// or the list's `name`), the same bytes as `sylva generate --out` writes for that tree. Prints
+    /// the manifest, one JSON object (also written to `DIR/manifest.json`): `trees`, per tree
+    /// `name`, `preset`, `seed`, `file`, `hash`, `vertices`, `triangles`, `leaves`, `generate_ms`
+    /// and `ms` (generation and writing), and `count`, `failed`, `threads`, `total_ms`,
+    /// `trees_per_second`. A tree that fails (a budget) has `error` instead, and the batch exits
+    /// with status 2 after the others are written.
+    #[command(args_override_self = true)]
+    Batch(BatchArgs),
     /// Generate one leaf and print it as JSON
     ///
     /// The JSON holds the outline, the triangulation, the auxin sources, the vein nodes, edges,
@@ -231,6 +246,32 @@ pub struct BenchArgs {
     pub export: ExportArgs,
 }
 
+/// `sylva batch`.
+#[derive(Args, Debug)]
+pub struct BatchArgs {
+    /// A tree preset (repeatable; `sylva presets` lists them; default: the defaults)
+    #[arg(long, value_name = "NAME", conflicts_with = "list")]
+    pub preset: Vec<String>,
+    /// The seeds: N, A-B (inclusive) or a comma-separated list of them, for every preset
+    #[arg(long, value_name = "LIST", conflicts_with = "list")]
+    pub seeds: Option<String>,
+    /// The `--set` values, applied to every tree after its preset and seed.
+    #[command(flatten)]
+    pub set: Sets,
+    /// The trees as a JSON array of `{"preset", "seed", "set", "name"}` instead
+    #[arg(long, value_name = "FILE.json")]
+    pub list: Option<String>,
+    /// Write DIR/NAME.glb per tree and DIR/manifest.json (created if missing)
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<String>,
+    /// Worker threads (default: every core)
+    #[arg(long, value_name = "N", value_parser = threads)]
+    pub threads: Option<usize>,
+    /// The export options.
+    #[command(flatten)]
+    pub export: ExportArgs,
+}
+
 /// `sylva leaf`.
 #[derive(Args, Debug)]
 pub struct LeafArgs {
@@ -295,6 +336,13 @@ pub const EXAMPLES: &[(&str, &[&str])] = &[
     ("leaf-presets", &["sylva leaf-presets"]),
     ("envelope", &["sylva envelope --shape flame --samples 11"]),
     ("bench", &["sylva bench --preset fir --runs 50 --json", "sylva bench --preset ca_black_oak --glb --runs 7"]),
+    (
+        "batch",
+        &[
+            "sylva batch --preset oak --preset fir --seeds 1-50 --out forest",
+            "sylva batch --list trees.json --out trees --threads 4",
+        ],
+    ),
     (
         "leaf",
         &[
@@ -365,6 +413,14 @@ fn report(what: &str) -> Result<String, String> {
 /// `--runs N`.
 fn runs(v: &str) -> Result<usize, String> {
     v.parse().map_err(|_| "--runs takes a whole number".to_string())
+}
+
+/// `--threads N`, at least 1.
+fn threads(v: &str) -> Result<usize, String> {
+    match v.parse() {
+        Ok(n) if n >= 1 => Ok(n),
+        _ => Err(format!("--threads takes a whole number of at least 1, got '{v}'")),
+    }
 }
 
 /// `--step N`.

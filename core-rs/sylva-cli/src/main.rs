@@ -5,6 +5,7 @@
 //! ([`mod@reference`]). Errors (unknown options, invalid values and parameters, budgets) print
 //! `error: ...` to stderr and exit with status 2.
 
+mod batch;
 mod cli;
 mod leaf;
 mod payloads;
@@ -71,6 +72,7 @@ fn run(args: &[String]) -> Result<String, String> {
             serde_json::to_string(&sylva_core::crown::envelope_profile(shape, samples)).map_err(|e| e.to_string())
         }
         Command::Bench(a) => tree::bench(&a),
+        Command::Batch(a) => batch::batch(&a),
         Command::Leaf(a) => leaf::leaf(&a),
         Command::BenchLeaf(a) => leaf::bench(&a),
         Command::CliReference { json: true } => Ok(reference::cli_reference_json()),

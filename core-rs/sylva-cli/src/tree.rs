@@ -6,7 +6,7 @@ use crate::{median, tree_params};
 use sylva_core::export::ExportOptions;
 
 /// The export options of a command line.
-fn export_options(a: &ExportArgs) -> ExportOptions {
+pub(crate) fn export_options(a: &ExportArgs) -> ExportOptions {
     let mut export = ExportOptions::default();
     if let Some(leaves) = a.leaves {
         export.leaves = leaves;
@@ -123,7 +123,11 @@ fn write_lods(
 
 /// Writes `g` to `path` as GLB or OBJ (+ MTL + PNGs, named after the OBJ's stem, next to it);
 /// returns `[file, bytes]` of every file written.
-fn write_export(g: &sylva_core::Generated, export: &ExportOptions, path: &str) -> Result<Vec<(String, usize)>, String> {
+pub(crate) fn write_export(
+    g: &sylva_core::Generated,
+    export: &ExportOptions,
+    path: &str,
+) -> Result<Vec<(String, usize)>, String> {
     let write = |file: &str, bytes: &[u8]| std::fs::write(file, bytes).map_err(|e| format!("cannot write {file}: {e}"));
     let lower = path.to_ascii_lowercase();
     if lower.ends_with(".glb") {

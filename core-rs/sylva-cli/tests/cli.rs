@@ -180,3 +180,74 @@ fn report_mesh_counts_open_and_non_manifold_edges() {
     assert_eq!(code, 2);
     assert!(err.contains("--report takes 'skeleton' or 'mesh'"), "{err}");
 }
+
+/// A fresh, empty folder under the system's temporary folder.
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("sylva-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+#[test]
+fn batch_writes_the_bytes_generate_writes_and_a_manifest() {
+    let dir = temp_dir("batch");
+    let d = dir.to_str().unwrap();
+    let (code, out, err) =
+        sylva(&["batch", "--preset", "grown_bushy", "--preset", "fir", "--seeds", "3-4", "--threads", "2", "--out", d]);
+    assert_eq!(code, 0, "{err}");
+    let printed = json(&out);
+    let written = json(&std::fs::read_to_string(dir.join("manifest.json")).expect("manifest.json"));
+    assert_eq!(printed, written);
+    assert_eq!(printed["count"], 4);
+    assert_eq!(printed["failed"], 0);
+    assert!(printed["trees_per_second"].as_f64().is_some_and(|t| t > 0.0));
+    let trees = printed["trees"].as_array().unwrap();
+    let names: Vec<&str> = trees.iter().map(|t| t["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["grown_bushy_3", "grown_bushy_4", "fir_3", "fir_4"]);
+    for t in trees {
+        let (preset, seed) = (t["preset"].as_str().unwrap(), t["seed"].to_string());
+        let one = dir.join(format!("one-{preset}-{seed}.glb"));
+        let (code, gen, err) =
+            sylva(&["generate", "--preset", preset, "--seed", &seed, "--out", one.to_str().unwrap()]);
+        assert_eq!(code, 0, "{err}");
+        let gen = json(&gen);
+        assert_eq!(t["hash"], gen["hash"]);
+        assert_eq!(t["vertices"], gen["vertices"]);
+        let file = t["file"].as_str().unwrap();
+        assert!(file.ends_with(&format!("{preset}_{seed}.glb")), "{file}");
+        let (a, b) = (std::fs::read(file).unwrap(), std::fs::read(&one).unwrap());
+        assert!(a == b, "{file}: {} bytes, generate wrote {}", a.len(), b.len());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn batch_takes_a_json_list_and_reports_failures_after_the_others() {
+    let dir = temp_dir("batch-list");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (good, bad) = (dir.join("good.json"), dir.join("bad.json"));
+    let fir = r#"{"preset": "fir", "seed": 5, "set": {"levels": 2, "shape": "conical"}, "name": "small_fir"}"#;
+    std::fs::write(&good, format!("[{fir}]")).unwrap();
+    std::fs::write(&bad, format!(r#"[{fir}, {{"seed": 2, "set": {{"max_vertices": 10000}}}}]"#)).unwrap();
+    // The list's tree is the one `generate` makes with the same values.
+    let (code, out, err) = sylva(&["batch", "--list", good.to_str().unwrap()]);
+    assert_eq!(code, 0, "{err}");
+    let (code, gen, err) =
+        sylva(&["generate", "--preset", "fir", "--seed", "5", "--set", "levels=2", "--set", "shape=conical"]);
+    assert_eq!(code, 0, "{err}");
+    let first = &json(&out)["trees"][0];
+    assert_eq!(first["name"], "small_fir");
+    assert!(first["file"].is_null(), "no --out, no file: {first}");
+    assert_eq!(first["hash"], json(&gen)["hash"]);
+    // A tree over its budget fails; the others are still made, and the batch exits 2.
+    let (code, _, err) = sylva(&["batch", "--list", bad.to_str().unwrap(), "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("1 of 2 trees failed") && err.contains("max_vertices"), "{err}");
+    let manifest = json(&std::fs::read_to_string(dir.join("manifest.json")).unwrap());
+    assert!(manifest["trees"][1]["error"].as_str().is_some_and(|e| e.contains("max_vertices")), "{manifest}");
+    assert!(dir.join("small_fir.glb").exists());
+    let (code, _, err) = sylva(&["batch", "--seeds", "1,1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("two trees named 'default_1'"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

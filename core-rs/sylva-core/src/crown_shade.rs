@@ -9,6 +9,7 @@
 //! are darker than the outer shell; the bark uses the same field ([`crate::mesh::shade`]).
 //! Deterministic: plain arithmetic and the portable `math::exp`, in a fixed order.
 
+use crate::math::HwSqrt;
 use glam::Vec3;
 
 /// Brightness of a leaf (or bark) that sees no sky at all.
@@ -64,7 +65,7 @@ impl CrownLight {
             .chunks_exact(16)
             .map(|m| {
                 let (x, y) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]));
-                (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length())
+                (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length_hw())
             })
             .collect();
         CrownLight::from_area(&leaves)
@@ -98,25 +99,32 @@ impl CrownLight {
     }
 
     /// Sky visibility at `p` (trilinear between cell centres; 1 outside the grid above, the
-    /// nearest cell's value beside and below it).
+    /// nearest cell's value beside and below it). The bark's occlusion reads it at every vertex:
+    /// the cell's corners are read from two rows of `x` at a time, and the clamped coordinates
+    /// (0 to 20) truncated through `i32` (what `as usize` gives for them, without its
+    /// saturation checks); the arithmetic is the same operations in the same order.
+    #[inline]
     pub fn sky_at(&self, p: Vec3) -> f32 {
         let f = (p - self.min) / self.cell - Vec3::splat(0.5);
-        let top = (self.n[1] - 1) as f32;
-        if f.y > top {
+        let [nx, ny, nz] = self.n;
+        if f.y > (ny - 1) as f32 {
             return 1.0;
         }
-        let clampf = |x: f32, a: usize| x.clamp(0.0, (self.n[a] - 1) as f32);
-        let f = Vec3::new(clampf(f.x, 0), clampf(f.y, 1), clampf(f.z, 2));
-        let i0 = [f.x as usize, f.y as usize, f.z as usize];
-        let i1 = [0, 1, 2].map(|a| (i0[a] + 1).min(self.n[a] - 1));
-        let t = f - Vec3::new(i0[0] as f32, i0[1] as f32, i0[2] as f32);
-        let at = |x: usize, y: usize, z: usize| self.sky[(z * self.n[1] + y) * self.n[0] + x];
+        // The lower cell centre, the upper one (the last cell's again at the far side) and the
+        // fraction between them, along one axis of `n` cells.
+        let axis = |v: f32, n: usize| {
+            let v = v.clamp(0.0, (n - 1) as f32);
+            let i = v as i32 as usize;
+            (i, (i + 1).min(n - 1), v - i as f32)
+        };
+        let ((x0, x1, tx), (y0, y1, ty), (z0, z1, tz)) = (axis(f.x, nx), axis(f.y, ny), axis(f.z, nz));
         let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
-        let x00 = lerp(at(i0[0], i0[1], i0[2]), at(i1[0], i0[1], i0[2]), t.x);
-        let x10 = lerp(at(i0[0], i1[1], i0[2]), at(i1[0], i1[1], i0[2]), t.x);
-        let x01 = lerp(at(i0[0], i0[1], i1[2]), at(i1[0], i0[1], i1[2]), t.x);
-        let x11 = lerp(at(i0[0], i1[1], i1[2]), at(i1[0], i1[1], i1[2]), t.x);
-        lerp(lerp(x00, x10, t.y), lerp(x01, x11, t.y), t.z)
+        // Row (y, z) of the grid, x from 0 to nx - 1.
+        let row = |y: usize, z: usize| &self.sky[(z * ny + y) * nx..][..nx];
+        let along_x = |r: &[f32]| lerp(r[x0], r[x1], tx);
+        let (x00, x10) = (along_x(row(y0, z0)), along_x(row(y1, z0)));
+        let (x01, x11) = (along_x(row(y0, z1)), along_x(row(y1, z1)));
+        lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz)
     }
 
     /// Brightness for sky visibility `sky`: [`MIN_LIGHT`] in full shade, 1 in the open.

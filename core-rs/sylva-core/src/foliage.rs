@@ -36,9 +36,13 @@ use crate::math;
 use crate::mesh::TreeMesh;
 use crate::params::{FoliageParams, GrowthMode, LeafLod, LeafParams};
 use crate::rng::Rng;
-use crate::skeleton::{Skeleton, Stem, StemPoints};
+use crate::skeleton::Skeleton;
+pub use frames::{face_up, lower};
+use frames::{Site, LANES};
 use glam::Vec3;
 use std::sync::{Arc, Mutex};
+
+mod frames;
 
 /// Internodes at the end of each grown shoot that carry leaves.
 const GROWN_LEAF_INTERNODES: usize = 3;
@@ -135,29 +139,6 @@ pub fn budget_error(need: u64, max: u32) -> SylvaError {
     }
 }
 
-/// The rule of *Modeling the Mighty Maple for Web*: lower the direction's vertical component,
-/// `t_y ← t_y (1 − t_y²)`, and renormalise.
-pub fn lower(t: Vec3) -> Vec3 {
-    let t = Vec3::new(t.x, t.y * (1.0 - t.y * t.y), t.z);
-    math::unit_or(t, || Vec3::X)
-}
-
-/// The leaf's front after turning about its direction `t` (unit) toward the sky: world up made
-/// perpendicular to `t`; for a horizontal-free (vertical) `t`, any perpendicular.
-pub fn face_up(t: Vec3) -> Vec3 {
-    math::unit_or(Vec3::Y - t * t.y, || math::unit_or(t.cross(Vec3::X), || Vec3::Z))
-}
-
-/// `v` rotated by `angle` (radians) about the unit `axis` (Rodrigues, portable math).
-fn rotate(v: Vec3, axis: Vec3, angle: f32) -> Vec3 {
-    rotate_sc(v, axis, [math::sin(angle), math::cos(angle)])
-}
-
-/// [`rotate`] by the angle whose sine and cosine are `sc`.
-fn rotate_sc(v: Vec3, axis: Vec3, [s, c]: [f32; 2]) -> Vec3 {
-    v * c + axis.cross(v) * s + axis * axis.dot(v) * (1.0 - c)
-}
-
 /// Sine and cosine of the golden-angle turn of leaf `k` (`GOLDEN_ANGLE · k` degrees), for every
 /// `k < n`. The same for every tree, so computed once and kept (grown when a tree has more
 /// leaves): two software trigonometric calls per leaf were a fifth of the foliage stage.
@@ -226,26 +207,6 @@ fn spans(skeleton: &Skeleton, p: &FoliageParams) -> Vec<(usize, f32, f32, usize)
         .collect()
 }
 
-/// Per-leaf frame: position, direction (midrib) and front (`curve` reads `stem`'s centre curve); `angle` is the cosine and sine of
-/// the Foliage Angle (the same for every leaf, so computed once).
-fn leaf_frame(stem: &Stem, curve: &mut StemPoints, t: f32, turn: [f32; 2], angle: (f32, f32)) -> (Vec3, Vec3, Vec3) {
-    let (pos, tangent) = curve.sample(t);
-    let side0 = math::unit_or(stem.base_normal - tangent * tangent.dot(stem.base_normal), || {
-        math::unit_or(tangent.cross(Vec3::Y), || tangent.cross(Vec3::X).normalize())
-    });
-    let side = rotate_sc(side0, tangent, turn);
-    let dir = math::unit_or(tangent * angle.0 + side * angle.1, || tangent);
-    (pos, dir, side)
-}
-
-/// One leaf's matrix: leaf `x` → side · width, `y` → direction · length, `z` → front · length.
-fn push_matrix(out: &mut Vec<f32>, pos: Vec3, dir: Vec3, front: Vec3, len: f32, width: f32) {
-    let x = dir.cross(front) * width;
-    let y = dir * len;
-    let z = front * len;
-    out.extend_from_slice(&[x.x, x.y, x.z, 0.0, y.x, y.y, y.z, 0.0, z.x, z.y, z.z, 0.0, pos.x, pos.y, pos.z, 1.0]);
-}
-
 /// Places the leaves on `skeleton` and dresses them with the leaf ([`place`] then [`dress`]).
 pub fn build(skeleton: &Skeleton, p: &FoliageParams, leaf: &LeafParams) -> Result<Foliage, SylvaError> {
     let mut foliage = place(skeleton, p)?;
@@ -300,6 +261,7 @@ pub fn place_lit_by(
     let angle = (math::cos(a), math::sin(a));
     let turns = golden_turns(spans.iter().map(|s| s.3).sum());
     let mut season = crate::season::Sites::new(skeleton.seed, p);
+    let mut batch = Batch::new(Shape { per_site: per_site as usize, angle, enlarge, p });
     // Leafy Years: whether each leaf's wood is recent enough to carry it (empty: all are).
     let mut recent: Vec<bool> = Vec::new();
     let mut k = 0usize;
@@ -321,8 +283,10 @@ pub fn place_lit_by(
             let u = if bias == 1.0 { u.clamp(0.0, 1.0) } else { math::pow(u.clamp(0.0, 1.0), bias) };
             let t = t0 + (t1 - t0) * u;
             if k % thin != 0 {
-                // A site a preview leaves out: its random numbers are drawn all the same.
+                // A site a preview leaves out: its random numbers are drawn all the same (the
+                // season's after the leaves before it).
                 k += 1;
+                batch.flush(&mut matrices, &mut colors, season.as_mut());
                 for _ in 0..per_site {
                     rng.var(p.foliage_size_v);
                     rng.var(0.5 * p.foliage_color_v);
@@ -333,39 +297,29 @@ pub fn place_lit_by(
                 }
                 continue;
             }
-            let (pos, dir, side) = leaf_frame(stem, &mut curve, t, turns[k], angle);
+            let (pos, tangent) = curve.sample(t);
+            let site = Site { pos, tangent, base_normal: stem.base_normal, turn: turns[k] };
             k += 1;
-            let dirs: &[Vec3] = if p.foliage_twigs3 {
-                &[
-                    dir,
-                    rotate(dir, dir.cross(side).normalize_or_zero(), 0.6),
-                    rotate(dir, dir.cross(side).normalize_or_zero(), -0.6),
-                ]
-            } else {
-                &[dir]
-            };
-            for &d in dirs {
-                let d = lower(d);
-                let front = face_up(d);
+            let v = p.foliage_color_v;
+            // Size, brightness and yellowing of each of the site's leaves, in the stream's order.
+            let mut draws = [[0.0; 3]; 3];
+            for d in &mut draws[..per_site as usize] {
                 let s = (1.0 + rng.var(p.foliage_size_v)).max(0.05);
-                let len = p.foliage_scale * s * enlarge;
-                // The petiole (leaf y from -Petiole Length to 0) starts on the stem.
-                let base = pos + d * (len * p.leaf_petiole);
-                push_matrix(&mut matrices, base, d, front, len, len * p.foliage_scale_x);
-                if let Some(s) = season.as_mut() {
-                    s.leaf(pos);
-                }
-                if p.leaf_years > 0.0 {
-                    let wood = stem.born + (stem.tip_year - stem.born) * t;
-                    recent.push(skeleton.age - wood <= p.leaf_years);
-                }
-                let v = p.foliage_color_v;
                 let b = 1.0 + rng.var(0.5 * v);
-                let yellow = 0.5 * v * rng.next_f32();
-                colors.extend_from_slice(&[b * (1.0 + yellow), b * (1.0 + 0.4 * yellow), b * (1.0 - yellow)]);
+                *d = [s, b, 0.5 * v * rng.next_f32()];
+            }
+            batch.push(site, draws, per_site as usize);
+            if p.leaf_years > 0.0 {
+                let wood = stem.born + (stem.tip_year - stem.born) * t;
+                let keep = skeleton.age - wood <= p.leaf_years;
+                recent.extend(std::iter::repeat_n(keep, per_site as usize));
+            }
+            if batch.full() {
+                batch.flush(&mut matrices, &mut colors, season.as_mut());
             }
         }
     }
+    batch.flush(&mut matrices, &mut colors, season.as_mut());
     if recent.contains(&false) {
         keep_recent(&recent, &mut matrices, &mut colors);
         if let Some(s) = season.as_mut() {
@@ -393,6 +347,64 @@ fn keep_recent(recent: &[bool], matrices: &mut Vec<f32>, colors: &mut Vec<f32>) 
     }
     matrices.truncate(n * 16);
     colors.truncate(n * 3);
+}
+
+/// What every leaf's shape reads: leaves per site, the Foliage Angle's cosine and sine, the
+/// preview's enlargement and the parameters.
+struct Shape<'a> {
+    per_site: usize,
+    angle: (f32, f32),
+    enlarge: f32,
+    p: &'a FoliageParams,
+}
+
+/// Up to [`LANES`] sites waiting for their geometry ([`frames`]), with their leaves' random
+/// numbers (size, brightness, yellowing; `per_site` a site), already drawn in the stream's order.
+struct Batch<'a> {
+    shape: Shape<'a>,
+    sites: [Site; LANES],
+    draws: [[f32; 3]; 3 * LANES],
+    n: usize,
+}
+
+impl<'a> Batch<'a> {
+    fn new(shape: Shape<'a>) -> Batch<'a> {
+        Batch { shape, sites: [Site::default(); LANES], draws: [[0.0; 3]; 3 * LANES], n: 0 }
+    }
+
+    fn push(&mut self, site: Site, draws: [[f32; 3]; 3], per_site: usize) {
+        self.sites[self.n] = site;
+        self.draws[self.n * per_site..(self.n + 1) * per_site].copy_from_slice(&draws[..per_site]);
+        self.n += 1;
+    }
+
+    fn full(&self) -> bool {
+        self.n == LANES
+    }
+
+    /// Writes the waiting sites' leaves (matrices, tints, the season's record), in order.
+    fn flush(&mut self, matrices: &mut Vec<f32>, colors: &mut Vec<f32>, mut season: Option<&mut crate::season::Sites>) {
+        let Shape { per_site, angle, enlarge, p } = self.shape;
+        let sites = &self.sites[..self.n];
+        let frames = frames::leaf_frames(sites, angle);
+        let mut dirs = [Vec3::ZERO; 3 * LANES];
+        frames::twig_dirs(&frames[..self.n], per_site, &mut dirs);
+        let m = self.n * per_site;
+        let mut fronts = [Vec3::ZERO; 3 * LANES];
+        frames::lower_and_face_up(&mut dirs[..m], &mut fronts[..m]);
+        for (k, ((&d, &front), &[s, b, yellow])) in dirs.iter().zip(&fronts).zip(&self.draws).take(m).enumerate() {
+            let pos = frames[k / per_site].0;
+            let len = p.foliage_scale * s * enlarge;
+            // The petiole (leaf y from -Petiole Length to 0) starts on the stem.
+            let base = pos + d * (len * p.leaf_petiole);
+            frames::push_matrix(matrices, base, d, front, len, len * p.foliage_scale_x);
+            if let Some(s) = season.as_deref_mut() {
+                s.leaf(pos);
+            }
+            colors.extend_from_slice(&[b * (1.0 + yellow), b * (1.0 + 0.4 * yellow), b * (1.0 - yellow)]);
+        }
+        self.n = 0;
+    }
 }
 
 /// The leaf stage: the leaf of the Leaf parameters (generated once per leaf shape, see

@@ -11,11 +11,27 @@ pub const MAX_THREADS: usize = 8;
 
 /// Threads worth using on this machine: its available parallelism (at most [`MAX_THREADS`]);
 /// 1 in wasm.
+/// 1 in wasm, and inside [`serial`].
 pub fn threads() -> usize {
-    if cfg!(target_arch = "wasm32") {
+    if cfg!(target_arch = "wasm32") || SERIAL.with(std::cell::Cell::get) {
         return 1;
     }
     std::thread::available_parallelism().map_or(1, |n| n.get()).min(MAX_THREADS)
+}
+
+thread_local! {
+    /// Set on this thread by [`serial`].
+    static SERIAL: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` with [`threads()`] at 1 on this thread: for callers that already keep every core
+/// busy with work of their own (`sylva batch` generates one tree per core), so the writers
+/// inside do not start threads of their own on top.
+pub fn serial<R>(f: impl FnOnce() -> R) -> R {
+    let before = SERIAL.with(|s| s.replace(true));
+    let r = f();
+    SERIAL.with(|s| s.set(before));
+    r
 }
 
 /// Runs `work` on every job, on up to `threads` threads: each thread takes the next job of the

@@ -14,6 +14,7 @@
 use super::holes::Hole;
 use super::TreeMesh;
 use crate::crown_shade::CrownLight;
+use crate::math::HwSqrt;
 use glam::Vec3;
 
 /// Light left at the bottom of a cavity.
@@ -24,8 +25,12 @@ pub const CAVITY_FLOOR: f32 = 0.06;
 pub fn cavity_light(hole: &Hole, stem_radius: f32, p: Vec3) -> f32 {
     let rel = p - hole.centre;
     let below = -rel.dot(hole.normal);
-    let lateral = (rel + hole.normal * below).length();
-    if lateral > 1.6 * hole.radius || below <= 0.0 {
+    // Above the opening's plane (half the bark): no need for the lateral distance.
+    if below <= 0.0 {
+        return 1.0;
+    }
+    let lateral = (rel + hole.normal * below).length_hw();
+    if lateral > 1.6 * hole.radius {
         return 1.0;
     }
     // The stem's surface curves away from the opening's plane: depth below it, not the plane.
@@ -45,17 +50,38 @@ pub fn occlusion(mesh: &TreeMesh, holes: &[Hole], leaf_matrices: &[f32], hole_si
     occlusion_with(mesh, holes, CrownLight::from_leaves(leaf_matrices).as_ref(), hole_size)
 }
 
-/// [`occlusion`] with the leaves' light field already built (`None`: no leaves).
+/// [`occlusion`] with the leaves' light field already built (`None`: no leaves). Natively a
+/// large bark is shared between the machine's cores ([`crate::par`]): every vertex's value
+/// depends on that vertex alone, so the bytes are the same on any number of threads.
 pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight>, hole_size: f32) -> Vec<u8> {
-    mesh.positions
-        .chunks_exact(3)
-        .map(|p| {
-            let p = Vec3::new(p[0], p[1], p[2]);
-            let mut light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
-            for h in holes {
-                light *= cavity_light(h, h.radius / hole_size.max(1e-3), p);
-            }
-            (light.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
-        })
-        .collect()
+    let n = mesh.positions.len() / 3;
+    let threads = if n >= PARALLEL_VERTICES { crate::par::threads() } else { 1 };
+    let mut out = vec![0u8; n];
+    let mut jobs = Vec::new();
+    let mut rest = out.as_mut_slice();
+    for r in crate::par::ranges(n, threads * 4) {
+        let (part, tail) = rest.split_at_mut(r.len());
+        jobs.push((r, part));
+        rest = tail;
+    }
+    crate::par::run(jobs, threads, |(r, part)| {
+        let positions = &mesh.positions[r.start * 3..r.end * 3];
+        for (p, o) in positions.chunks_exact(3).zip(part) {
+            *o = vertex_light(Vec3::new(p[0], p[1], p[2]), holes, crown, hole_size);
+        }
+    });
+    out
+}
+
+/// Barks of at least this many vertices are shaded on every core (natively).
+const PARALLEL_VERTICES: usize = 1 << 16;
+
+/// One vertex's occlusion byte (see [`occlusion_with`]).
+#[inline]
+fn vertex_light(p: Vec3, holes: &[Hole], crown: Option<&CrownLight>, hole_size: f32) -> u8 {
+    let mut light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
+    for h in holes {
+        light *= cavity_light(h, h.radius / hole_size.max(1e-3), p);
+    }
+    (light.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
