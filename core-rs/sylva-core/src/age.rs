@@ -5,7 +5,8 @@
 //! stem gets a birth year and grows from it along a growth curve, so a young tree is the mature
 //! tree's own earlier self and grows smoothly into it. At Age = Mature Age nothing changes (every
 //! preset's default Age is its Mature Age, so every tree is today's, byte for byte); past it the
-//! tree keeps its mature form (decades of shedding, bending and thickening are not replayed).
+//! tree keeps its mature form, changed only by the life over decades of [`crate::life`]
+//! (shedding, thickening, drooping).
 //!
 //! **Birth years.** The trunk is born in year 0. A branch is born the year after the stem it
 //! grows on has reached the branch's attachment point ([`BUD_DELAY`]: its bud opens the next
