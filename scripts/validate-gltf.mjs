@@ -18,7 +18,7 @@
 //
 // Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
 // `to_glb_file`) write the same bytes as the native one (default tree, with and without the cut,
-// both leaf modes and strict).
+// both leaf modes and strict), and `to_growth_glb_file` the same growth GLB.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -214,6 +214,23 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
     }
     tree.free();
   }
+  // The growth animation (`to_growth_glb_file`) is the CLI's `--growth-animation` file.
+  const tree = wasm.generate('{}');
+  if (typeof tree.to_growth_glb_file === 'function') {
+    const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
+    execFileSync(sylva, ['generate', '--growth-animation', '--out', file], { stdio: 'ignore' });
+    const native = readFileSync(file);
+    rmSync(file);
+    const glb = tree.to_growth_glb_file('{}', 40, 40);
+    const same =
+      Buffer.compare(native, Buffer.from(glb.memory().buffer, glb.ptr(), glb.byte_length())) === 0;
+    glb.free();
+    if (!same) failed++;
+    console.log(
+      `wasm parity (default, growth): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${native.length} bytes)`,
+    );
+  }
+  tree.free();
 }
 if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 

@@ -39,7 +39,7 @@ pub fn key_years(age: f32, mature: f32) -> Vec<f32> {
     let grown = age.min(mature);
     let mut years = vec![0.0];
     for k in 1..KEYS - 1 {
-        let y = (grown * (k as f32 / (KEYS - 1) as f32).powf(KEY_POWER)).round();
+        let y = (grown * crate::math::pow(k as f32 / (KEYS - 1) as f32, KEY_POWER)).round();
         if y > years[years.len() - 1] && y < grown {
             years.push(y);
         }
