@@ -6,6 +6,9 @@
 #                             module, from PyPI; scripts/setup.sh --test)
 #   scripts/blender.sh test   the zip installed into a headless Blender by its extension
 #                             installer, then blender/tests/test_addon.py against the CLI
+#   scripts/blender.sh growth the growth-animation GLB (`sylva generate --growth-animation`)
+#                             imported by Blender's glTF importer: shape keys and an action
+#                             (blender/tests/test_growth.py; SYLVA_RENDER_DIR=dir renders frames)
 # The wheel is rebuilt when a source is newer (scripts/python.sh), the zip when the wheel or an
 # add-on file is newer than it, the venv when its pinned bpy changes: unchanged, each takes a moment.
 set -euo pipefail
@@ -13,7 +16,7 @@ cd "$(dirname "$0")/.."
 step() { printf '\033[1;32m[blender]\033[0m %s\n' "$*"; }
 die() { printf '\033[1;31m[blender] error:\033[0m %s\n' "$*" >&2; exit 1; }
 what=${1:-zip}
-case "$what" in zip | venv | test) ;; *) die "usage: scripts/blender.sh zip|venv|test" ;; esac
+case "$what" in zip | venv | test | growth) ;; *) die "usage: scripts/blender.sh zip|venv|test|growth" ;; esac
 
 # bpy 4.5 LTS is the newest bpy for CPython 3.11 (bpy 5.0 needs 3.13).
 BPY='bpy==4.5.*'
@@ -64,5 +67,11 @@ case "$what" in
     step "install $zip into a headless Blender; add, edit and share a tree"
     SYLVA_CLI="$PWD/${CARGO_TARGET_DIR:-target}/release/sylva" SYLVA_BLENDER_ZIP="$PWD/$zip" \
       "$VENV/bin/python" blender/tests/test_addon.py
+    ;;
+  growth)
+    venv
+    cargo build --quiet --release -p sylva-cli
+    step "the growth-animation GLB in Blender's glTF importer: shape keys and an action"
+    SYLVA_CLI="$PWD/${CARGO_TARGET_DIR:-target}/release/sylva" "$VENV/bin/python" blender/tests/test_growth.py
     ;;
 esac

@@ -14,6 +14,8 @@ step "Python: the sylva-trees wheel against the CLI (pytest; the wheel is rebuil
 bash scripts/python.sh test
 step "Blender: the add-on zip installed into headless Blender; add, edit and share a tree (zip rebuilt only when changed)"
 bash scripts/blender.sh test
+step "Blender: the growth-animation GLB imports with shape keys and an action"
+bash scripts/blender.sh growth
 step "glTF: every preset's GLB (instanced, baked and strict) through the Khronos validator"
 node scripts/validate-gltf.mjs
 step "Godot: the strict GLB imports into godot3-server (installed by setup.sh --test)"

@@ -8,14 +8,17 @@
 // Infos are expected for instanced leaves: the validator does not implement
 // EXT_mesh_gpu_instancing, says so (UNSUPPORTED_EXTENSION) and sees its accessors as unused.
 //
-// The default tree's levels-of-detail GLB (`--lods`), default and strict, passes the same way.
+// The default tree's levels-of-detail GLB (`--lods`), default and strict, passes the same way,
+// and so do the growth-animation GLBs (`--growth-animation`: morph targets and an animation) of
+// the default tree and of one grown preset (grown_broadleaf), which must hold one animation
+// whose last key time is the tree's Age.
 //
 // Also the default tree with a main branch cut (`--edits`, [`CUT`]): its GLB has the third
 // material, `cut_face` (the end grain).
 //
 // Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
 // `to_glb_file`) write the same bytes as the native one (default tree, with and without the cut,
-// both leaf modes and strict).
+// both leaf modes and strict), and `to_growth_glb_file` the same growth GLB.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -130,6 +133,42 @@ if (only.length === 0 || only.includes('default')) {
   }
 }
 
+// The growth animation: the default tree (Age 40) and a grown preset (grown_broadleaf, Age 35).
+let growthFiles = 0;
+for (const [name, age] of [
+  ['default', 40],
+  ['grown_broadleaf', 35],
+]) {
+  if (only.length > 0 && !only.includes(name)) continue;
+  const file = join(dir, `${name}-growth.glb`);
+  execFileSync(sylva, ['generate', '--preset', name, '--growth-animation', '--out', file], {
+    stdio: 'ignore',
+  });
+  const bytes = new Uint8Array(readFileSync(file));
+  if (keepAt < 0) rmSync(file);
+  const report = await validateBytes(bytes, { maxIssues: 100 });
+  const { numErrors, numWarnings, numInfos } = report.issues;
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const json = JSON.parse(
+    new TextDecoder().decode(bytes.subarray(20, 20 + view.getUint32(12, true))),
+  );
+  const input = json.animations?.[0]?.samplers?.[0]?.input;
+  const end = input === undefined ? undefined : json.accessors[input].max[0];
+  const bad =
+    numErrors > 0 || numWarnings > 0 || json.animations?.length !== 1 || Math.abs(end - age) > 1e-4;
+  if (bad) failed++;
+  warnings += numWarnings;
+  growthFiles++;
+  console.log(
+    `${name.padEnd(19)} ${'growth'.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
+      (bad ? `  FAIL (animation ends at ${end}, Age ${age})` : ''),
+  );
+  for (const m of report.issues.messages) {
+    if (m.severity <= 1)
+      console.log(`    ${m.severity ? 'warning' : 'error'} ${m.code}: ${m.message}`);
+  }
+}
+
 // Native and wasm exporters write identical bytes (standing rule: same output on every target).
 const glue = new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url);
 if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
@@ -175,10 +214,27 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
     }
     tree.free();
   }
+  // The growth animation (`to_growth_glb_file`) is the CLI's `--growth-animation` file.
+  const tree = wasm.generate('{}');
+  if (typeof tree.to_growth_glb_file === 'function') {
+    const file = join(tmpdir(), `sylva-parity-${process.pid}.glb`);
+    execFileSync(sylva, ['generate', '--growth-animation', '--out', file], { stdio: 'ignore' });
+    const native = readFileSync(file);
+    rmSync(file);
+    const glb = tree.to_growth_glb_file('{}', 40, 40);
+    const same =
+      Buffer.compare(native, Buffer.from(glb.memory().buffer, glb.ptr(), glb.byte_length())) === 0;
+    glb.free();
+    if (!same) failed++;
+    console.log(
+      `wasm parity (default, growth): ${same ? 'same bytes' : 'DIFFERENT BYTES'} (${native.length} bytes)`,
+    );
+  }
+  tree.free();
 }
 if (keepAt < 0) rmSync(dir, { recursive: true, force: true });
 
 console.log(
-  `${trees.length * MODES.length + lodFiles} files, ${failed} failed, ${warnings} warnings`,
+  `${trees.length * MODES.length + lodFiles + growthFiles} files, ${failed} failed, ${warnings} warnings`,
 );
 process.exit(failed ? 1 : 0);

@@ -217,6 +217,14 @@ pub struct GenerateArgs {
     /// FILE_LOD0, FILE_LOD1, FILE_LOD2 and the screen-size thresholds in extras
     #[arg(long, requires = "out")]
     pub lods: bool,
+    /// With `--out FILE.glb`: the GLB with its growth animation, year 0 to the Age at one second a
+    /// year (morph targets between key years, leaves baked; docs/formats.md, Growth animation)
+    #[arg(long, requires = "out", conflicts_with = "lods")]
+    pub growth_animation: bool,
+    /// Also write the growth as a zip of one GLB per whole year up to the Age (year_001.glb, ...),
+    /// each the tree generated at that Age with the export options
+    #[arg(long, value_name = "FILE.zip")]
+    pub growth_years: Option<String>,
     /// The export options.
     #[command(flatten)]
     pub export: ExportArgs,
@@ -320,6 +328,7 @@ pub const EXAMPLES: &[(&str, &[&str])] = &[
         &[
             "sylva generate --preset quaking_aspen --seed 7 --set levels=3 --out aspen.glb",
             "sylva generate --preset fir --seed 7 --out fir.obj",
+            "sylva generate --age 40 --growth-animation --out growing.glb --growth-years years.zip",
             "sylva generate --preset oak --set hole_count=3 --report mesh",
         ],
     ),

@@ -190,7 +190,7 @@ mod tests {
         assert_eq!(
             synopsis(generate),
             "sylva generate [--preset NAME] [--seed N] [--age YEARS] [--set id=value]... [--volumes FILE.json] \
-             [--edits FILE.json] [--out FILE.glb|FILE.obj] [--lods] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
+             [--edits FILE.json] [--out FILE.glb|FILE.obj] [--lods] [--growth-animation] [--growth-years FILE.zip] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
              [--no-wind] [--strict] [--report skeleton|mesh]..."
         );
         let envelope = cmd.find_subcommand("envelope").expect("envelope");

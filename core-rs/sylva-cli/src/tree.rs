@@ -34,11 +34,27 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
             let files = write_lods(&l, &export_options(&a.export), path)?;
             (l.lod0, Some(files))
         }
+        Some(path) if a.growth_animation => {
+            let files = write_growth(&g, &params, &export_options(&a.export), path)?;
+            (g, Some(files))
+        }
         Some(path) => {
             let files = write_export(&g, &export_options(&a.export), path)?;
             (g, Some(files))
         }
         None => (g, None),
+    };
+    let written = match &a.growth_years {
+        Some(path) => {
+            if !path.to_ascii_lowercase().ends_with(".zip") {
+                return Err(format!("--growth-years: the file must end in .zip, got '{path}'"));
+            }
+            let bytes = sylva_core::export::growth::years_zip(&params, &export_options(&a.export))
+                .map_err(|e| format!("--growth-years: {e}"))?;
+            std::fs::write(path, &bytes).map_err(|e| format!("cannot write {path}: {e}"))?;
+            Some(written.unwrap_or_default().into_iter().chain([(path.clone(), bytes.len())]).collect())
+        }
+        None => written,
     };
     let ms: serde_json::Map<String, serde_json::Value> =
         g.stats.stage_ms.iter().map(|(k, v)| (k.to_string(), serde_json::json!(v))).collect();
@@ -117,6 +133,22 @@ fn write_lods(
     let p = std::path::Path::new(path);
     let stem = p.file_stem().and_then(|s| s.to_str()).unwrap_or("tree");
     let bytes = sylva_core::export::lods_glb(l, export, stem);
+    std::fs::write(path, &bytes).map_err(|e| format!("cannot write {path}: {e}"))?;
+    Ok(vec![(path.to_string(), bytes.len())])
+}
+
+/// Writes `g` (generated from `params`) to `path` as the GLB with its growth animation
+/// ([`sylva_core::export::glb::write_growth`]); returns `[file, bytes]`.
+fn write_growth(
+    g: &sylva_core::Generated,
+    params: &sylva_core::TreeParams,
+    export: &ExportOptions,
+    path: &str,
+) -> Result<Vec<(String, usize)>, String> {
+    if !path.to_ascii_lowercase().ends_with(".glb") {
+        return Err(format!("--growth-animation: the file must end in .glb, got '{path}'"));
+    }
+    let bytes = sylva_core::export::glb::write_growth(g, export, params.skeleton.age, params.skeleton.maturity);
     std::fs::write(path, &bytes).map_err(|e| format!("cannot write {path}: {e}"))?;
     Ok(vec![(path.to_string(), bytes.len())])
 }

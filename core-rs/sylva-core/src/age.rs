@@ -44,7 +44,7 @@ pub const BUD_DELAY: f32 = 1.0;
 /// Fewest years a stem grows before the Mature Age.
 pub const MIN_GROWING: f32 = 1.0;
 /// Shortest chain length divided by (m).
-const MIN_LENGTH: f32 = 1e-3;
+pub const MIN_LENGTH: f32 = 1e-3;
 /// A young stem shorter than this is still a bud: not drawn (m; four of the thinnest radius, so
 /// a just-born stem is never a stub as wide as it is long).
 pub const MIN_SHOOT: f32 = 4.0 * MIN_RADIUS;
@@ -89,16 +89,22 @@ pub fn birth_years(skeleton: &Skeleton, mature: f32) -> Vec<f32> {
             (StemKind::SplitClone, Some(p)) => birth[p as usize],
             (_, Some(p)) => {
                 let parent = &skeleton.stems[p as usize];
-                let bp = birth[p as usize];
                 // The attachment point as a fraction of the parent's whole chain.
                 let along = parent.chain_start + s.offset / parent.chain_length.max(MIN_LENGTH);
-                let reached = bp + (mature - bp) * time_to_length(along);
-                (reached + BUD_DELAY).min((mature - MIN_GROWING).max(reached))
+                bud_birth(birth[p as usize], along, mature)
             }
         };
         birth.push(b);
     }
     birth
+}
+
+/// The birth year of a branch whose bud sits at fraction `along` of its parent's whole chain, the
+/// parent's chain born in year `parent_birth`: the year after the parent reached it, at the
+/// latest [`MIN_GROWING`] years before `mature`.
+pub fn bud_birth(parent_birth: f32, along: f32, mature: f32) -> f32 {
+    let reached = parent_birth + (mature - parent_birth) * time_to_length(along);
+    (reached + BUD_DELAY).min((mature - MIN_GROWING).max(reached))
 }
 
 /// Dates the wood of `skeleton`, built as it is at age `mature`: each record's

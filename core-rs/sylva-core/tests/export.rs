@@ -558,3 +558,7 @@ mod strict;
 
 #[path = "export/lods.rs"]
 mod lods;
+
+/// The growth animation GLB and the zip of one GLB per year.
+#[path = "export/growth.rs"]
+mod growth;

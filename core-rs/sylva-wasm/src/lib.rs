@@ -188,6 +188,14 @@ impl GeneratedTree {
         let opts = export_options(options_json)?;
         Ok(GlbFile(sylva_core::export::to_glb(&self.0, &opts)))
     }
+    /// The GLB with the tree's growth animation (`sylva_core::export::glb::write_growth`,
+    /// docs/formats.md "Growth animation"), for a tree generated at Age `age` with Mature Age
+    /// `maturity` (the `age` and `maturity` values it was generated with), left in the module's
+    /// memory as [`GeneratedTree::to_glb_file`]'s. Leaves are baked; the other options as there.
+    pub fn to_growth_glb_file(&self, options_json: &str, age: f32, maturity: f32) -> Result<GlbFile, JsValue> {
+        let opts = export_options(options_json)?;
+        Ok(GlbFile(sylva_core::export::glb::write_growth(&self.0, &opts, age, maturity)))
+    }
     /// The tree as Wavefront OBJ text (bark and baked leaves; `mtllib NAME.mtl`, see
     /// `sylva_core::export::obj`). `name` is the file stem the OBJ refers to.
     pub fn to_obj(&self, name: &str, options_json: &str) -> Result<String, JsValue> {
@@ -234,6 +242,17 @@ impl GlbFile {
 
 fn export_options(json: &str) -> Result<sylva_core::export::ExportOptions, JsValue> {
     sylva_core::export::ExportOptions::from_json(json).map_err(|e| JsValue::from_str(&e.to_json()))
+}
+
+/// The growth as a zip of one GLB per whole year up to the Age of `params_json` (as for
+/// [`generate`]), each the tree generated at that Age and written with `options_json` (as for
+/// [`GeneratedTree::to_glb`]): `sylva_core::export::growth::years_zip`, the bytes `sylva generate
+/// --growth-years` writes. Throws a JSON `SylvaError` string.
+#[wasm_bindgen]
+pub fn growth_years_zip(params_json: &str, options_json: &str) -> Result<Vec<u8>, JsValue> {
+    let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
+    let opts = export_options(options_json)?;
+    sylva_core::export::growth::years_zip(&params, &opts).map_err(|e| JsValue::from_str(&e.to_json()))
 }
 
 /// Generate a tree from a JSON object of parameter values (`{"id": number}`); missing ids take

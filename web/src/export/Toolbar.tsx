@@ -1,7 +1,8 @@
 /**
  * The viewer toolbar: Export menu (PNG screenshot, preset JSON save/load and, when the core has
- * exporters, a GLB for engines, a GLB for editors and a zipped OBJ, each with a line saying when
- * to choose it), "Copy embed code" and a link to the docs page.
+ * exporters, a GLB for engines, a GLB for editors, a GLB for strict importers, a zipped OBJ, the
+ * GLB with the growth animation and a zip of one GLB per year, each with a line saying when to
+ * choose it), "Copy embed code" and a link to the docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { Edit, Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
@@ -83,6 +84,18 @@ export const MESH_EXPORTS: readonly MeshExport[] = [
     label: 'OBJ + MTL + textures (zip)',
     hint: 'For tools without glTF (and Godot): leaves merged, no wind data.',
   },
+  {
+    testId: 'export-glb-growth',
+    format: 'glb-growth',
+    label: 'GLB with growth animation',
+    hint: 'The tree growing from year 0 to its Age (one second a year): morph targets, leaves merged; plays in Blender and three.js.',
+  },
+  {
+    testId: 'export-glb-years',
+    format: 'glb-years',
+    label: 'GLB per year (zip)',
+    hint: 'For tools without glTF animation: the tree at every whole year up to its Age, one GLB each.',
+  },
 ];
 
 /** Downloads an export's one file: the GLB, or the ZIP of the OBJ, its MTL and its textures. */
@@ -91,7 +104,8 @@ function saveExported(response: ExportResponse, format: ExportFormat, report: (s
   if (!file) throw new Error('the exporter returned no file');
   const blob = 'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
   downloadBlob(blob, file.name);
-  const contents = format === 'obj' ? ' (OBJ, MTL and textures)' : '';
+  const contents =
+    format === 'obj' ? ' (OBJ, MTL and textures)' : format === 'glb-years' ? ' (a GLB per year)' : '';
   report({ kind: 'ok', text: `Saved ${file.name}${contents}.` });
 }
 

@@ -24,6 +24,7 @@
 mod bake;
 mod frames;
 pub mod glb;
+pub mod growth;
 mod lods;
 pub mod obj;
 mod options;
@@ -31,6 +32,7 @@ pub mod png;
 mod quant;
 mod textures;
 mod tint;
+pub mod zip;
 
 pub use bake::{
     bake_leaves, bake_leaves_scaled, decompose, decompose_rotation, decompose_scale, scale_texels, tint_scale,

@@ -31,7 +31,8 @@ const CRC_TABLE: [u32; 256] = {
     t
 };
 
-fn crc32(parts: &[&[u8]]) -> u32 {
+/// CRC-32 (ISO 3309, the one PNG and zip use) of `parts` one after the other.
+pub(crate) fn crc32(parts: &[&[u8]]) -> u32 {
     let mut c = 0xffff_ffffu32;
     for p in parts {
         for &b in *p {

@@ -7,7 +7,13 @@ import type { WasmApi } from '../core/types';
 import { createHandler } from '../worker/handler';
 import type { WorkerResponse } from '../worker/protocol';
 import { ExportClient } from './exportClient';
-import { exportFiles, exportFormatsOf, fileStem, type ExportableTree } from './exportHandler';
+import {
+  exportFiles,
+  exportFormatsOf,
+  fileStem,
+  type CoreFile,
+  type ExportableTree,
+} from './exportHandler';
 import { zipFiles } from './zip';
 
 /**
@@ -79,7 +85,7 @@ describe('export feature check', () => {
   it('lists only the exporters the GeneratedTree class has', () => {
     expect(exportFormatsOf({})).toEqual([]);
     expect(exportFormatsOf({ GeneratedTree: { prototype: { to_glb() {} } } })).toEqual(['glb']);
-    expect(exportFormatsOf(loadWasm())).toEqual(['glb', 'obj']);
+    expect(exportFormatsOf(loadWasm())).toEqual(['glb', 'obj', 'glb-growth', 'glb-years']);
   });
 
   it('file stems are plain names', () => {
@@ -143,6 +149,52 @@ describe('export request (worker handler, real core)', () => {
       'KHR_mesh_quantization',
     ]);
     tree.free();
+  });
+
+  it("growth GLB: the core's growth animation from year 0 to the Age, leaves baked", async () => {
+    const { sent, handle } = harness();
+    const params = { ...SMALL, age: 12, maturity: 30 };
+    handle({ type: 'export', id: 7, params, format: 'glb-growth', name: 'oak' });
+    const [file] = exported(sent).files;
+    if (!file || !('blob' in file)) throw new Error('a GLB comes as a Blob');
+    expect(file.name).toBe('oak-growth.glb');
+    const bytes = new Uint8Array(await file.blob.arrayBuffer());
+    const json = glbJson(bytes) as {
+      animations: { samplers: { input: number }[]; channels: unknown[] }[];
+      accessors: { max?: number[] }[];
+      nodes: { name: string; extensions?: unknown }[];
+    };
+    expect(json.animations).toHaveLength(1);
+    const input = json.animations[0]?.samplers[0]?.input ?? -1;
+    expect(json.accessors[input]?.max).toEqual([12]);
+    expect(json.animations[0]?.channels).toHaveLength(2);
+    expect(json.nodes.find((n) => n.name === 'leaves')?.extensions).toBeUndefined();
+    const tree = loadWasm().generate(JSON.stringify(params)) as ExportableTree & {
+      to_growth_glb_file(o: string, age: number, maturity: number): CoreFile;
+    };
+    const core = tree.to_growth_glb_file(JSON.stringify({ leaves: 'baked' }), 12, 30);
+    const copy = new Uint8Array(core.memory().buffer, core.ptr(), core.byte_length()).slice();
+    core.free();
+    tree.free();
+    expect(Buffer.compare(bytes, copy)).toBe(0);
+  });
+
+  it('growth years: a zip of one GLB per whole year, each the tree at that Age', () => {
+    const { sent, handle } = collect(loadWasm());
+    const params = { ...SMALL, age: 3 };
+    handle({ type: 'export', id: 8, params, format: 'glb-years', name: 'oak' });
+    const [zip] = exported(sent).files;
+    if (!zip || !('bytes' in zip)) throw new Error('a ZIP comes as bytes');
+    expect(zip.name).toBe('oak-years.zip');
+    const files = unzipSync(zip.bytes);
+    expect(Object.keys(files)).toEqual(['year_001.glb', 'year_002.glb', 'year_003.glb']);
+    for (const age of [1, 2, 3]) {
+      const tree = loadWasm().generate(JSON.stringify({ ...params, age })) as ExportableTree;
+      const glb = tree.to_glb?.(JSON.stringify({ leaves: 'baked' }));
+      tree.free();
+      const name = `year_00${age}.glb`;
+      expect(glb && Buffer.compare(files[name] ?? new Uint8Array(0), glb)).toBe(0);
+    }
   });
 
   it('GLB from a core with only the copying exporter: bytes transferred', () => {
@@ -223,7 +275,7 @@ describe('ExportClient', () => {
         terminate: () => stopped++,
       };
     });
-    expect(await client.formats()).toEqual(['glb', 'obj']);
+    expect(await client.formats()).toEqual(['glb', 'obj', 'glb-growth', 'glb-years']);
     const response = await client.export({ seed: 2 }, [], 'glb');
     const [glb] = response.files;
     const bytes = glb && 'blob' in glb ? new Uint8Array(await glb.blob.arrayBuffer()) : null;

@@ -24,6 +24,7 @@ export interface CoreFile {
 /** A generated tree with the (optional: older cores and fakes lack them) exporters. */
 export type ExportableTree = WasmTree & {
   to_glb_file?(optionsJson: string): CoreFile;
+  to_growth_glb_file?(optionsJson: string, age: number, maturity: number): CoreFile;
   to_glb?(optionsJson: string): Uint8Array;
   to_obj?(name: string, optionsJson: string): string;
   to_mtl?(name: string, optionsJson: string): string;
@@ -41,7 +42,61 @@ export function exportFormatsOf(wasm: object): ExportFormat[] {
   const formats: ExportFormat[] = [];
   if (has('to_glb_file') || has('to_glb')) formats.push('glb');
   if (has('to_obj') && has('to_mtl')) formats.push('obj');
+  if (has('to_growth_glb_file')) formats.push('glb-growth');
+  if (typeof (wasm as YearsApi).growth_years_zip === 'function') formats.push('glb-years');
   return formats;
+}
+
+/** The core's zip of one GLB per year (optional: older cores and fakes lack it). */
+interface YearsApi {
+  growth_years_zip?(paramsJson: string, optionsJson: string): Uint8Array;
+}
+
+/**
+ * A GLB left in the core's memory, read into a Blob at once (before the module could grow its
+ * memory), then freed.
+ */
+function coreBlob(glb: CoreFile, mime: string): Blob {
+  try {
+    return new Blob([new Uint8Array(glb.memory().buffer, glb.ptr(), glb.byte_length())], {
+      type: mime,
+    });
+  } finally {
+    glb.free();
+  }
+}
+
+/**
+ * The growth exports: the GLB with the growth animation of `tree` (generated from `params`), or
+ * the zip of one GLB per year, which the core generates year by year from `input` (the core's
+ * generate JSON). Leaves baked in both (the animation cannot morph instances; the years zip is
+ * for editors too). Throws when the core lacks the exporter.
+ */
+export function growthFiles(
+  wasm: object,
+  tree: ExportableTree,
+  format: 'glb-growth' | 'glb-years',
+  input: object,
+  params: { age?: number; maturity?: number },
+  name?: string,
+): ExportedFile[] {
+  const options = JSON.stringify({ leaves: 'baked' });
+  if (format === 'glb-years') {
+    const api = wasm as YearsApi;
+    if (typeof api.growth_years_zip !== 'function') {
+      throw new Error('This Sylva core has no growth exporter.');
+    }
+    const bytes = api.growth_years_zip(JSON.stringify(input), options);
+    return [{ name: `${fileStem(name)}-years.zip`, mime: 'application/zip', bytes }];
+  }
+  if (typeof tree.to_growth_glb_file !== 'function') {
+    throw new Error('This Sylva core has no growth exporter.');
+  }
+  const mime = 'model/gltf-binary';
+  // Absent values are the registry's defaults, as the core took them (Age 40, Mature Age 40).
+  const { age = 40, maturity = 40 } = params;
+  const blob = coreBlob(tree.to_growth_glb_file(options, age, maturity), mime);
+  return [{ name: `${fileStem(name)}-growth.glb`, mime, blob }];
 }
 
 /** A safe file stem (letters, digits, `_`, `-`; at most 64), `tree` when nothing is left. */
@@ -72,14 +127,7 @@ export function exportFiles(
     const stem = `${fileStem(name)}${strict ? '-strict' : ''}`;
     const file = { name: `${stem}.glb`, mime: 'model/gltf-binary' };
     if (typeof tree.to_glb_file === 'function') {
-      const glb = tree.to_glb_file(options);
-      try {
-        // The view is read at once (into the Blob), before the module could grow its memory.
-        const view = new Uint8Array(glb.memory().buffer, glb.ptr(), glb.byte_length());
-        return [{ ...file, blob: new Blob([view], { type: file.mime }) }];
-      } finally {
-        glb.free();
-      }
+      return [{ ...file, blob: coreBlob(tree.to_glb_file(options), file.mime) }];
     }
     if (typeof tree.to_glb !== 'function') throw new Error('This Sylva core has no GLB exporter.');
     return [{ ...file, bytes: tree.to_glb(options) }];
@@ -126,13 +174,11 @@ export function exportTree(
   const tree: ExportableTree = wasm.generate(JSON.stringify(input));
   try {
     const { hash } = parseMeta(tree.meta_json());
-    const exported = exportFiles(
-      tree,
-      request.format,
-      request.leaves,
-      request.name,
-      request.strict,
-    );
+    const format = request.format;
+    const exported =
+      format === 'glb-growth' || format === 'glb-years'
+        ? growthFiles(wasm, tree, format, input, request.params, request.name)
+        : exportFiles(tree, format, request.leaves, request.name, request.strict);
     const files = request.format === 'obj' ? [objArchive(exported, request.name)] : exported;
     post(
       { type: 'exported', id: request.id, format: request.format, hash, files },

@@ -6,8 +6,12 @@
 import type { Edit } from '../core/edits';
 import type { Params, VolumePrimitive } from '../core/types';
 
-/** File formats the core may export. */
-export type ExportFormat = 'glb' | 'obj';
+/**
+ * File formats the core may export: a GLB, a zipped OBJ, the GLB with the growth animation
+ * (`glb-growth`: morph targets from year 0 to the Age, leaves baked; docs/formats.md "Growth
+ * animation") and the growth as a zip of one GLB per whole year (`glb-years`).
+ */
+export type ExportFormat = 'glb' | 'obj' | 'glb-growth' | 'glb-years';
 
 /**
  * How leaves go into a GLB: one leaf mesh instanced per leaf (`EXT_mesh_gpu_instancing`, for
@@ -46,8 +50,9 @@ export type ExportedFile = { name: string; mime: string } & (
 );
 
 /**
- * The exported files of request `id`, with the tree's content hash: one GLB, or for an OBJ one
- * ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and the textures the MTL names.
+ * The exported files of request `id`, with the tree's content hash: one GLB (`NAME-growth.glb`
+ * for the growth animation), for an OBJ one ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and
+ * the textures the MTL names, or for the years one ZIP (`NAME-years.zip`) of `year_001.glb`, ...
  */
 export interface ExportResponse {
   type: 'exported';

@@ -159,7 +159,7 @@ fn stem_key(pivot: &[f32], level: f32) -> (u64, u64) {
 /// Where a leaf with instance matrix `m` (column-major 4×4, leaf units to metres) meets its
 /// stem: the foot of its petiole, leaf point `(0, −petiole, 0)` (the blade's base when
 /// `petiole` is 0), which the foliage places on the stem's centre curve.
-fn attachment(m: &[f32], petiole: f32) -> Vec3 {
+pub(super) fn attachment(m: &[f32], petiole: f32) -> Vec3 {
     Vec3::new(m[12] - petiole * m[4], m[13] - petiole * m[5], m[14] - petiole * m[6])
 }
 

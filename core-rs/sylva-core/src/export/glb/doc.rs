@@ -19,6 +19,8 @@ pub(super) struct Doc<'a> {
     pub(super) materials: Vec<Value>,
     pub(super) meshes: Vec<Value>,
     pub(super) nodes: Vec<Value>,
+    /// Animations (the growth animation's; none in the other files).
+    pub(super) animations: Vec<Value>,
     pub(super) bin_len: usize,
     /// Whether an accessor needs `KHR_mesh_quantization`.
     pub(super) quantized: bool,

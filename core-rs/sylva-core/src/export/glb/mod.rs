@@ -96,6 +96,7 @@
 mod baked;
 mod data;
 mod doc;
+mod growth;
 mod materials;
 pub mod merge;
 
@@ -159,11 +160,29 @@ pub fn write_into(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>) {
 
 /// [`write_into`] on at most `threads` threads ([`crate::par`]): the same bytes on any number.
 pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: usize) {
+    write_with(g, opts, out, threads, None);
+}
+
+/// The GLB of `g` with its growth animation ([`crate::export::growth`]; docs/formats.md,
+/// "Growth animation"): `g` generated at Age `age` with Mature Age `mature`. Leaves are baked
+/// (instances cannot morph; `LeafMode::None` leaves them out); everything else follows `opts`
+/// as in [`write()`], plus morph targets on the bark and leaf meshes and one animation, `growth`,
+/// from year 0 to `age` at one second a year.
+pub fn write_growth(g: &Generated, opts: &ExportOptions, age: f32, mature: f32) -> Vec<u8> {
+    let mut out = Vec::new();
+    write_with(g, opts, &mut out, crate::par::threads(), Some((age, mature)));
+    out
+}
+
+/// [`write_into_threads`], with the growth animation of a tree built at `growth` = (Age, Mature
+/// Age) when given.
+fn write_with(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: usize, growth: Option<(f32, f32)>) {
     let bark = &g.mesh;
     let f = &g.foliage;
     let has_bark = bark.vertex_count() > 0 && !bark.indices.is_empty();
-    // Instancing is an extension: a strict file bakes the leaves.
-    let leaves = if opts.strict && opts.leaves == LeafMode::Instanced { LeafMode::Baked } else { opts.leaves };
+    // Instancing is an extension: a strict file bakes the leaves, and so does a growing one.
+    let bake = (opts.strict || growth.is_some()) && opts.leaves == LeafMode::Instanced;
+    let leaves = if bake { LeafMode::Baked } else { opts.leaves };
     let has_leaves = leaves != LeafMode::None && f.count() > 0 && !f.mesh.indices.is_empty();
     let normal_maps = opts.textures && opts.normal_maps;
     // Tangents only for the normal maps, and only when asked for.
@@ -184,6 +203,7 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
             .then(|| super::frames::mesh_tangents(bark)),
         leaf_pngs,
     };
+    let morphs = growth.map(|(age, mature)| growth::morphs(g, owned.baked.as_ref(), age, mature, threads));
     let mut doc = Doc { strict: opts.strict, ..Doc::default() };
     let samplers = json!([
         {"magFilter": LINEAR, "minFilter": LINEAR_MIPMAP_LINEAR, "wrapS": REPEAT, "wrapT": REPEAT},
@@ -216,6 +236,9 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
             bounds: Some(bounds),
         };
         let mesh = doc.mesh("bark", bark, &extra, pick);
+        if let Some(m) = &morphs {
+            growth::targets(&mut doc, mesh, &m.bark, &m.years);
+        }
         doc.nodes.push(json!({"name": "bark", "mesh": mesh}));
         children.push(doc.nodes.len());
     }
@@ -229,6 +252,9 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
             bounds: None,
         };
         let mesh = doc.mesh("leaves", &b.mesh, &extra, pick);
+        if let Some(m) = morphs.as_ref().filter(|m| !m.leaves.is_empty()) {
+            growth::targets(&mut doc, mesh, &m.leaves, &m.years);
+        }
         doc.nodes.push(json!({"name": "leaves", "mesh": mesh}));
         children.push(doc.nodes.len());
     }
@@ -236,6 +262,9 @@ pub fn write_into_threads(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>
         let mesh = doc.mesh("leaf", &f.mesh, &extra_of(owned.leaf_tangents.as_deref(), f), |_| pick(Material::Leaves));
         instanced_leaves_node(&mut doc, f, mesh, opts.vertex_colors);
         children.push(doc.nodes.len());
+    }
+    if let Some(m) = &morphs {
+        growth::animation(&mut doc, &children, m);
     }
     assemble(doc, g, samplers, used_samplers, instanced, children, out, threads);
 }
@@ -319,6 +348,9 @@ fn assemble(
         root.insert("samplers".into(), Value::Array(s));
         root.insert("images".into(), Value::Array(doc.images));
         root.insert("textures".into(), Value::Array(doc.textures));
+    }
+    if !doc.animations.is_empty() {
+        root.insert("animations".into(), Value::Array(doc.animations));
     }
     if !doc.accessors.is_empty() {
         root.insert("accessors".into(), Value::Array(doc.accessors));
