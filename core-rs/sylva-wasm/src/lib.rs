@@ -9,6 +9,7 @@ use sylva_core::{mesh::bark, params::BarkType, params::TreeParams, presets, Cloc
 use wasm_bindgen::prelude::*;
 
 mod baked;
+mod lod_glb;
 mod session;
 
 pub use baked::BakedLeafMesh;

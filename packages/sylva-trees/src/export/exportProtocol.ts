@@ -6,8 +6,11 @@
 import type { Edit } from '../core/edits';
 import type { Params, VolumePrimitive } from '../core/types';
 
-/** File formats the core may export. */
-export type ExportFormat = 'glb' | 'obj';
+/**
+ * File formats the core may export: one GLB, the OBJ (zipped with its MTL and textures), or the
+ * levels of detail (`lods`: LOD0, LOD1, LOD2 as GLBs and the impostor GLB, zipped).
+ */
+export type ExportFormat = 'glb' | 'obj' | 'lods';
 
 /**
  * How leaves go into a GLB: one leaf mesh instanced per leaf (`EXT_mesh_gpu_instancing`, for
@@ -34,6 +37,11 @@ export interface ExportRequest {
   strict?: boolean;
   /** File stem: the OBJ names its MTL and textures after it (default `tree`). */
   name?: string;
+  /**
+   * `lods`: the impostor GLB made on the page from its atlas (baked with WebGL there), stored in
+   * the ZIP after the three levels as `STEM_impostor.glb`.
+   */
+  impostor?: Uint8Array;
 }
 
 /**
@@ -47,7 +55,8 @@ export type ExportedFile = { name: string; mime: string } & (
 
 /**
  * The exported files of request `id`, with the tree's content hash: one GLB, or for an OBJ one
- * ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and the textures the MTL names.
+ * ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and the textures the MTL names, or for `lods`
+ * one ZIP (`NAME-lods.zip`, `NAME-lods-strict.zip`) of the level GLBs and the impostor.
  */
 export interface ExportResponse {
   type: 'exported';
