@@ -8,7 +8,7 @@ import type { LodBuffers } from 'sylva-trees/worker';
 import { encodePng } from '../export/png';
 import type { Vec3 } from './hemiOct';
 import { impostorGlb } from './impostorGlb';
-import { atlasImage } from './impostorImage';
+import { atlasImage, downsample, powerOfTwoBelow } from './impostorImage';
 import type { LodController } from './LodController';
 import { treeBox } from './lodObjects';
 import { VIEWER_THRESHOLDS } from './selection';
@@ -44,13 +44,15 @@ export async function impostorFile(
   );
   const size = atlas.frames * atlas.cellPx;
   // Read at once: the atlas belongs to the LOD view, which drops it with the next tree.
-  const pixels = atlas.readColor();
-  const png = encodePng(size, size, atlasImage(pixels, size, atlas.frames));
+  // Frames must stay whole texels: 8 frames of 160 → 1024 (frames of 128).
+  const side = powerOfTwoBelow(size) % atlas.frames === 0 ? powerOfTwoBelow(size) : size;
+  const pixels = downsample(atlas.readColor(), size, side);
+  const png = encodePng(side, side, atlasImage(pixels, side, atlas.frames));
   const bytes = impostorGlb({
     name: stem,
     png,
     frames: atlas.frames,
-    cellPx: atlas.cellPx,
+    cellPx: side / atlas.frames,
     centre: [sphere.center.x, sphere.center.y, sphere.center.z],
     radius: atlas.radius,
     bounds: box(lods),

@@ -15,7 +15,7 @@ import {
   impostorGlb,
   type ImpostorGlbInput,
 } from './impostorGlb';
-import { atlasImage } from './impostorImage';
+import { atlasImage, downsample, powerOfTwoBelow } from './impostorImage';
 
 const FRAMES = 4;
 const CELL = 8;
@@ -146,6 +146,32 @@ describe('impostor atlas image', () => {
         }
       }
     }
+  });
+});
+
+describe('atlas reduced to a power of two', () => {
+  it('keeps frames apart, coverage and colour sums (area filter)', () => {
+    expect([powerOfTwoBelow(1280), powerOfTwoBelow(1024), powerOfTwoBelow(1023)]).toEqual([
+      1024, 1024, 512,
+    ]);
+    // 10 × 10, two frames across: the left one covered red, the right one empty.
+    const px = new Uint8Array(10 * 10 * 4);
+    for (let y = 0; y < 10; y++) for (let x = 0; x < 5; x++) px.set([200, 0, 0, 255], (y * 10 + x) * 4);
+    const out = downsample(px, 10, 8);
+    for (let y = 0; y < 8; y++) {
+      for (let x = 0; x < 8; x++) {
+        expect([...out.subarray((y * 8 + x) * 4, (y * 8 + x) * 4 + 4)]).toEqual(
+          x < 4 ? [200, 0, 0, 255] : [0, 0, 0, 0],
+        );
+      }
+    }
+    // A one-texel stripe at column 2 of 5, reduced to 4: output texels 1 and 2 each cover half
+    // of it, 0.5 of their 1.25 input texels: alpha 0.4 · 255 = 102.
+    const stripe = new Uint8Array(5 * 5 * 4);
+    for (let y = 0; y < 5; y++) stripe.set([255, 255, 255, 255], (y * 5 + 2) * 4);
+    const small = downsample(stripe, 5, 4);
+    expect([0, 1, 2, 3].map((x) => small[x * 4 + 3])).toEqual([0, 102, 102, 0]);
+    expect(downsample(px, 10, 10)).toBe(px);
   });
 });
 

@@ -3,7 +3,10 @@
  * albedo premultiplied by coverage in a render target read bottom row first; a PNG base colour
  * texture is sRGB, straight alpha, top row first. Texels the tree does not cover take their
  * frame's mean colour (alpha 0), so filtering and mipmaps toward a leaf's edge blend with the
- * tree's colour instead of black.
+ * tree's colour instead of black. An atlas whose side is not a power of two (the app bakes
+ * 8 × 160 = 1280 pixels) is first reduced to the power of two below (1024, frames of 128
+ * pixels) with an area filter on the premultiplied texels: engines mipmap such textures (Unreal
+ * gives a texture of another size no mipmaps) and the Khronos validator flags the other sizes.
  */
 
 /** Linear [0, 1] → sRGB byte (IEC 61966-2-1 transfer function). */
@@ -15,6 +18,48 @@ function srgbByte(linear: number): number {
 
 /** Linear byte → sRGB byte, for every linear byte value. */
 const SRGB = Uint8Array.from({ length: 256 }, (_, i) => srgbByte(i / 255));
+
+/** The largest power of two not above `n`. */
+export function powerOfTwoBelow(n: number): number {
+  return 2 ** Math.floor(Math.log2(Math.max(n, 1)));
+}
+
+/**
+ * `size × size` RGBA8 (premultiplied) reduced to `out × out` (`out ≤ size`): each output texel
+ * the area-weighted mean of the input texels it covers (separable: rows, then columns).
+ */
+export function downsample(pixels: Uint8Array, size: number, out: number): Uint8Array {
+  if (out === size) return pixels;
+  const scale = size / out;
+  // For each output column / row: the input texels it covers and their weights.
+  const taps = Array.from({ length: out }, (_, o) => {
+    const [from, to] = [o * scale, (o + 1) * scale];
+    const list: [number, number][] = [];
+    for (let i = Math.floor(from); i < Math.min(Math.ceil(to), size); i++) {
+      list.push([i, (Math.min(to, i + 1) - Math.max(from, i)) / scale]);
+    }
+    return list;
+  });
+  const wide = new Float32Array(size * out * 4);
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < out; x++) {
+      for (const [i, w] of taps[x]!) {
+        for (let k = 0; k < 4; k++) wide[(y * out + x) * 4 + k]! += pixels[(y * size + i) * 4 + k]! * w;
+      }
+    }
+  }
+  const result = new Uint8Array(out * out * 4);
+  for (let y = 0; y < out; y++) {
+    for (let x = 0; x < out; x++) {
+      const sum = [0, 0, 0, 0];
+      for (const [i, w] of taps[y]!) {
+        for (let k = 0; k < 4; k++) sum[k]! += wide[(i * out + x) * 4 + k]! * w;
+      }
+      for (let k = 0; k < 4; k++) result[(y * out + x) * 4 + k] = Math.round(sum[k]!);
+    }
+  }
+  return result;
+}
 
 /**
  * `pixels`: `size × size` RGBA8 read from the atlas (bottom row first, linear colour
