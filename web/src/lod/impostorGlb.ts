@@ -9,7 +9,9 @@
  *   view direction, one-sided, is `2 · radius` wide and tall and maps exactly its frame of the
  *   atlas (the orthographic image of the tree from that side), so seen from any side the two
  *   planes show the tree from the nearest corner views. Back to back quads sit `0.002 · radius`
- *   apart so that an importer that draws both sides shows the front one.
+ *   apart so that an importer that draws both sides shows the front one. Their normals are the
+ *   view direction tilted 45° up (`normalize(d + Y)`): lit like a crown's top-lit average, not
+ *   like a wall facing sideways (which the sun grazes).
  * * **Extras**: `extras.sylva_impostor` on the node describes the whole atlas (frame grid,
  *   layout, each frame's view direction, the projection) so an engine with an
  *   octahedral-impostor shader can use the image as it is; `extras.sylva_lod` the screen sizes;
@@ -76,6 +78,8 @@ export function crossQuads(input: Pick<ImpostorGlbInput, 'frames' | 'centre' | '
   const indices = new Uint16Array(quads.length * 6);
   quads.forEach(([i, j], q) => {
     const d = frameDirection(i, j, n);
+    const tilt = Math.hypot(d[0], d[1] + 1, d[2]);
+    const normal = [d[0] / tilt, (d[1] + 1) / tilt, d[2] / tilt];
     const { right, up } = viewBasis(d);
     const [u0, v0, u1, v1] = frameUv(i, j, n);
     // Counter-clockwise seen from d (right × up = d): bottom left, bottom right, top right, top left.
@@ -89,7 +93,7 @@ export function crossQuads(input: Pick<ImpostorGlbInput, 'frames' | 'centre' | '
       const o = (q * 4 + k) * 3;
       for (let a = 0; a < 3; a++) {
         positions[o + a] = centre[a]! + (right[a]! * s + up[a]! * t) * r + d[a]! * 0.002 * r;
-        normals[o + a] = d[a]!;
+        normals[o + a] = normal[a]!;
       }
       uvs[(q * 4 + k) * 2] = u;
       uvs[(q * 4 + k) * 2 + 1] = v;
