@@ -4,12 +4,7 @@
  * impostor from the LOD view (`lod/impostorExport.ts`), then the worker zips it with the levels.
  */
 import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
-import type {
-  ExportClient,
-  ExportFormat,
-  ExportResponse,
-  LeafExport,
-} from 'sylva-trees/worker';
+import type { ExportClient, ExportFormat, ExportResponse, LeafExport } from 'sylva-trees/worker';
 import { impostorFile } from '../lod/impostorExport';
 import type { LodController } from '../lod/LodController';
 import { downloadBlob } from './download';
@@ -80,14 +75,17 @@ const CONTENTS: Partial<Record<ExportFormat, string>> = {
 };
 
 /** Downloads an export's one file: the GLB, or the ZIP of the OBJ, its MTL and its textures. */
-export function saveExported(response: ExportResponse, format: ExportFormat, report: (s: Status) => void) {
+export function saveExported(
+  response: ExportResponse,
+  format: ExportFormat,
+  report: (s: Status) => void,
+) {
   const [file] = response.files;
   if (!file) throw new Error('the exporter returned no file');
   const blob = 'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
   downloadBlob(blob, file.name);
   report({ kind: 'ok', text: `Saved ${file.name}${CONTENTS[format] ?? ''}.` });
 }
-
 
 /** What an export is made from: the tree's inputs, the file stem, and the LOD view. */
 export interface ExportSource {

@@ -5,11 +5,7 @@
  * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
  * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
  */
-import {
-  applyLeafCoverage,
-  LEAF_INSTANCED_MATERIAL_KEY,
-  leafTexture,
-} from 'sylva-trees/viewer';
+import { applyLeafCoverage, LEAF_INSTANCED_MATERIAL_KEY, leafTexture } from 'sylva-trees/viewer';
 import {
   BufferAttribute,
   BufferGeometry,

@@ -93,7 +93,7 @@ describe('PNG encoder', () => {
     expect([...png.subarray(0, 8)]).toEqual([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
     const view = new DataView(png.buffer, png.byteOffset, png.byteLength);
     const chunks: Record<string, Uint8Array> = {};
-    for (let at = 8; at < png.length; ) {
+    for (let at = 8; at < png.length;) {
       const length = view.getUint32(at);
       const type = new TextDecoder().decode(png.subarray(at + 4, at + 8));
       expect(view.getUint32(at + 8 + length)).toBe(crc32(png.subarray(at + 4, at + 8 + length)));
@@ -103,7 +103,13 @@ describe('PNG encoder', () => {
     expect(Object.keys(chunks)).toEqual(['IHDR', 'IDAT', 'IEND']);
     const ihdr = new DataView(chunks.IHDR!.buffer, chunks.IHDR!.byteOffset, 13);
     expect([ihdr.getUint32(0), ihdr.getUint32(4), ...chunks.IHDR!.subarray(8)]).toEqual([
-      w, h, 8, 6, 0, 0, 0,
+      w,
+      h,
+      8,
+      6,
+      0,
+      0,
+      0,
     ]);
     const raw = unzlibSync(chunks.IDAT!);
     expect(raw.length).toBe(h * (w * 4 + 1));
@@ -156,7 +162,8 @@ describe('atlas reduced to a power of two', () => {
     ]);
     // 10 × 10, two frames across: the left one covered red, the right one empty.
     const px = new Uint8Array(10 * 10 * 4);
-    for (let y = 0; y < 10; y++) for (let x = 0; x < 5; x++) px.set([200, 0, 0, 255], (y * 10 + x) * 4);
+    for (let y = 0; y < 10; y++)
+      for (let x = 0; x < 5; x++) px.set([200, 0, 0, 255], (y * 10 + x) * 4);
     const out = downsample(px, 10, 8);
     for (let y = 0; y < 8; y++) {
       for (let x = 0; x < 8; x++) {

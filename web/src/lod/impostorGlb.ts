@@ -98,7 +98,10 @@ export function crossQuads(input: Pick<ImpostorGlbInput, 'frames' | 'centre' | '
       uvs[(q * 4 + k) * 2] = u;
       uvs[(q * 4 + k) * 2 + 1] = v;
     });
-    indices.set([0, 1, 2, 0, 2, 3].map((x) => x + q * 4), q * 6);
+    indices.set(
+      [0, 1, 2, 0, 2, 3].map((x) => x + q * 4),
+      q * 6,
+    );
   });
   return { positions, normals, uvs, indices };
 }
@@ -109,7 +112,8 @@ export function impostorExtras(input: ImpostorGlbInput): Record<string, unknown>
   const round = (x: number) => Math.round(x * 1e6) / 1e6;
   const vec = (v: readonly number[]) => v.map(round);
   const directions: number[][] = [];
-  for (let i = 0; i < n; i++) for (let j = 0; j < n; j++) directions.push(vec(frameDirection(i, j, n)));
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < n; j++) directions.push(vec(frameDirection(i, j, n)));
   return {
     sylva_impostor: {
       layout: 'hemi-octahedral',
@@ -119,7 +123,8 @@ export function impostorExtras(input: ImpostorGlbInput): Record<string, unknown>
       image: 0,
       centre: vec(input.centre),
       radius: round(input.radius),
-      frame_uv: 'frame (i, j) covers u in [i/n, (i+1)/n] and v in [(n-1-j)/n, (n-j)/n] (glTF UV, v from the image top)',
+      frame_uv:
+        'frame (i, j) covers u in [i/n, (i+1)/n] and v in [(n-1-j)/n, (n-j)/n] (glTF UV, v from the image top)',
       direction:
         'frame (i, j) is the view from unit direction d(i, j) = hemi-oct decode(i/(n-1), j/(n-1)): a = 2u-1, b = 2v-1, x = (a+b)/2, z = (a-b)/2, y = 1-|x|-|z|, normalised (Y up; +X at (n-1, n-1), +Z at (n-1, 0), -X at (0, 0), -Z at (0, n-1), the zenith at the centre)',
       directions,
@@ -181,10 +186,27 @@ export function impostorGlb(input: ImpostorGlbInput): Uint8Array {
     }
   }
   const accessors = [
-    { bufferView: addView(bytesOf(quads.positions), 34962), componentType: 5126, count, type: 'VEC3', min: lo.map(Math.fround), max: hi.map(Math.fround) },
-    { bufferView: addView(bytesOf(quads.normals), 34962), componentType: 5126, count, type: 'VEC3' },
+    {
+      bufferView: addView(bytesOf(quads.positions), 34962),
+      componentType: 5126,
+      count,
+      type: 'VEC3',
+      min: lo.map(Math.fround),
+      max: hi.map(Math.fround),
+    },
+    {
+      bufferView: addView(bytesOf(quads.normals), 34962),
+      componentType: 5126,
+      count,
+      type: 'VEC3',
+    },
     { bufferView: addView(bytesOf(quads.uvs), 34962), componentType: 5126, count, type: 'VEC2' },
-    { bufferView: addView(bytesOf(quads.indices), 34963), componentType: 5123, count: quads.indices.length, type: 'SCALAR' },
+    {
+      bufferView: addView(bytesOf(quads.indices), 34963),
+      componentType: 5123,
+      count: quads.indices.length,
+      type: 'SCALAR',
+    },
   ];
   const image = addView(input.png);
   const json = {

@@ -44,7 +44,8 @@ export function downsample(pixels: Uint8Array, size: number, out: number): Uint8
   for (let y = 0; y < size; y++) {
     for (let x = 0; x < out; x++) {
       for (const [i, w] of taps[x]!) {
-        for (let k = 0; k < 4; k++) wide[(y * out + x) * 4 + k]! += pixels[(y * size + i) * 4 + k]! * w;
+        for (let k = 0; k < 4; k++)
+          wide[(y * out + x) * 4 + k]! += pixels[(y * size + i) * 4 + k]! * w;
       }
     }
   }

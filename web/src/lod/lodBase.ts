@@ -2,13 +2,7 @@
  * What the LOD controller finds of the viewer's own tree (LOD0): its bounding sphere and the
  * three.js objects that draw it, which it hides while another level shows.
  */
-import {
-  type BufferAttribute,
-  type InstancedMesh,
-  type Object3D,
-  Sphere,
-  Vector3,
-} from 'three';
+import { type BufferAttribute, type InstancedMesh, type Object3D, Sphere, Vector3 } from 'three';
 import { LEAF_MATRICES_KEY } from 'sylva-trees/viewer';
 import type { TreeBuffers } from 'sylva-trees/core';
 
