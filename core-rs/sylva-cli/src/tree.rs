@@ -49,7 +49,7 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
             if !path.to_ascii_lowercase().ends_with(".zip") {
                 return Err(format!("--growth-years: the file must end in .zip, got '{path}'"));
             }
-            let bytes = sylva_core::export::growth::years_zip(&params, &export_options(&a.export))
+            let bytes = sylva_core::export::growth::years::years_zip(&params, &export_options(&a.export))
                 .map_err(|e| format!("--growth-years: {e}"))?;
             std::fs::write(path, &bytes).map_err(|e| format!("cannot write {path}: {e}"))?;
             Some(written.unwrap_or_default().into_iter().chain([(path.clone(), bytes.len())]).collect())

@@ -9,6 +9,7 @@ use sylva_core::{mesh::bark, params::BarkType, params::TreeParams, presets, Cloc
 use wasm_bindgen::prelude::*;
 
 mod baked;
+mod lod_glb;
 mod session;
 
 pub use baked::BakedLeafMesh;
@@ -246,13 +247,13 @@ fn export_options(json: &str) -> Result<sylva_core::export::ExportOptions, JsVal
 
 /// The growth as a zip of one GLB per whole year up to the Age of `params_json` (as for
 /// [`generate`]), each the tree generated at that Age and written with `options_json` (as for
-/// [`GeneratedTree::to_glb`]): `sylva_core::export::growth::years_zip`, the bytes `sylva generate
+/// [`GeneratedTree::to_glb`]): `sylva_core::export::growth::years::years_zip`, the bytes `sylva generate
 /// --growth-years` writes. Throws a JSON `SylvaError` string.
 #[wasm_bindgen]
 pub fn growth_years_zip(params_json: &str, options_json: &str) -> Result<Vec<u8>, JsValue> {
     let params = TreeParams::from_json(params_json).map_err(|e| JsValue::from_str(&e.to_json()))?;
     let opts = export_options(options_json)?;
-    sylva_core::export::growth::years_zip(&params, &opts).map_err(|e| JsValue::from_str(&e.to_json()))
+    sylva_core::export::growth::years::years_zip(&params, &opts).map_err(|e| JsValue::from_str(&e.to_json()))
 }
 
 /// Generate a tree from a JSON object of parameter values (`{"id": number}`); missing ids take

@@ -6,6 +6,7 @@
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { matchingPreset, type Params } from 'sylva-trees/core';
 import { Toolbar } from '../export/Toolbar';
+import type { LodController } from '../lod/LodController';
 import { LodPanel } from '../lod/LodPanel';
 import { ErrorBanner } from '../ui/ErrorBanner';
 import { GrowthProgress } from '../ui/GrowthTools';
@@ -26,6 +27,8 @@ import { HandEditPanel } from '../ui/HandEditPanel';
 /** The whole application. */
 export function App() {
   const viewerRef = useRef<TreeViewer | null>(null);
+  // The LOD view's controller: the Export menu's LOD zip takes its impostor atlas.
+  const lodRef = useRef<LodController | null>(null);
   const syncRef = useRef<ParamsSync | null>(null);
   const generatorRef = useRef<Generator | null>(null);
   const [info, setInfo] = useState<ReadyInfo | null>(null);
@@ -91,6 +94,7 @@ export function App() {
         <Viewport viewerRef={viewerRef} />
         <LodPanel
           viewerRef={viewerRef}
+          lodRef={lodRef}
           paramsRef={editor.paramsRef}
           volumesRef={editor.volumesRef}
           editsRef={editor.editsRef}
@@ -105,6 +109,8 @@ export function App() {
               params={params}
               presetName={activePreset}
               viewerRef={viewerRef}
+              lodRef={lodRef}
+              version={info.version}
               volumesRef={editor.volumesRef}
               editsRef={editor.editsRef}
               onLoadParams={(next) => editor.change({ params: next, key: null, frame: true })}

@@ -87,6 +87,13 @@ export function DocsPage({ model, version, pageHref }: Props) {
               <code>--leaves baked</code> for the editors&apos; GLB, <code>--strict</code> for the
               strict one).
             </li>
+            <li>
+              <strong>LODs + impostor</strong> (a zip of four GLBs: LOD0, LOD1, LOD2 and the
+              impostor, crossed quads on the atlas the LOD view bakes in the page, with the atlas
+              layout and the screen sizes in <code>extras</code>); <em>strict</em> writes the levels
+              with no glTF extension. docs/formats.md (LOD zip) says how to use them in Unity,
+              Unreal, Godot and Blender.
+            </li>
           </ul>
         </Section>
 

@@ -1,21 +1,18 @@
 /**
  * The viewer toolbar: Export menu (PNG screenshot, preset JSON save/load and, when the core has
  * exporters, a GLB for engines, a GLB for editors, a GLB for strict importers, a zipped OBJ, the
- * GLB with the growth animation and a zip of one GLB per year, each with a line saying when to
- * choose it), "Copy embed code" and a link to the docs page.
+ * GLB with the growth animation, a zip of one GLB per year and the zipped levels of detail with
+ * the impostor, each with a line saying when to choose it), "Copy embed code" and a link to the
+ * docs page.
  */
 import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
 import type { Edit, Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
 import { useDismiss } from '../ui/useDismiss';
 import type { TreeViewer } from '../viewer/TreeViewer';
-import { downloadBlob } from './download';
-import {
-  ExportClient,
-  type ExportFormat,
-  type ExportResponse,
-  type LeafExport,
-} from 'sylva-trees/worker';
+import type { LodController } from '../lod/LodController';
+import { ExportClient, type ExportFormat } from 'sylva-trees/worker';
+import { MESH_EXPORTS, runMeshExport, saveExported, type MeshExport } from './meshExport';
 import { presetFileName } from './presetFile';
 import {
   EmbedButton,
@@ -24,7 +21,6 @@ import {
   saveScreenshot,
   ToolbarStatus,
   useToolbarStatus,
-  type Status,
 } from './toolbarParts';
 import './toolbar.css';
 
@@ -34,79 +30,16 @@ interface Props {
   /** The preset the params match, for file names. */
   presetName: string | null;
   viewerRef: RefObject<TreeViewer | null>;
+  /** The LOD view's controller (the LOD zip's impostor is its atlas). */
+  lodRef: RefObject<LodController | null>;
+  /** The core's version (the impostor GLB's `asset.generator`). */
+  version: string;
   /** The growth volume primitives sent with every request. */
   volumesRef: RefObject<VolumePrimitive[]>;
   /** The hand edits: an export is the edited tree. */
   editsRef: RefObject<Edit[]>;
   /** Applies params read from a preset file (one undoable step). */
   onLoadParams: (params: Params) => void;
-}
-
-/** A mesh download of the Export menu. */
-interface MeshExport {
-  testId: string;
-  format: ExportFormat;
-  /** GLB: how the leaves are written (the core's default: instanced). */
-  leaves?: LeafExport;
-  /** GLB: no glTF extension (the core's `strict` option), for Godot and strict importers. */
-  strict?: boolean;
-  label: string;
-  /** One line: when to choose it. */
-  hint: string;
-}
-
-/** The mesh downloads, in menu order (docs/formats.md says which to choose for which tool). */
-export const MESH_EXPORTS: readonly MeshExport[] = [
-  {
-    testId: 'export-glb',
-    format: 'glb',
-    leaves: 'instanced',
-    label: 'GLB for engines (instanced leaves)',
-    hint: 'For three.js and Unity (glTFast): one leaf mesh drawn once per leaf, the lightest file.',
-  },
-  {
-    testId: 'export-glb-baked',
-    format: 'glb',
-    leaves: 'baked',
-    label: 'GLB for Blender and other editors (leaves merged into one mesh)',
-    hint: 'For Blender, Unreal and other editors, which would make one object per instanced leaf.',
-  },
-  {
-    testId: 'export-glb-strict',
-    format: 'glb',
-    strict: true,
-    label: 'GLB for Godot and strict importers',
-    hint: 'No glTF extension required: float normals, leaves merged; a larger file.',
-  },
-  {
-    testId: 'export-obj',
-    format: 'obj',
-    label: 'OBJ + MTL + textures (zip)',
-    hint: 'For tools without glTF (and Godot): leaves merged, no wind data.',
-  },
-  {
-    testId: 'export-glb-growth',
-    format: 'glb-growth',
-    label: 'GLB with growth animation',
-    hint: 'The tree growing from year 0 to its Age (one second a year): morph targets, leaves merged; plays in Blender and three.js.',
-  },
-  {
-    testId: 'export-glb-years',
-    format: 'glb-years',
-    label: 'GLB per year (zip)',
-    hint: 'For tools without glTF animation: the tree at every whole year up to its Age, one GLB each.',
-  },
-];
-
-/** Downloads an export's one file: the GLB, or the ZIP of the OBJ, its MTL and its textures. */
-function saveExported(response: ExportResponse, format: ExportFormat, report: (s: Status) => void) {
-  const [file] = response.files;
-  if (!file) throw new Error('the exporter returned no file');
-  const blob = 'blob' in file ? file.blob : new Blob([file.bytes as BlobPart], { type: file.mime });
-  downloadBlob(blob, file.name);
-  const contents =
-    format === 'obj' ? ' (OBJ, MTL and textures)' : format === 'glb-years' ? ' (a GLB per year)' : '';
-  report({ kind: 'ok', text: `Saved ${file.name}${contents}.` });
 }
 
 /** A mesh download of the menu, disabled (with the reason) while the core lacks its format. */
@@ -142,7 +75,7 @@ function MeshExportButton(props: {
 
 /** Toolbar over the viewer (top right). */
 export function Toolbar(props: Props) {
-  const { registry, params, presetName, viewerRef, volumesRef, editsRef, onLoadParams } = props;
+  const { registry, params, presetName, viewerRef, lodRef, volumesRef, editsRef } = props;
   const menuRef = useRef<HTMLDetailsElement>(null);
   const fileRef = useRef<HTMLInputElement>(null);
   const clientRef = useRef<ExportClient | null>(null);
@@ -184,17 +117,19 @@ export function Toolbar(props: Props) {
     savePresetFile(registry, params, baseName, setStatus);
   };
 
-  const exportMesh = ({ format, leaves, strict, label }: MeshExport) => {
+  const exportMesh = (item: MeshExport) => {
     closeMenu();
-    setStatus({ kind: 'busy', text: `Exporting ${label}…` });
-    client()
-      .export(params, volumesRef.current ?? [], format, {
-        name: baseName,
-        edits: editsRef.current ?? [],
-        ...(leaves ? { leaves } : {}),
-        ...(strict ? { strict } : {}),
-      })
-      .then((response) => saveExported(response, format, setStatus))
+    setStatus({ kind: 'busy', text: `Exporting ${item.label}…` });
+    const source = {
+      params,
+      volumes: volumesRef.current ?? [],
+      edits: editsRef.current ?? [],
+      name: baseName,
+      lod: lodRef.current,
+      generator: `Sylva ${props.version}`,
+    };
+    runMeshExport(client(), item, source)
+      .then((response) => saveExported(response, item.format, setStatus))
       .catch((error: unknown) => {
         const message = error instanceof Error ? error.message : String(error);
         setStatus({ kind: 'error', text: `Export failed: ${message}` });
@@ -241,7 +176,7 @@ export function Toolbar(props: Props) {
         onChange={(e) => {
           const file = e.currentTarget.files?.[0];
           e.currentTarget.value = '';
-          if (file) loadPresetFile(file, registry, onLoadParams, setStatus);
+          if (file) loadPresetFile(file, registry, props.onLoadParams, setStatus);
         }}
       />
       <EmbedButton {...{ registry, params, volumesRef, editsRef }} />

@@ -5,12 +5,7 @@
  * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
  * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
  */
-import {
-  applyLeafCoverage,
-  LEAF_INSTANCED_MATERIAL_KEY,
-  LEAF_MATRICES_KEY,
-  leafTexture,
-} from 'sylva-trees/viewer';
+import { applyLeafCoverage, LEAF_INSTANCED_MATERIAL_KEY, leafTexture } from 'sylva-trees/viewer';
 import {
   BufferAttribute,
   BufferGeometry,
@@ -44,6 +39,7 @@ import {
   treeSphere,
 } from './lodObjects';
 import { IMPOSTOR_LEVEL, screenFraction, selectLod } from './selection';
+import { findBaseObjects, sphereOf } from './lodBase';
 import type { LodBuffers } from 'sylva-trees/worker';
 
 /** Auto (by screen size), a forced level 0..3, or (tests) nothing drawn. */
@@ -107,6 +103,8 @@ export class LodController {
   /** Hash of the tree whose levels were last requested, and the idle timer for the next one. */
   private requested = '';
   private idleTimer: ReturnType<typeof setTimeout> | null = null;
+  /** `impostorAtlas` calls waiting for the levels of the tree on screen. */
+  private waiters: { resolve(): void; reject(error: Error): void }[] = [];
   private readonly onChange = () => this.update();
 
   constructor(
@@ -175,9 +173,40 @@ export class LodController {
     };
   }
 
+  /**
+   * The impostor atlas of the tree on screen and its levels, for the LOD export: the levels are
+   * requested now (no idle wait) and the atlas baked now if it was not yet. Read the atlas at
+   * once: a new tree disposes it. Rejects when the levels cannot be built.
+   */
+  async impostorAtlas(): Promise<{ atlas: ImpostorAtlas; lods: LodBuffers; sphere: Sphere }> {
+    while (!this.lods || this.lods.meta.hash !== this.hash) {
+      if (this.disposed) throw new Error('the LOD view was closed');
+      const ready = new Promise<void>((resolve, reject) => this.waiters.push({ resolve, reject }));
+      this.requestLods();
+      await ready;
+    }
+    if (!this.atlas) {
+      if (!this.renderer) throw new Error('the viewer has not drawn the tree yet');
+      this.atlas = this.own(this.bake(this.renderer, this.lods));
+      this.update();
+    }
+    return { atlas: this.atlas, lods: this.lods, sphere: this.sphere.clone() };
+  }
+
+  /** Settles the `impostorAtlas` waits (with `error`: rejects them). */
+  private wake(error?: Error): void {
+    const waiters = this.waiters;
+    this.waiters = [];
+    for (const w of waiters) {
+      if (error) w.reject(error);
+      else w.resolve();
+    }
+  }
+
   /** Removes every object and listener. */
   dispose(): void {
     this.disposed = true;
+    this.wake(new Error('the LOD view was closed'));
     if (this.idleTimer !== null) clearTimeout(this.idleTimer);
     this.unsubscribe();
     this.unsubscribeHash();
@@ -217,11 +246,13 @@ export class LodController {
       (lods) => {
         if (this.disposed || lods.meta.hash !== this.hash || hash !== this.hash) return;
         this.setLods(lods);
+        this.wake();
       },
       (error: unknown) => {
         if (this.requested === hash) this.requested = '';
         if (error instanceof Error && error.message === SUPERSEDED) return;
         console.warn('levels of detail unavailable:', error);
+        this.wake(error instanceof Error ? error : new Error(String(error)));
       },
     );
   }
@@ -347,7 +378,7 @@ export class LodController {
     const lods = this.lods;
     setTimeout(() => {
       this.bakeScheduled = false;
-      if (this.disposed || this.lods !== lods || !this.renderer) return;
+      if (this.disposed || this.lods !== lods || !this.renderer || this.atlas) return;
       this.atlas = this.bake(this.renderer, lods);
       this.owned.push(this.atlas);
       this.update();
@@ -435,60 +466,4 @@ export class LodController {
     this.lods = null;
     this.leafMap = null;
   }
-}
-
-/** The tree's bounding sphere from its bark bounds and its leaves (position ± length). */
-export function sphereOf(buffers: TreeBuffers): Sphere {
-  const { min, max } = buffers.meta.bounds;
-  const lo = [...min];
-  const hi = [...max];
-  const m = buffers.foliage?.matrices ?? new Float32Array(0);
-  for (let o = 0; o + 16 <= m.length; o += 16) {
-    const len = Math.hypot(m[o + 4]!, m[o + 5]!, m[o + 6]!);
-    for (let k = 0; k < 3; k++) {
-      lo[k] = Math.min(lo[k]!, m[o + 12 + k]! - len);
-      hi[k] = Math.max(hi[k]!, m[o + 12 + k]! + len);
-    }
-  }
-  const centre = new Vector3((lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2);
-  return new Sphere(
-    centre,
-    Math.max(Math.hypot(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!) / 2, 0.01),
-  );
-}
-
-/**
- * The viewer's LOD0 objects: the mesh wrapping the tree's position array and the instanced
- * leaves wrapping its leaf matrices (the viewer hands the transferred arrays to three.js without
- * copying); failing that, meshes of the same vertex / instance counts.
- */
-export function findBaseObjects(
-  scene: Object3D,
-  buffers: TreeBuffers,
-  ...skip: Object3D[]
-): Object3D[] {
-  const vertices = buffers.positions.length / 3;
-  const leaves = buffers.foliage ? buffers.foliage.colors.length / 3 : 0;
-  const bark: [Object3D[], Object3D[]] = [[], []];
-  const leaf: [Object3D[], Object3D[]] = [[], []];
-  const visit = (o: Object3D) => {
-    if (skip.includes(o)) return;
-    const mesh = o as Partial<InstancedMesh>;
-    if (mesh.isMesh && mesh.geometry) {
-      const position = mesh.geometry.getAttribute('position');
-      const pulled: unknown = o.userData[LEAF_MATRICES_KEY];
-      if (pulled !== undefined) {
-        if (pulled === buffers.foliage?.matrices) leaf[0].push(o);
-      } else if (mesh.isInstancedMesh) {
-        if (mesh.instanceMatrix?.array === buffers.foliage?.matrices) leaf[0].push(o);
-        else if (leaves > 0 && mesh.count === leaves) leaf[1].push(o);
-      } else if (position) {
-        if ((position as BufferAttribute).array === buffers.positions) bark[0].push(o);
-        else if (position.count === vertices) bark[1].push(o);
-      }
-    }
-    for (const child of o.children) visit(child);
-  };
-  visit(scene);
-  return [...(bark[0].length > 0 ? bark[0] : bark[1]), ...(leaf[0].length > 0 ? leaf[0] : leaf[1])];
 }

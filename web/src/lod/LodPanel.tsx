@@ -27,12 +27,15 @@ const MODES: { mode: LodMode; label: string }[] = [
 /** See the module docs. */
 export function LodPanel({
   viewerRef,
+  lodRef,
   paramsRef,
   volumesRef,
   editsRef,
   info,
 }: {
   viewerRef: RefObject<TreeViewer | null>;
+  /** Set to the controller while the panel is mounted (the LOD export takes its impostor). */
+  lodRef: RefObject<LodController | null>;
   paramsRef: RefObject<Params | null>;
   volumesRef: RefObject<VolumePrimitive[]>;
   editsRef: RefObject<Edit[]>;
@@ -57,6 +60,7 @@ export function LodPanel({
       setState,
     );
     controllerRef.current = controller;
+    lodRef.current = controller;
     const uninstall = installDebugHook({
       lod: () => controller.state(),
       setCameraDistance: (d: number) => controller.setCameraDistance(d),
@@ -67,8 +71,9 @@ export function LodPanel({
       controller.dispose();
       client.dispose();
       controllerRef.current = null;
+      if (lodRef.current === controller) lodRef.current = null;
     };
-  }, [viewerRef, paramsRef, volumesRef, editsRef]);
+  }, [viewerRef, lodRef, paramsRef, volumesRef, editsRef]);
 
   const mode = state?.mode ?? 'auto';
   const level = state?.level ?? 0;

@@ -94,6 +94,11 @@ export interface ImpostorAtlas {
   radius: number;
   /** Milliseconds spent baking (CPU time of the render calls). */
   bakeMs: number;
+  /**
+   * The colour atlas's pixels read back (`size²` RGBA8, bottom row first, linear albedo
+   * premultiplied by coverage), for the LOD export; valid until `dispose`.
+   */
+  readColor(): Uint8Array;
   dispose(): void;
 }
 
@@ -208,6 +213,11 @@ export function bakeImpostor(
     centre: sphere.center.clone(),
     radius: r,
     bakeMs: performance.now() - t0,
+    readColor: () => {
+      const pixels = new Uint8Array(size * size * 4);
+      renderer.readRenderTargetPixels(target, 0, 0, size, size, pixels, undefined, 0);
+      return pixels;
+    },
     dispose: () => target.dispose(),
   };
 }

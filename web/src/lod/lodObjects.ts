@@ -318,6 +318,12 @@ export function cloudMaterial(map: Texture): MeshStandardMaterial {
 
 /** Bounding sphere of a whole tree: bark bounds plus every leaf (position ± its length). */
 export function treeSphere(lods: LodBuffers): Sphere {
+  const { min, max } = treeBox(lods);
+  return new Sphere(min.clone().add(max).multiplyScalar(0.5), max.distanceTo(min) / 2);
+}
+
+/** The tree's box: LOD0's bark bounds grown by every leaf (position ± length). */
+export function treeBox(lods: LodBuffers): { min: Vector3; max: Vector3 } {
   const { min, max } = lods.meta.bounds;
   const lo = new Vector3(...min);
   const hi = new Vector3(...max);
@@ -327,8 +333,7 @@ export function treeSphere(lods: LodBuffers): Sphere {
     lo.min(new Vector3(m[o + 12]! - len, m[o + 13]! - len, m[o + 14]! - len));
     hi.max(new Vector3(m[o + 12]! + len, m[o + 13]! + len, m[o + 14]! + len));
   }
-  const centre = lo.clone().add(hi).multiplyScalar(0.5);
-  return new Sphere(centre, hi.distanceTo(lo) / 2);
+  return { min: lo, max: hi };
 }
 
 /** A colour from a CSS string (linear working space). */

@@ -1,9 +1,11 @@
-//! # Levels of detail as one GLB
+//! # Levels of detail as GLB
 //!
 //! [`lods_glb`]: the three mesh levels of [`crate::lod`] in one file, each written as its own
 //! GLB ([`super::glb::write`], same options) and merged ([`super::glb::merge`]) under one root
 //! node: `<name>_LOD0`, `<name>_LOD1`, `<name>_LOD2`, the names Unity's model importer turns
-//! into a LODGroup (docs/formats.md says how each engine takes them).
+//! into a LODGroup (docs/formats.md says how each engine takes them). [`lod_level_glb`]: one
+//! level alone, the same root node and `extras` with that level's node only (the app's LOD
+//! zip holds one such file per level).
 //!
 //! * **LOD0**: the tree as [`super::glb::write`] writes it.
 //! * **LOD1**: the lighter bark sweep and every third leaf (larger), same materials.
@@ -38,20 +40,36 @@ const MEASURE: &str = "screen size = bounding radius / (distance * tan(vertical 
 /// The levels of `l` as one GLB (module docs); `name` names the root node and prefixes the
 /// level nodes.
 pub fn lods_glb(l: &TreeLods, opts: &ExportOptions, name: &str) -> Vec<u8> {
-    let g = &l.lod0;
-    let lod1 = level_tree(g, l.lod1.mesh.clone(), l.lod1.foliage.clone());
-    let lod2 = level_tree(g, l.lod2.mesh.clone(), cloud_foliage(&l.lod2.cloud));
-    let parts: Vec<Part> = [g, &lod1, &lod2]
-        .into_iter()
-        .enumerate()
-        .map(|(i, t)| Part {
-            name: format!("{name}_LOD{i}"),
-            extras: json!({"sylva_lod": {"level": i, "screen_size": decimal(LOD_SCREEN_SIZES[i])}}),
-            glb: super::glb::write(t, opts),
-        })
-        .collect();
+    let parts: Vec<Part> = (0..3).map(|i| level_part(l, opts, name, i)).collect();
+    merge(name, root_extras(), &parts)
+}
+
+/// Level `level` (0, 1 or 2; larger is taken as 2) of `l` alone as a GLB: root node `name`
+/// (with the screen sizes in `extras.sylva_lod`, as in [`lods_glb`]) whose one child
+/// `<name>_LOD<level>` holds the level's `bark` and `leaves` nodes and its own `extras`.
+pub fn lod_level_glb(l: &TreeLods, opts: &ExportOptions, name: &str, level: usize) -> Vec<u8> {
+    merge(name, root_extras(), &[level_part(l, opts, name, level.min(2))])
+}
+
+/// The root node's `extras`: the screen-size thresholds and how they are measured.
+fn root_extras() -> serde_json::Value {
     let sizes: Vec<f64> = LOD_SCREEN_SIZES.iter().map(|&s| decimal(s)).collect();
-    merge(name, json!({"sylva_lod": {"screen_sizes": sizes, "measure": MEASURE}}), &parts)
+    json!({"sylva_lod": {"screen_sizes": sizes, "measure": MEASURE}})
+}
+
+/// Level `i` (0, 1, 2) written as its own GLB, named `<name>_LOD<i>`, with its `extras`.
+fn level_part(l: &TreeLods, opts: &ExportOptions, name: &str, i: usize) -> Part {
+    let g = &l.lod0;
+    let glb = match i {
+        0 => super::glb::write(g, opts),
+        1 => super::glb::write(&level_tree(g, l.lod1.mesh.clone(), l.lod1.foliage.clone()), opts),
+        _ => super::glb::write(&level_tree(g, l.lod2.mesh.clone(), cloud_foliage(&l.lod2.cloud)), opts),
+    };
+    Part {
+        name: format!("{name}_LOD{i}"),
+        extras: json!({"sylva_lod": {"level": i, "screen_size": decimal(LOD_SCREEN_SIZES[i])}}),
+        glb,
+    }
 }
 
 /// `x` as the decimal it is written as (0.6, not 0.6000000238418579, the `f32`'s exact value).

@@ -38,7 +38,7 @@ pub use bake::{
     bake_leaves, bake_leaves_scaled, decompose, decompose_rotation, decompose_scale, scale_texels, tint_scale,
     BakedLeaves,
 };
-pub use lods::{lods_glb, LOD_SCREEN_SIZES};
+pub use lods::{lod_level_glb, lods_glb, LOD_SCREEN_SIZES};
 pub use options::{ExportOptions, LeafMode};
 pub use tint::{bark_colors, bark_colors_into, TINT_STEPS};
 

@@ -16,6 +16,7 @@
 //! inside it, with the same disc coordinates (the pith stays at the centre, the outer rings are
 //! under the roll). A closed wound keeps a seam of [`OPEN_MIN`] of the radius. One more ring
 //! (the inner one) and its quads are the whole cost.
+pub(crate) use super::stem::CutEnd;
 use super::stem::{Frame, StemMesh};
 use super::{Material, MeshBuilder, VertexBlock, WIND_STRIDE};
 use crate::skeleton::Stem;
@@ -30,17 +31,6 @@ pub const ROLL_HEIGHT: f32 = 0.3;
 const CREST: f32 = 0.4;
 /// The open radius of a closed wound (its seam), in radii of the stem at the cut.
 pub const OPEN_MIN: f32 = 0.04;
-
-/// Where a stem's cut end starts in the mesh (the first vertex of its bevel ring, or of its
-/// callus crest ring; the face ring follows, then a callus's inner ring) and whether it has a
-/// callus.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct CutEnd {
-    /// The first vertex of the bevel (or crest) ring.
-    pub first: u32,
-    /// Whether the end carries a callus roll (an inner ring and its quads).
-    pub callus: bool,
-}
 
 /// Rings the cut end adds beyond a pointed tip's apex: the bevel ring and the face ring, and a
 /// callus's inner ring.

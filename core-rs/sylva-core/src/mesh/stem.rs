@@ -29,7 +29,18 @@ pub(crate) struct StemMesh {
     pub v0: f32,
     /// A cut end ([`super::cut_face`]): the first vertex of its bevel ring (the face ring
     /// follows; `apex` is the face's centre).
-    pub cut: Option<super::cut_face::CutEnd>,
+    pub cut: Option<CutEnd>,
+}
+
+/// Where a stem's cut end ([`super::cut_face`]) starts in the mesh (the first vertex of its bevel ring, or of its
+/// callus crest ring; the face ring follows, then a callus's inner ring) and whether it has a
+/// callus.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct CutEnd {
+    /// The first vertex of the bevel (or crest) ring.
+    pub first: u32,
+    /// Whether the end carries a callus roll (an inner ring and its quads).
+    pub callus: bool,
 }
 
 impl StemMesh {

@@ -7,9 +7,10 @@
 use super::*;
 use glam::Vec3;
 use sylva_core::export::glb::write_growth;
+use sylva_core::export::growth::key_years;
 use sylva_core::export::growth::life::Lives;
 use sylva_core::export::growth::morph::{bark_places, bark_target, StemIndex, YearShape};
-use sylva_core::export::growth::{growth_years, key_years, years_zip};
+use sylva_core::export::growth::years::{growth_years, years_zip};
 
 fn params(name: &str, age: Option<f32>) -> TreeParams {
     let mut p = presets::find(name).expect("preset").params().expect("params");

@@ -2,7 +2,7 @@
 //! each level's meshes and counts, the screen sizes in `extras`, shared textures stored once.
 
 use super::*;
-use sylva_core::export::{lods_glb, LOD_SCREEN_SIZES};
+use sylva_core::export::{lod_level_glb, lods_glb, LOD_SCREEN_SIZES};
 use sylva_core::lod::{lods_of, TreeLods};
 
 fn lods(name: &str) -> TreeLods {
@@ -86,4 +86,41 @@ fn lod_screen_sizes_are_the_viewers() {
     let inner = &line[line.rfind('[').unwrap() + 1..line.rfind(']').unwrap()];
     let values: Vec<f32> = inner.split(',').map(|v| v.trim().parse().unwrap()).collect();
     assert_eq!(values, LOD_SCREEN_SIZES);
+}
+
+#[test]
+fn one_level_glb_holds_that_level_alone() {
+    let l = lods("grown_bushy");
+    let opts = ExportOptions::default();
+    let mut bark_vertices = Vec::new();
+    for i in 0..3 {
+        let bytes = lod_level_glb(&l, &opts, "oak", i);
+        assert!(bytes == lod_level_glb(&l, &opts, "oak", i), "deterministic");
+        let glb = parse(&bytes);
+        glb.check_layout();
+        let root = &glb.json["nodes"][0];
+        assert_eq!(root["name"], "oak");
+        assert_eq!(root["extras"]["sylva_lod"]["screen_sizes"].as_array().unwrap().len(), 3);
+        let levels = children(&glb, 0);
+        assert_eq!(levels.len(), 1);
+        assert_eq!(levels[0]["name"], format!("oak_LOD{i}"));
+        assert_eq!(levels[0]["extras"]["sylva_lod"]["level"], i);
+        let bark = levels[0]["children"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|c| &glb.json["nodes"][c.as_u64().unwrap() as usize])
+            .find(|n| n["name"] == "bark")
+            .expect("bark node");
+        let mesh = &glb.json["meshes"][bark["mesh"].as_u64().unwrap() as usize];
+        assert_eq!(glb.index_count(mesh), l.level(i).mesh.indices.len() as u64, "LOD{i} bark");
+        let position = mesh["primitives"][0]["attributes"]["POSITION"].as_u64().unwrap();
+        bark_vertices.push(glb.accessor(position)["count"].as_u64().unwrap());
+    }
+    assert!(bark_vertices[0] > bark_vertices[1] && bark_vertices[1] > bark_vertices[2], "{bark_vertices:?}");
+    // A larger level is LOD2; strict files need no extension.
+    assert!(lod_level_glb(&l, &opts, "oak", 7) == lod_level_glb(&l, &opts, "oak", 2));
+    let strict = parse(&lod_level_glb(&l, &ExportOptions { strict: true, ..Default::default() }, "tree", 1));
+    strict.check_layout();
+    assert!(strict.json.get("extensionsUsed").is_none() && strict.json.get("extensionsRequired").is_none());
 }

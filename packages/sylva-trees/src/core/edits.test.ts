@@ -69,8 +69,16 @@ describe('edit list JSON', () => {
       'edits[0].to',
       /not a field of a cut edit \(op, at, year\)/,
     ],
-    ['[{"op": "cut", "at": [1, 2, 3], "year": "May"}]', 'edits[0].year', /must be a number, got "May"/],
-    ['[{"op": "cut", "at": [1, 2, 3], "year": 1e9}]', 'edits[0].year', /is 1000000000: allowed range is 0 to 300 years/],
+    [
+      '[{"op": "cut", "at": [1, 2, 3], "year": "May"}]',
+      'edits[0].year',
+      /must be a number, got "May"/,
+    ],
+    [
+      '[{"op": "cut", "at": [1, 2, 3], "year": 1e9}]',
+      'edits[0].year',
+      /is 1000000000: allowed range is 0 to 300 years/,
+    ],
     ['[{"op": "cut"}]', 'edits[0].at', /^edits\[0\]\.at is missing$/],
     ['[{"op": "cut", "at": [1, 2]}]', 'edits[0].at', /must be an array of 3 numbers, got \[1,2\]/],
     ['[{"op": "cut", "at": [1, "2", 3]}]', 'edits[0].at[1]', /must be a number, got "2"/],

@@ -113,7 +113,9 @@ function parseEdit(i: number, item: unknown): Edit {
     }
     case 'cut': {
       const at = vec3(required(item, 'at', f('at')), f('at'));
-      return 'year' in item ? { op: 'cut', at, year: number(item.year, f('year')) } : { op: 'cut', at };
+      return 'year' in item
+        ? { op: 'cut', at, year: number(item.year, f('year')) }
+        : { op: 'cut', at };
     }
     case 'bend':
       return {
@@ -175,7 +177,9 @@ export function editsToCore(edits: readonly Edit[]): Record<string, unknown>[] {
       case 'crown':
         return { op: 'crown', outline: e.outline };
       case 'cut':
-        return e.year === undefined ? { op: 'cut', at: e.at } : { op: 'cut', at: e.at, year: e.year };
+        return e.year === undefined
+          ? { op: 'cut', at: e.at }
+          : { op: 'cut', at: e.at, year: e.year };
       case 'bend':
         return { op: 'bend', at: e.at, to: e.to };
     }

@@ -89,12 +89,22 @@ export class ExportClient {
     return this.ready;
   }
 
-  /** Regenerates `params` in the export worker and returns the files. */
+  /**
+   * Regenerates `params` in the export worker and returns the files (`lods`: one ZIP of the
+   * level GLBs and `options.impostor`).
+   */
   async export(
     params: Params,
     volumes: VolumePrimitive[],
     format: ExportFormat,
-    options: { leaves?: LeafExport; strict?: boolean; name?: string; edits?: readonly Edit[] } = {},
+    options: {
+      leaves?: LeafExport;
+      strict?: boolean;
+      name?: string;
+      edits?: readonly Edit[];
+      /** `lods`: the impostor GLB to store in the ZIP with the levels. */
+      impostor?: Uint8Array;
+    } = {},
   ): Promise<ExportResponse> {
     const formats = await this.formats();
     if (!formats.includes(format)) {
@@ -112,6 +122,7 @@ export class ExportClient {
         ...(options.leaves ? { leaves: options.leaves } : {}),
         ...(options.strict ? { strict: true } : {}),
         ...(options.name ? { name: options.name } : {}),
+        ...(options.impostor ? { impostor: options.impostor } : {}),
       };
       this.client.submit({ request, resolve, reject });
     });

@@ -85,7 +85,7 @@ describe('export feature check', () => {
   it('lists only the exporters the GeneratedTree class has', () => {
     expect(exportFormatsOf({})).toEqual([]);
     expect(exportFormatsOf({ GeneratedTree: { prototype: { to_glb() {} } } })).toEqual(['glb']);
-    expect(exportFormatsOf(loadWasm())).toEqual(['glb', 'obj', 'glb-growth', 'glb-years']);
+    expect(exportFormatsOf(loadWasm())).toEqual(['glb', 'obj', 'glb-growth', 'glb-years', 'lods']);
   });
 
   it('file stems are plain names', () => {
@@ -275,7 +275,7 @@ describe('ExportClient', () => {
         terminate: () => stopped++,
       };
     });
-    expect(await client.formats()).toEqual(['glb', 'obj', 'glb-growth', 'glb-years']);
+    expect(await client.formats()).toEqual(['glb', 'obj', 'glb-growth', 'glb-years', 'lods']);
     const response = await client.export({ seed: 2 }, [], 'glb');
     const [glb] = response.files;
     const bytes = glb && 'blob' in glb ? new Uint8Array(await glb.blob.arrayBuffer()) : null;

@@ -12,6 +12,7 @@ import { volumeToCore } from '../core/volumes';
 import type { WorkerResponse } from '../worker/protocol';
 import type { ExportedFile, ExportFormat, ExportRequest } from './exportProtocol';
 import { zipFiles } from './zip';
+import { canExportLods, lodArchive } from './lodExport';
 
 /** A GLB in the core's memory (`GeneratedTree.to_glb_file`): read it, then free it. */
 export interface CoreFile {
@@ -44,6 +45,7 @@ export function exportFormatsOf(wasm: object): ExportFormat[] {
   if (has('to_obj') && has('to_mtl')) formats.push('obj');
   if (has('to_growth_glb_file')) formats.push('glb-growth');
   if (typeof (wasm as YearsApi).growth_years_zip === 'function') formats.push('glb-years');
+  if (canExportLods(wasm)) formats.push('lods');
   return formats;
 }
 
@@ -123,6 +125,7 @@ export function exportFiles(
   strict?: boolean,
 ): ExportedFile[] {
   const options = JSON.stringify({ ...(leaves ? { leaves } : {}), ...(strict ? { strict } : {}) });
+  if (format === 'lods') throw new Error('The levels of detail are exported by lodArchive.');
   if (format === 'glb') {
     const stem = `${fileStem(name)}${strict ? '-strict' : ''}`;
     const file = { name: `${stem}.glb`, mime: 'model/gltf-binary' };
@@ -162,7 +165,8 @@ export function objArchive(files: readonly ExportedFile[], name?: string): Expor
 
 /**
  * Answers an export request: regenerates the tree and posts the files (byte buffers
- * transferred, Blobs shared): a GLB, or the OBJ, its MTL and its textures in one ZIP.
+ * transferred, Blobs shared): a GLB, or the OBJ, its MTL and its textures in one ZIP, or the
+ * levels of detail in one ZIP (`lodExport.ts`).
  * Throws what `generate` or an exporter threw; the handler reports it like a generate error.
  */
 export function exportTree(
@@ -170,6 +174,12 @@ export function exportTree(
   request: ExportRequest,
   post: (message: WorkerResponse, transfer: Transferable[]) => void,
 ): void {
+  if (request.format === 'lods') {
+    const { hash, file } = lodArchive(wasm, request, fileStem(request.name));
+    const transfer = 'bytes' in file ? [file.bytes.buffer] : [];
+    post({ type: 'exported', id: request.id, format: 'lods', hash, files: [file] }, transfer);
+    return;
+  }
   const input = coreInput(request.params, request.volumes?.map(volumeToCore), request.edits);
   const tree: ExportableTree = wasm.generate(JSON.stringify(input));
   try {

@@ -9,9 +9,10 @@ import type { Params, VolumePrimitive } from '../core/types';
 /**
  * File formats the core may export: a GLB, a zipped OBJ, the GLB with the growth animation
  * (`glb-growth`: morph targets from year 0 to the Age, leaves baked; docs/formats.md "Growth
- * animation") and the growth as a zip of one GLB per whole year (`glb-years`).
+ * animation"), the growth as a zip of one GLB per whole year (`glb-years`), or the levels of
+ * detail (`lods`: LOD0, LOD1, LOD2 as GLBs and the impostor GLB, zipped).
  */
-export type ExportFormat = 'glb' | 'obj' | 'glb-growth' | 'glb-years';
+export type ExportFormat = 'glb' | 'obj' | 'glb-growth' | 'glb-years' | 'lods';
 
 /**
  * How leaves go into a GLB: one leaf mesh instanced per leaf (`EXT_mesh_gpu_instancing`, for
@@ -38,6 +39,11 @@ export interface ExportRequest {
   strict?: boolean;
   /** File stem: the OBJ names its MTL and textures after it (default `tree`). */
   name?: string;
+  /**
+   * `lods`: the impostor GLB made on the page from its atlas (baked with WebGL there), stored in
+   * the ZIP after the three levels as `STEM_impostor.glb`.
+   */
+  impostor?: Uint8Array;
 }
 
 /**
@@ -52,7 +58,9 @@ export type ExportedFile = { name: string; mime: string } & (
 /**
  * The exported files of request `id`, with the tree's content hash: one GLB (`NAME-growth.glb`
  * for the growth animation), for an OBJ one ZIP (`NAME-obj.zip`) holding the OBJ, its MTL and
- * the textures the MTL names, or for the years one ZIP (`NAME-years.zip`) of `year_001.glb`, ...
+ * the textures the MTL names, for the years one ZIP (`NAME-years.zip`) of `year_001.glb`, ...,
+ * or for `lods` one ZIP (`NAME-lods.zip`, `NAME-lods-strict.zip`) of the level GLBs and the
+ * impostor.
  */
 export interface ExportResponse {
   type: 'exported';

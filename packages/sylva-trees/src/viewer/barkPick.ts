@@ -28,7 +28,13 @@ const c = new Vector3();
 const hit = new Vector3();
 
 /** The slab interval `[t0, t1]` of one axis narrowed by box bounds `lo..hi` (NaN-safe). */
-function slab(t: [number, number], lo: number, hi: number, origin: number, invDir: number): boolean {
+function slab(
+  t: [number, number],
+  lo: number,
+  hi: number,
+  origin: number,
+  invDir: number,
+): boolean {
   const p = (lo - origin) * invDir;
   const q = (hi - origin) * invDir;
   // A ray along a box face (0 × ∞): no bound from this axis.

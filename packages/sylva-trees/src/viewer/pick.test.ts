@@ -46,7 +46,12 @@ function soup(n: number, seed: number): BufferGeometry {
   }
   const g = new BufferGeometry();
   g.setAttribute('position', new BufferAttribute(positions, 3));
-  g.setIndex(new BufferAttribute(Uint32Array.from({ length: n * 3 }, (_, i) => i), 1));
+  g.setIndex(
+    new BufferAttribute(
+      Uint32Array.from({ length: n * 3 }, (_, i) => i),
+      1,
+    ),
+  );
   g.computeBoundingSphere();
   return g;
 }
@@ -134,11 +139,7 @@ describe('instance picking through instance spheres', () => {
     for (let i = 0; i < n; i++) {
       const q = new Quaternion().setFromEuler(new Euler(r() * 6, r() * 6, r() * 6));
       const s = 0.2 + r() * 0.5;
-      m.compose(
-        new Vector3(r() * 10 - 5, r() * 10, r() * 4 - 2),
-        q,
-        new Vector3(s, s * 1.5, s),
-      );
+      m.compose(new Vector3(r() * 10 - 5, r() * 10, r() * 4 - 2), q, new Vector3(s, s * 1.5, s));
       m.toArray(matrices, i * 16);
     }
     const leaf = new PlaneGeometry(1, 0.6).translate(0, 0.3, 0);

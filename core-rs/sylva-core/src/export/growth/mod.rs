@@ -12,14 +12,12 @@
 //! and the animation moves the weight from one target to the next between their years, so
 //! the tree between two keys is the straight blend of its shapes in those years.
 //!
-//! [`years_zip`] is the other form, for tools without glTF animation: one plain GLB per whole
+//! [`years::years_zip`] is the other form, for tools without glTF animation: one plain GLB per whole
 //! year, each tree generated at that Age (the replay at Age `y` is the tree at Age `y`).
 
 pub mod life;
 pub mod morph;
-mod years;
-
-pub use years::{growth_years, years_zip};
+pub mod years;
 
 use crate::mesh::WIND_STRIDE;
 use crate::Generated;
