@@ -59,11 +59,28 @@ for (const [name, age] of [
     args: ['--preset', name, '--set', `age=${age}`],
   });
 }
+// Life past the Mature Age (thickening, shedding into stubs with a callus, drooping) and Leafy
+// Years: the default tree at 100 years, Black Tupelo at 130, and the default tree's leaves on
+// the last 8 years of wood.
+for (const [name, values] of [
+  ['default', { age: 100 }],
+  ['black_tupelo', { age: 130 }],
+  ['default', { leaf_years: 8 }],
+]) {
+  const preset = presets.find((p) => p.name === name);
+  const set = Object.entries(values).flatMap(([k, v]) => ['--set', `${k}=${v}`]);
+  cases.push({
+    name: `${name} ${JSON.stringify(values)}`,
+    values: { ...preset.values, ...values },
+    args: ['--preset', name, ...set],
+  });
+}
 // Hand edits (a cut and a bend on two main branches of the default tree): the same edits give
 // the same bytes natively (`--edits FILE`) and in wasm (the `edits` array of the parameters).
 const edits = [
   { op: 'bend', at: [1.4077538, 5.961102, -1.6150186], to: [1.4077538, 6.461102, -1.3150186] },
   { op: 'cut', at: [-1.8003398, 5.9014244, 0.38097703] },
+  { op: 'cut', at: [1.2, 7.5, 0.4], year: 38 },
   { op: 'cut', at: [30, 4, 0] },
 ];
 const editsDir = mkdtempSync(join(tmpdir(), 'sylva-parity-'));

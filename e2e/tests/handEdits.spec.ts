@@ -149,6 +149,9 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
     const u = new URL(link);
     if (!edits) u.searchParams.delete('e');
     u.searchParams.set('age', String(age));
+    // Past the Mature Age, only the callus: no shedding, thickening or drooping.
+    if (age > 40)
+      for (const id of ['shed_light', 'ring_width', 'droop']) u.searchParams.set(id, '0');
     return u.toString();
   };
   await fresh.goto(at(30, false));
@@ -156,8 +159,8 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
   await fresh.goto(at(30, true));
   expect(await waitForTree(fresh)).toBe(young);
   await expect(fresh.getByTestId('edit-pending')).toHaveText('in year 40');
-  // Fifteen years on (the tree keeps its mature form): woundwood rolls over the face, one more
-  // ring of vertices around the stump.
+  // Fifteen years on (the life over decades off, so the tree keeps its mature form): woundwood
+  // rolls over the face, one more ring of vertices around the stump.
   await fresh.goto(at(55, true));
   expect(await waitForTree(fresh)).not.toBe(cut);
   await expect(fresh.getByTestId('edit-pending')).toHaveCount(0);

@@ -110,7 +110,9 @@ export const closeupsSection = {
     // The same cut made in year 40 (the default tree's Age), seen 1, 2 and 5 years later: the
     // callus rolls in over the end grain from the bark rim (about 1 cm a year) and closes.
     for (const years of [1, 2, 5]) {
-      await ctx.open({ age: 40 + years }, `${edits}.40`);
+      // The life over decades off (no shedding, thickening or drooping): only the callus.
+      const still = { shed_light: 0, ring_width: 0, droop: 0 };
+      await ctx.open({ age: 40 + years, ...still }, `${edits}.40`);
       await ctx.view(add(add(cut, along, 0.2), [0.05, 0.06, 0]), add(cut, along, -0.02));
       const when = years === 1 ? 'a year' : `${years} years`;
       await shot(

@@ -1,5 +1,6 @@
 //! Issue 3: crown shapes, Angle Spread and the envelope preview, checked on the formulas and on
 //! generated trees (silhouettes rather than exact floats).
+#![allow(clippy::disallowed_methods, reason = "the test's own measures, not output bytes")]
 
 use sylva_core::crown::profile_radius;
 use sylva_core::params::SkeletonParams;

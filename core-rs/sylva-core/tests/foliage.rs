@@ -1,5 +1,6 @@
 //! Foliage: leaves only on the last stem level, the orientation rule of *Modeling the Mighty
 //! Maple for Web*, the leaf budget, determinism, and the grown-tree case.
+#![allow(clippy::disallowed_methods, reason = "the test's own measures, not output bytes")]
 
 use glam::Vec3;
 use sylva_core::foliage::{self, face_up, lower};

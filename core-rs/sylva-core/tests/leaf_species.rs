@@ -1,6 +1,7 @@
 //! Species leaves (issue 19): lobes placed along the midrib (pinnate) or radiating from the
 //! petiole (palmate), the primary veins they start from (pinnate, palmate, dichotomous),
 //! needles in fascicles, the petiole, and tree presets wearing their own leaves.
+#![allow(clippy::disallowed_methods, reason = "the test's own measures, not output bytes")]
 
 use glam::Vec2;
 use sylva_core::leaf::geom::point_in_polygon;

@@ -3,6 +3,8 @@
 //! their needles; spring leaves are small. The exported GLB's colours are in `tests/export/season.rs`,
 //! season edits in `tests/incremental.rs`.
 
+#![allow(clippy::disallowed_methods, reason = "the test's own colour measure, not output bytes")]
+
 use glam::Vec3;
 use sylva_core::crown_shade::CrownLight;
 use sylva_core::params::LeafPhenology;

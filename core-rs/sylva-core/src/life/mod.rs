@@ -3,12 +3,13 @@
 //! The skeleton stage builds a tree as it is at its Mature Age ([`crate::age`] replays the
 //! years before); with Age past it, these processes act over the years since, in this order:
 //!
-//! 1. **Shedding** ([`shed`]): a branch whose shoots stay in the shade dies and drops, leaving
-//!    a stub that woundwood closes over, a scar (Palubicki et al. 2009, *Self-organizing tree
-//!    models for image synthesis*, §4: shaded branches receive too little light to live).
-//! 2. **Secondary thickening** ([`thicken`]): a ring of new wood a year, shared by the pipe
+//! 1. **Secondary thickening** ([`thicken`]): a ring of new wood a year, shared by the pipe
 //!    model (Shinozaki et al. 1964, *A quantitative analysis of plant form: the pipe model
 //!    theory*): each stem's new wood is in proportion to the shoot tips it carries.
+//! 2. **Shedding** ([`shed`]): a branch whose shoots stay in the shade dies and drops, leaving
+//!    a stub out of the (thickened) bark that woundwood closes over, a knot (Palubicki et al.
+//!    2009, *Self-organizing tree models for image synthesis*, §4: shaded branches receive too
+//!    little light to live).
 //! 3. **Gravity bending** ([`droop`]): main branches sink under their growing load, the outer
 //!    part turning up again (the tip's gravitropism), as a uniformly loaded cantilever bends
 //!    (Alméras & Fournier 2009, *Biomechanical design and long-term stability of trees*).
@@ -30,7 +31,7 @@ pub fn live(skeleton: &mut Skeleton, p: &SkeletonParams) {
     if years <= 0.0 {
         return;
     }
-    shed::shed(skeleton, p.shed_light, p.shed_years, (p.maturity, p.age));
     thicken::thicken(skeleton, p.ring_width * 1e-3 * years);
+    shed::shed(skeleton, p.shed_light, p.shed_years, (p.maturity, p.age));
     droop::droop(skeleton, p.droop * years / 10.0);
 }

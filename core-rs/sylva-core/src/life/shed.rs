@@ -18,8 +18,8 @@ use glam::Vec3;
 
 /// Leaf area per unit of the crown's ground area (m²/m²): a closed broadleaf crown holds 3 to 6.
 pub const LEAF_AREA_INDEX: f32 = 4.0;
-/// A stub is this many of the branch's base radii long (plus [`STUB_EXTRA`]): dead branches
-/// break off a little way out from the collar.
+/// A stub reaches this many of the branch's base radii (plus [`STUB_EXTRA`]) out of its parent's
+/// bark: dead branches break off a little way out from the collar.
 pub const STUB_RADII: f32 = 2.5;
 /// Extra stub length (m).
 pub const STUB_EXTRA: f32 = 0.02;
@@ -102,7 +102,10 @@ pub fn shed(skeleton: &mut Skeleton, threshold: f32, delay: f32, (mature, age): 
     // Cut from the last, so the indices of the ones before stay valid.
     for &(i, death) in dead.iter().rev() {
         let s = &skeleton.stems[i];
-        let stub = (STUB_RADII * s.radius + STUB_EXTRA) / s.length.max(1e-3);
+        // From the parent's axis (where a branch starts) through its bark, then the stub.
+        let parent = &skeleton.stems[s.parent.expect("a branch") as usize];
+        let inside = parent.radius_at(s.offset / parent.length.max(1e-3));
+        let stub = (inside + STUB_RADII * s.radius + STUB_EXTRA) / s.length.max(1e-3);
         cut(skeleton, i, stub.min(0.5), age - death);
     }
 }

@@ -144,8 +144,9 @@ fn write_callus(
     let (crest_r, crest_h) = (radius - CREST * width, ROLL_HEIGHT * width);
     let binormal = frame.tangent.cross(frame.normal);
     // Bark `v` along the roll's profile (the same on every side: continuous across the ring).
-    let v_crest = v + (CREST * width).hypot(b + crest_h) / (TAU * r);
-    let v_inner = v_crest + (crest_r - open).hypot(crest_h) / (TAU * r);
+    // (Not `hypot`: std's is the platform's libm, which differs natively and in wasm.)
+    let v_crest = v + glam::Vec2::new(CREST * width, b + crest_h).length() / (TAU * r);
+    let v_inner = v_crest + glam::Vec2::new(crest_r - open, crest_h).length() / (TAU * r);
     let shift = tip - frame.centre;
     for j in 0..ring {
         let k = (last + j) * 3;

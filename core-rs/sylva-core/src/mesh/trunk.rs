@@ -67,6 +67,7 @@ pub fn union_outline(circles: &[Circle], dirs: &[(f32, f32)], out: &mut Vec<f32>
 }
 
 #[cfg(test)]
+#[allow(clippy::disallowed_methods, reason = "the tests' own measures, not output bytes")]
 mod tests {
     use super::*;
 

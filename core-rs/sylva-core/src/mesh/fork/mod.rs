@@ -223,6 +223,7 @@ pub(crate) fn indices(sides: u32, rows: usize) -> usize {
 }
 
 #[cfg(test)]
+#[allow(clippy::disallowed_methods, reason = "the tests' own measures, not output bytes")]
 pub(crate) mod tests {
     use super::*;
 
