@@ -37,6 +37,16 @@ cases.push({
   values: { growth_mode: 1, markers: 10000 },
   args: ['--set', 'growth_mode=1', '--set', 'markers=10000'],
 });
+// A 60-year grown tree (Grown: Broadleaf at Age 60, 25 years past its Mature Age: the growth
+// replay and the life over decades) is computed in <= 1 s in wasm.
+const broadleaf = JSON.parse(wasm.presets_json()).find((p) => p.name === 'grown_broadleaf');
+if (broadleaf) {
+  cases.push({
+    name: 'grown_broadleaf_age60',
+    values: { ...broadleaf.values, age: 60 },
+    args: ['--preset', 'grown_broadleaf', '--set', 'age=60'],
+  });
+}
 // Issue 4: the default tree with about 50,000 instanced leaves (34 per twig) regenerates in <= 30 ms.
 cases.push({ name: 'leaves_50k', values: { leaves: 34 }, args: ['--set', 'leaves=34'] });
 

@@ -11,7 +11,7 @@ export const growthSection = {
   id: 'growth',
   title: 'Growth over years',
   intro:
-    "The Age slider below the Mature Age replays the growth that led to the mature tree: each stem is born the year after its parent reached it and grows along a Chapman-Richards curve, its radius by a ring a year. Past the Mature Age the tree lives on: the pipe model thickens it, shaded branches die and leave stubs that close into knots, main branches sink under their load with their tips turned up. Each row keeps the mature tree's camera. (A grown tree's years are its stems' replay too, until its growth is grouped into annual flushes.) Last, up close: a knot where a shaded main branch dropped.",
+    "The Age slider below the Mature Age replays the growth that led to the mature tree: each stem is born the year after its parent reached it and grows along a Chapman-Richards curve, its radius by a ring a year. Past the Mature Age the tree lives on: the pipe model thickens it, shaded branches die and leave stubs that close into knots, main branches sink under their load with their tips turned up. Each row keeps the mature tree's camera; a grown tree's years are its annual flushes (its growth iterations spread over its years). Last, up close: a knot where a shaded main branch dropped.",
   layout: (shots) => imageTable(shots, 7),
   async shots(ctx) {
     const shots = [];

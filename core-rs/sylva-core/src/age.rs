@@ -1,5 +1,8 @@
 //! # Age: a tree's growth replayed to a younger age
 //!
+//! (A Weber & Penn tree's; a grown tree is brought to its Age by its annual flushes of growth
+//! iterations instead, [`crate::growth::skeleton_by_years`].)
+//!
 //! The skeleton stage builds the tree as it is at its **Mature Age** (the form its other
 //! parameters describe); with **Age** below it, this replays the growth that led there: every
 //! stem gets a birth year and grows from it along a growth curve, so a young tree is the mature

@@ -131,3 +131,31 @@ fn an_age_outside_the_range_is_refused_by_name() {
     let e = TreeParams::from_json(r#"{"maturity": 1000}"#).unwrap_err();
     assert!(matches!(&e, SylvaError::InvalidParam { param, .. } if param == "maturity"), "{e:?}");
 }
+
+#[test]
+fn a_grown_tree_grows_in_annual_flushes_and_dates_its_wood() {
+    let p = sylva_core::presets::find("grown_broadleaf").unwrap().params().unwrap();
+    let mature = p.skeleton.maturity;
+    let mut last = 0usize;
+    for age in [mature * 0.25, mature * 0.5, mature * 0.75] {
+        let g = at_age("grown_broadleaf", age);
+        // The same tree as showing that fraction of the growth iterations (Growth Age).
+        let mut q = p.clone();
+        q.skeleton.growth_age = p.skeleton.growth_age * age / mature;
+        assert_eq!(g.hash, generate(&q).unwrap().hash, "Age {age} is the flushes of its years");
+        let n = g.skeleton.stems.len();
+        assert!(n >= last, "stems only come with the years");
+        last = n;
+        // (Whole iterations: the last one may reach a little into the next year.)
+        for s in &g.skeleton.stems {
+            assert!(s.born <= s.tip_year && s.tip_year <= age + 1.0, "{} .. {} at {age}", s.born, s.tip_year);
+        }
+        // The trunk grew from the first year, and some tip grew in the last one.
+        assert_eq!(g.skeleton.stems[0].born, 0.0);
+        assert!(g.skeleton.stems.iter().any(|s| s.tip_year > age - 1.0), "this year's flush at {age}");
+    }
+    // Leafy Years bares the old wood of a grown tree too.
+    let mut q = p.clone();
+    q.foliage.leaf_years = 5.0;
+    assert!(generate(&q).unwrap().foliage.count() < generate(&p).unwrap().foliage.count());
+}

@@ -131,10 +131,28 @@ pub fn pipe_radii(nodes: &[Node], tip: f32, delta: f32) -> Vec<f32> {
     r
 }
 
-/// Build the skeleton of a grown tree as seen at `age` (fraction 0..1 of its growth: nodes born
-/// later are left out, and thickness is recomputed for the younger tree).
+/// Build the skeleton of a grown tree as seen at its Growth Age (fraction 0..1 of its growth:
+/// nodes born later are left out, and thickness is recomputed for the younger tree).
 pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
-    let last = (p.growth_age * growth.iterations as f32).round() as u32;
+    skeleton_at(p, growth, p.growth_age)
+}
+
+/// The grown tree at `p`'s Age, in annual flushes: the iterations that make the tree at its
+/// Mature Age (its Growth Age of them) are spread evenly over its years, so a year's flush is
+/// the iterations of that year (about `iterations × Growth Age / Mature Age`), and the tree at
+/// Age `a` is the growth up to iteration `a / Mature Age` of the mature tree's. Every stem is
+/// dated by its nodes' iterations ([`Stem::born`], [`Stem::tip_year`]). Past the Mature Age it
+/// is the mature tree.
+pub fn skeleton_by_years(p: &SkeletonParams, growth: &Growth) -> Skeleton {
+    let years = (p.age / p.maturity.max(1e-3)).min(1.0);
+    skeleton_at(p, growth, p.growth_age * years)
+}
+
+/// [`skeleton`] with the nodes of the first `fraction` of the iterations.
+fn skeleton_at(p: &SkeletonParams, growth: &Growth, fraction: f32) -> Skeleton {
+    let last = (fraction * growth.iterations as f32).round() as u32;
+    // The year an iteration's flush grew in: the mature tree's iterations over its years.
+    let per_year = (p.growth_age * growth.iterations as f32 / p.maturity.max(1e-3)).max(1e-6);
     // Keep nodes born by `last` (parents are always older than their children).
     let mut remap = vec![ROOT; growth.nodes.len()];
     let mut nodes: Vec<Node> = Vec::new();
@@ -191,6 +209,10 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
         }
         let stem_index = stems.len() as u32;
         let points: Points = chain.iter().map(|&n| nodes[n as usize].pos).collect();
+        // The year its wood grew: its first own node's flush at the base, its last's at the tip.
+        let own = chain[usize::from(from != ROOT)];
+        let year = |n: u32| nodes[n as usize].born as f32 / per_year;
+        let (born, tip_year) = (year(own), year(*chain.last().expect("two nodes or more")));
         let mut r: Vec<f32> = chain.iter().map(|&n| radii[n as usize]).collect();
         if from != ROOT {
             r[0] = r[1]; // a side branch starts at its own thickness, not its parent's
@@ -237,8 +259,8 @@ pub fn skeleton(p: &SkeletonParams, growth: &Growth) -> Skeleton {
             radii: Some(r),
             cut_end: false,
             callus: 0.0,
-            born: 0.0,
-            tip_year: 0.0,
+            born,
+            tip_year,
             points,
         });
     }

@@ -111,12 +111,15 @@ fn build_stems(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Res
     let (mut skeleton, markers) = match p.growth_mode {
         GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
         GrowthMode::SpaceColonization => {
+            // Dated and brought to its Age by its annual flushes.
             let grown = growth::grow_with_crown(p, crown, progress)?;
-            (growth::skeleton(p, &grown), grown.markers)
+            (growth::skeleton_by_years(p, &grown), grown.markers)
         }
     };
-    crate::age::date(&mut skeleton, p.maturity);
-    crate::age::replay(&mut skeleton, p.age, p.maturity);
+    if p.growth_mode == GrowthMode::Parametric {
+        crate::age::date(&mut skeleton, p.maturity);
+        crate::age::replay(&mut skeleton, p.age, p.maturity);
+    }
     crate::life::live(&mut skeleton, p);
     Ok((skeleton, markers))
 }

@@ -11,6 +11,7 @@ use sylva_core::export::growth::key_years;
 use sylva_core::export::growth::life::Lives;
 use sylva_core::export::growth::morph::{bark_places, bark_target, StemIndex, YearShape};
 use sylva_core::export::growth::years::{growth_years, years_zip};
+use sylva_core::params::GrowthMode;
 
 fn params(name: &str, age: Option<f32>) -> TreeParams {
     let mut p = presets::find(name).expect("preset").params().expect("params");
@@ -136,13 +137,23 @@ fn the_morphed_tree_is_the_tree_generated_at_each_key_year() {
             // The same stems as the replay at Age y (a tree built young is reconstructed to a
             // few float roundings: a stem or two may sit on the edge of being born).
             let (n, m) = (shape.stems() as i64, cold.skeleton.stems.len() as i64);
-            let slack = if age < mature { 2 + m / 200 } else { 0 };
+            // A grown tree's stems are the chains of its nodes by their tips: a younger tree's
+            // nodes chain a little differently, so its count of stems differs a little.
+            let slack = if sk.mode == GrowthMode::SpaceColonization {
+                2 + m / 8
+            } else if age < mature {
+                2 + m / 200
+            } else {
+                0
+            };
             assert!((n - m).abs() <= slack, "{name} at {age}, year {y}: {n} stems vs {m}");
             let (lo, hi) = morphed(&g.mesh.positions, &bark_target(&g.mesh, &places, &shape));
             let (clo, chi) = (Vec3::from(cold.bounds.min), Vec3::from(cold.bounds.max));
             let size = (chi - clo).max_element();
             let off = (lo - clo).abs().max((hi - chi).abs()).max_element();
-            assert!(off < 0.03 * size + 0.02, "{name} at {age}, year {y}: bounds {lo}..{hi} vs {clo}..{chi}");
+            // A grown tree grows by whole internodes a flush, its morph evenly along each stem.
+            let step = if sk.mode == GrowthMode::SpaceColonization { p.skeleton.internode } else { 0.02 };
+            assert!(off < 0.03 * size + step, "{name} at {age}, year {y}: bounds {lo}..{hi} vs {clo}..{chi}");
         }
     }
 }

@@ -38,6 +38,9 @@ pub struct Lives {
     mature: f32,
     /// The age the tree was built at, at most `mature` (older trees keep the mature form).
     built: f32,
+    /// A grown tree: its stems are dated by their annual flushes ([`Stem::born`] at the base,
+    /// [`Stem::tip_year`] at the tip, the wood between grown evenly), which give their lengths.
+    dated: bool,
 }
 
 /// One stem in one year: how long (m, from its base along the stem as built) and how thick.
@@ -82,7 +85,23 @@ impl Lives {
                 tau,
             });
         }
-        Lives { stems, mature, built }
+        let dated = skeleton.mode == crate::params::GrowthMode::SpaceColonization;
+        Lives { stems, mature, built, dated }
+    }
+
+    /// A grown tree's stem `s` in `year` (see [`Lives::dated`]): its wood grew evenly from its
+    /// base's year to its tip's, and its radius by the years since its birth.
+    fn dated_year(&self, s: &Stem, year: f32) -> Option<Young> {
+        if year < s.born {
+            return None;
+        }
+        let grown = ((year - s.born) / (s.tip_year - s.born).max(1e-3)).clamp(0.0, 1.0);
+        let length = s.length * grown;
+        if length < MIN_SHOOT {
+            return None;
+        }
+        let tau = ((year - s.born) / (self.built - s.born).max(1e-3)).clamp(1e-6, 1.0);
+        Some(Young { length, tau, reached: grown.max(1e-6) })
     }
 
     /// Each stem in year `year` (clamped to the age the tree was built at), `None` where it is
@@ -102,6 +121,10 @@ impl Lives {
                     continue;
                 }
             }
+            if self.dated {
+                out.push(self.dated_year(s, year));
+                continue;
+            }
             let tau = (year - l.birth) / (self.mature - l.birth).max(1e-3);
             let reached = length_fraction(tau);
             let kept = (reached - l.chain_start) / (1.0 - l.chain_start).max(1e-6);
@@ -120,6 +143,9 @@ impl Lives {
     /// radii of its own, else the mature taper over the young chain ([`crate::age`]).
     pub fn radius(&self, i: usize, stem: &Stem, y: &Young, d: f32) -> f32 {
         let l = &self.stems[i];
+        if self.dated {
+            return stem.radius_at(d / stem.length.max(1e-6)) * y.tau;
+        }
         if stem.radii.is_some() {
             return stem.radius_at(d / stem.length.max(1e-6)) * y.tau / l.tau;
         }
