@@ -9,9 +9,8 @@ import { execFileSync } from 'node:child_process';
 import { copyFileSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { nativeCli } from '../../scripts/native-cli.mjs';
-import { waitForNewTree, waitForTree, watchErrors } from './helpers';
+import { bareGlbPage, waitForNewTree, waitForTree, watchErrors } from './helpers';
 
 const QUERY = 'v=1&seed=5&levels=2';
 
@@ -183,26 +182,7 @@ test("the baked GLB in three.js: leaves in the crown, tinted, with their twigs' 
   page,
 }) => {
   const glb = cliGlb('baked');
-  const three = fileURLToPath(new URL('../../node_modules/three/', import.meta.url));
-  // A bare page (no app) that loads the file with three.js's GLTFLoader and draws it.
-  await page.route('**/baked-view/**', async (route) => {
-    const path = new URL(route.request().url()).pathname.replace(/^\/baked-view\//, '');
-    if (path === 'index.html') {
-      await route.fulfill({ contentType: 'text/html', body: BAKED_VIEW_HTML });
-    } else if (path === 'tree.glb') {
-      await route.fulfill({ contentType: 'model/gltf-binary', body: glb });
-    } else if (path.startsWith('three/')) {
-      const file = join(three, path.slice('three/'.length));
-      await route.fulfill({ contentType: 'text/javascript', body: readFileSync(file) });
-    } else {
-      await route.fulfill({ status: 404 });
-    }
-  });
-  await page.goto('/baked-view/index.html');
-  const report = await page.waitForFunction(() => (window as { report?: unknown }).report, null, {
-    timeout: 120_000,
-  });
-  const r = (await report.jsonValue()) as {
+  const r = (await bareGlbPage(page, 'baked-view', BAKED_VIEW_HTML, glb)) as {
     error?: string;
     leafVertices: number;
     leafBox: number[];

@@ -10,9 +10,8 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { nativeCli } from '../../scripts/native-cli.mjs';
-import { waitForTree, watchErrors } from './helpers';
+import { bareGlbPage, waitForTree, watchErrors } from './helpers';
 
 /** A small young tree: two levels at Age 12 of 40. */
 const AGE = 12;
@@ -74,25 +73,7 @@ test('GLB with growth animation and GLB per year: the CLI files; three.js plays 
   expect(errors).toEqual([]);
 
   // The GLB alone in three.js: a bare page (no app) with GLTFLoader and an AnimationMixer.
-  const three = fileURLToPath(new URL('../../node_modules/three/', import.meta.url));
-  await page.route('**/growth-view/**', async (route) => {
-    const path = new URL(route.request().url()).pathname.replace(/^\/growth-view\//, '');
-    if (path === 'index.html') {
-      await route.fulfill({ contentType: 'text/html', body: GROWTH_VIEW_HTML });
-    } else if (path === 'tree.glb') {
-      await route.fulfill({ contentType: 'model/gltf-binary', body: glb });
-    } else if (path.startsWith('three/')) {
-      const file = join(three, path.slice('three/'.length));
-      await route.fulfill({ contentType: 'text/javascript', body: readFileSync(file) });
-    } else {
-      await route.fulfill({ status: 404 });
-    }
-  });
-  await page.goto('/growth-view/index.html');
-  const report = await page.waitForFunction(() => (window as { report?: unknown }).report, null, {
-    timeout: 120_000,
-  });
-  const r = (await report.jsonValue()) as {
+  const r = (await bareGlbPage(page, 'growth-view', GROWTH_VIEW_HTML, glb)) as {
     error?: string;
     clips: number;
     duration: number;

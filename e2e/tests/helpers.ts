@@ -1,5 +1,8 @@
 /** Shared e2e helpers: waiting for trees, driving sliders, analysing the canvas pixels. */
 import { expect, type ConsoleMessage, type Locator, type Page } from '@playwright/test';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 /** Scene background colour of the viewer (web/src/viewer/TreeViewer.ts BACKGROUND_COLOR). */
 export const BACKGROUND_RGB: [number, number, number] = [0xdc, 0xe6, 0xec];
@@ -188,4 +191,36 @@ export async function decodePng(
     return { width: bitmap.width, height: bitmap.height, base64: btoa(binary) };
   }, png.toString('base64'));
   return { width, height, data: new Uint8Array(Buffer.from(base64, 'base64')) };
+}
+
+/**
+ * Serves a bare page (no app) at `/<prefix>/index.html` with `html`, the GLB as `tree.glb` and
+ * three.js's files under `three/`, opens it, and returns its `window.report` once it is set (the
+ * page's script loads the file with three.js's GLTFLoader and reports what it found).
+ */
+export async function bareGlbPage(
+  page: Page,
+  prefix: string,
+  html: string,
+  glb: Buffer,
+): Promise<unknown> {
+  const three = fileURLToPath(new URL('../../node_modules/three/', import.meta.url));
+  await page.route(`**/${prefix}/**`, async (route) => {
+    const path = new URL(route.request().url()).pathname.replace(`/${prefix}/`, '');
+    if (path === 'index.html') {
+      await route.fulfill({ contentType: 'text/html', body: html });
+    } else if (path === 'tree.glb') {
+      await route.fulfill({ contentType: 'model/gltf-binary', body: glb });
+    } else if (path.startsWith('three/')) {
+      const file = join(three, path.slice('three/'.length));
+      await route.fulfill({ contentType: 'text/javascript', body: readFileSync(file) });
+    } else {
+      await route.fulfill({ status: 404 });
+    }
+  });
+  await page.goto(`/${prefix}/index.html`);
+  const report = await page.waitForFunction(() => (window as { report?: unknown }).report, null, {
+    timeout: 120_000,
+  });
+  return report.jsonValue();
 }

@@ -1,11 +1,36 @@
-// Gallery section: trees through their years (Age): the growth replay at 2, 5, 10 and 20 years,
+// Gallery section: trees through their years (Age): Weber & Penn trees at 2, 5, 10 and 20 years,
 // the Mature Age, and 20 and 60 years past it (the life over decades: thickening, shedding,
-// drooping), one row per preset, seen from the mature tree's camera; then the knot a shed
+// drooping), every grown preset at 2, 5, 10, 20, 40 and 60 years (annual flushes, then the life
+// over decades), one row per preset, seen from the mature tree's camera; then the knot a shed
 // branch leaves on an old trunk, up close.
 import { imageTable } from './context.mjs';
 
 /** The presets shown growing. */
-const TREES = ['default', 'oak', 'fir', 'grown_broadleaf'];
+const TREES = [
+  'default',
+  'oak',
+  'fir',
+  'grown_broadleaf',
+  'grown_shrub',
+  'grown_hedgerow',
+  'grown_beside_wall',
+  'grown_bushy',
+];
+
+/**
+ * The ages a row shows (seven): a Weber & Penn tree at 2, 5, 10, 20 years, mature, and 20 and 60
+ * years past it; a grown tree at 2, 5, 10, 20, 40 and 60 years with its Mature Age among them
+ * (and 80 when it is one of them).
+ */
+export function rowAges(name, mature) {
+  if (!name.startsWith('grown_')) {
+    return [2, 5, 10, 20, mature]
+      .filter((a, i, all) => a <= mature && all.indexOf(a) === i)
+      .concat([mature + 20, mature + 60]);
+  }
+  const ages = [...new Set([2, 5, 10, 20, 40, 60, mature])].sort((a, b) => a - b);
+  return ages.length < 7 ? ages.concat([80]) : ages;
+}
 
 export const growthSection = {
   id: 'growth',
@@ -20,9 +45,7 @@ export const growthSection = {
       if (!p || (ctx.presetFilter && !ctx.presetFilter.includes(p.name))) continue;
       const mature = p.values.maturity ?? 40;
       const cam = await ctx.open(p.values);
-      for (const age of [2, 5, 10, 20, mature]
-        .filter((a, i, all) => a <= mature && all.indexOf(a) === i)
-        .concat([mature + 20, mature + 60])) {
+      for (const age of rowAges(p.name, mature)) {
         await ctx.open({ ...p.values, age });
         await ctx.view(cam.position, cam.target);
         const file = `growth-${p.name}-${age}.png`;

@@ -36,10 +36,12 @@ fn at_the_mature_age_nothing_changes_whatever_the_life_parameters() {
 
 #[test]
 fn shading_sheds_branches_over_decades_and_leaves_closing_scars() {
-    let young = at(20.0, &[]);
-    let mature = at(40.0, &[]);
-    let old = at(60.0, &[]);
-    let older = at(100.0, &[]);
+    // Shedding Light 0.3: a crown with its shaded third dropping over the decades.
+    let shady = [("shed_light", 0.3)];
+    let young = at(20.0, &shady);
+    let mature = at(40.0, &shady);
+    let old = at(60.0, &shady);
+    let older = at(100.0, &shady);
     let (m, o, oo) = (branches(&mature.skeleton), branches(&old.skeleton), branches(&older.skeleton));
     assert!(o < m && oo < o, "stems: mature {m}, 60 years {o}, 100 years {oo}");
     assert!(branches(&young.skeleton) < m, "a 20-year tree is still growing");

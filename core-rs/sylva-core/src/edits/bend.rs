@@ -10,7 +10,7 @@
 //! rigidly by the bend's rotation at its attachment point and moves with that point; base
 //! normals turn with their stems.
 
-use super::stems::{subtree, transform};
+use super::stems::carry_children;
 use crate::error::SylvaError;
 use crate::math::pow;
 use crate::params::edits::bad;
@@ -55,16 +55,7 @@ pub fn bend(skeleton: &mut Skeleton, i: usize, a: f32, to: Vec3, index: usize) -
     stem.base_normal = (first * old.base_normal).normalize_or(old.base_normal);
     skeleton.stems[i] = stem;
     // Children ride along.
-    for c in i + 1..skeleton.stems.len() {
-        if skeleton.stems[c].parent != Some(i as u32) {
-            continue;
-        }
-        let offset = skeleton.stems[c].offset;
-        let from = skeleton.stems[c].base();
-        let (on, _) = skeleton.stems[i].point_at(offset);
-        let turn = Quat::IDENTITY.slerp(q, weight(offset / old.length, power));
-        transform(skeleton, &subtree(skeleton, c), turn, from, on);
-    }
+    carry_children(skeleton, i, old.length, &|s| Quat::IDENTITY.slerp(q, weight(s, power)));
     Ok(())
 }
 

@@ -26,6 +26,21 @@ pub(crate) fn transform(skeleton: &mut Skeleton, mark: &[bool], rotation: Quat, 
     }
 }
 
+/// Moves the children of stem `i` (with their subtrees) after `i` was turned along its length
+/// `length` as built: each child's subtree turns rigidly by `turn(fraction of the length where it
+/// sits)` and moves with its attachment point onto `i`'s new curve (the bend and the droop).
+pub(crate) fn carry_children(skeleton: &mut Skeleton, i: usize, length: f32, turn: &dyn Fn(f32) -> Quat) {
+    for c in i + 1..skeleton.stems.len() {
+        if skeleton.stems[c].parent != Some(i as u32) {
+            continue;
+        }
+        let offset = skeleton.stems[c].offset;
+        let from = skeleton.stems[c].base();
+        let (on, _) = skeleton.stems[i].point_at(offset);
+        transform(skeleton, &subtree(skeleton, c), turn(offset / length), from, on);
+    }
+}
+
 /// Removes the marked stems and renumbers the parents of the others (a kept stem's parent is
 /// never removed: removal takes whole subtrees).
 pub(crate) fn remove(skeleton: &mut Skeleton, gone: &[bool]) {

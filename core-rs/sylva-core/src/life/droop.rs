@@ -12,7 +12,7 @@
 //! along, each subtree turned rigidly with its attachment point.
 
 use crate::edits::bend::resampled;
-use crate::edits::stems::{subtree, transform};
+use crate::edits::stems::carry_children;
 use crate::math::rad;
 use crate::skeleton::{Points, Skeleton, StemKind};
 use glam::{Quat, Vec3};
@@ -84,14 +84,5 @@ fn sag_branch(skeleton: &mut Skeleton, i: usize, sag: f32) {
     stem.points = points;
     stem.base_normal = (rotation(0.5 / segs as f32) * old.base_normal).normalize_or(old.base_normal);
     skeleton.stems[i] = stem;
-    for c in i + 1..skeleton.stems.len() {
-        if skeleton.stems[c].parent != Some(i as u32) {
-            continue;
-        }
-        let offset = skeleton.stems[c].offset;
-        let from = skeleton.stems[c].base();
-        let (on, _) = skeleton.stems[i].point_at(offset);
-        let turn_there = rotation(offset / old.length.max(1e-6));
-        transform(skeleton, &subtree(skeleton, c), turn_there, from, on);
-    }
+    carry_children(skeleton, i, old.length.max(1e-6), &rotation);
 }

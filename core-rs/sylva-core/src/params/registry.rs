@@ -28,7 +28,7 @@ define_params! {
             "The age at which the tree has the form its other parameters describe; each preset's Age starts here.";
         ring_width: f32 = 3.0; [0.0, 20.0, 0.1] "mm/year", "Life", "Ring Width", Skeleton,
             "Past the Mature Age, the trunk's base radius grows this much a year, and every stem thickens by the pipe model: its new wood in proportion to the shoot tips it carries.";
-        shed_light: f32 = 0.3; [0.0, 1.0, 0.01] "", "Life", "Shedding Light", Skeleton,
+        shed_light: f32 = 0.25; [0.0, 1.0, 0.01] "", "Life", "Shedding Light", Skeleton,
             "Past the Mature Age, a branch whose shoots see less sky than this (0 to 1, the crown's light field) dies and drops, leaving a stub the trunk overgrows into a scar (0: none shed).";
         shed_years: f32 = 15.0; [1.0, 100.0, 1.0] "years", "Life", "Shedding Delay", Skeleton,
             "Years a branch in half the Shedding Light lives on past the Mature Age: one seeing sky s lives Delay s / (Light - s) years, so the darkest drop first and those near the threshold decades later.";

@@ -362,7 +362,7 @@ class Params(TypedDict, total=False):
     ring_width: float
     """Ring Width (Life, float; 0 to 20 mm/year; default 3 mm/year): Past the Mature Age, the trunk's base radius grows this much a year, and every stem thickens by the pipe model: its new wood in proportion to the shoot tips it carries."""
     shed_light: float
-    """Shedding Light (Life, float; 0 to 1; default 0.3): Past the Mature Age, a branch whose shoots see less sky than this (0 to 1, the crown's light field) dies and drops, leaving a stub the trunk overgrows into a scar (0: none shed)."""
+    """Shedding Light (Life, float; 0 to 1; default 0.25): Past the Mature Age, a branch whose shoots see less sky than this (0 to 1, the crown's light field) dies and drops, leaving a stub the trunk overgrows into a scar (0: none shed)."""
     shed_years: float
     """Shedding Delay (Life, float; 1 to 100 years; default 15 years): Years a branch in half the Shedding Light lives on past the Mature Age: one seeing sky s lives Delay s / (Light - s) years, so the darkest drop first and those near the threshold decades later."""
     droop: float

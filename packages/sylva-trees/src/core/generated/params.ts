@@ -126,7 +126,7 @@ export const PARAM_SPECS = {
     group: 'Life',
     kind: 'float',
     stage: 'skeleton',
-    default: 0.30000001192092896,
+    default: 0.25,
     min: 0,
     max: 1,
     step: 0.01,
