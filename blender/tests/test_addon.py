@@ -9,7 +9,6 @@ import json
 import os
 import struct
 import subprocess
-import sys
 import tempfile
 from pathlib import Path
 
@@ -165,4 +164,3 @@ def main():
 
 if __name__ == "__main__":
     main()
-    sys.exit(0)
