@@ -261,9 +261,9 @@ fn stages() -> Vec<String> {
 }
 
 fn materials() -> Vec<String> {
-    let all = [Material::Bark, Material::Leaves, Material::CutFace];
+    let all = [Material::Bark, Material::Leaves, Material::CutFace, Material::Organ];
     all.iter().for_each(|m| match m {
-        Material::Bark | Material::Leaves | Material::CutFace => {}
+        Material::Bark | Material::Leaves | Material::CutFace | Material::Organ => {}
     });
     all.iter().map(|v| json_str(serde_json::to_value(v))).collect()
 }

@@ -34,6 +34,7 @@ use crate::error::SylvaError;
 use crate::leaf::{self, texture::LeafTexture, Leaf};
 use crate::math;
 use crate::mesh::TreeMesh;
+use crate::organs::OrganSet;
 use crate::params::{FoliageParams, GrowthMode, LeafLod, LeafParams};
 use crate::rng::Rng;
 use crate::skeleton::Skeleton;
@@ -64,12 +65,34 @@ pub struct Foliage {
     pub colors: Vec<f32>,
     /// The leaf (texture and hash), shared with the cache.
     pub leaf: Option<Arc<Leaf>>,
+    /// How many of the instances, at the end, are leaves lying on the ground (**Fallen
+    /// Leaves**, [`crate::season::Ground`]); the ones before them are on the tree.
+    pub fallen: usize,
+    /// Flowers, fruit, catkins and buds ([`crate::organs`]), one set per kind of part.
+    pub organs: Vec<OrganSet>,
 }
 
 impl Foliage {
-    /// Number of leaves.
+    /// Number of leaf instances (on the tree and fallen).
     pub fn count(&self) -> usize {
         self.colors.len() / 3
+    }
+
+    /// Number of leaves on the tree (the instances before the fallen ones).
+    pub fn on_tree(&self) -> usize {
+        self.count() - self.fallen
+    }
+
+    /// A tree without leaves or parts.
+    pub fn bare() -> Foliage {
+        Foliage {
+            mesh: TreeMesh::default(),
+            matrices: Vec::new(),
+            colors: Vec::new(),
+            leaf: None,
+            fallen: 0,
+            organs: Vec::new(),
+        }
     }
 
     /// The baked leaf colour texture, if there are leaves.
@@ -90,7 +113,8 @@ impl Foliage {
         word((m >> 32) as u32);
         self.matrices.iter().for_each(|v| word(v.to_bits()));
         self.colors.iter().for_each(|v| word(v.to_bits()));
-        h
+        // Trees without parts (every preset's summer) keep the hash they had before them.
+        self.organs.iter().fold(h, |h, o| o.hash_into(h))
     }
 }
 
@@ -246,7 +270,7 @@ pub fn place_lit_by(
     if need > u64::from(p.max_leaves) {
         return Err(budget_error(need, p.max_leaves));
     }
-    let bare = Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None };
+    let bare = Foliage::bare();
     if need == 0 {
         return Ok((bare, None));
     }
@@ -329,11 +353,19 @@ pub fn place_lit_by(
     // Inner leaves see less sky: the crown-depth term multiplies into the tints.
     let mut light = field.cloned().or_else(|| CrownLight::from_leaves(&matrices));
     // The season reads the summer crown's light; leaves resized or fallen make a new field.
-    if season.is_some_and(|s| s.apply(light.as_ref(), &mut matrices, &mut colors)) && field.is_none() {
+    let mut ground = p.fallen_leaves.then(crate::season::Ground::default);
+    if season.is_some_and(|s| s.apply(light.as_ref(), &mut matrices, &mut colors, ground.as_mut())) && field.is_none() {
         light = CrownLight::from_leaves(&matrices);
     }
     crate::crown_shade::darken_with(light.as_ref(), &matrices, &mut colors);
-    Ok((Foliage { matrices, colors, ..bare }, light))
+    // The fallen leaves follow the tree's, outside its light field.
+    let fallen = ground.as_ref().map_or(0, |g| g.colors.len() / 3);
+    if let Some(g) = ground {
+        matrices.extend_from_slice(&g.matrices);
+        colors.extend_from_slice(&g.colors);
+    }
+    let organs = crate::organs::place(skeleton, p);
+    Ok((Foliage { matrices, colors, fallen, organs, ..bare }, light))
 }
 
 /// Keeps the leaves marked in `recent` (Leafy Years: leaves only on wood grown in the last years;

@@ -17,6 +17,7 @@
 //! * [`age`]: a tree's growth replayed to a younger Age.
 //! * [`growth`]: space-colonization growth, an alternative source of stems.
 //! * [`mesh`]: the output buffer type, the bark tube sweep, Bezier twigs and tree holes.
+//! * [`organs`]: flowers, fruit, catkins and winter buds through the Season.
 //! * [`season`]: the Season's spring flush, autumn colours, leaf fall and bare winter trees.
 //! * [`export`]: GLB (glTF 2.0) and OBJ + MTL files of a generated tree.
 //!
@@ -42,6 +43,7 @@ pub mod lod;
 pub mod math;
 pub mod mesh;
 pub mod meta;
+pub mod organs;
 pub mod par;
 pub mod params;
 pub mod presets;

@@ -215,12 +215,7 @@ pub fn build_lod1(skeleton: &Skeleton, foliage: &Foliage, params: &MeshParams) -
 pub fn build_lod2(skeleton: &Skeleton, foliage: &Foliage, params: &MeshParams) -> Result<LodLevel, SylvaError> {
     let main = main_stems(skeleton);
     let mesh = tube::build(&main, &with_quality(params, LOD2_QUALITY))?;
-    Ok(LodLevel {
-        mesh,
-        foliage: Foliage { mesh: TreeMesh::default(), matrices: Vec::new(), colors: Vec::new(), leaf: None },
-        cloud: billboard_cloud(foliage),
-        stems: main.stems.len(),
-    })
+    Ok(LodLevel { mesh, foliage: Foliage::bare(), cloud: billboard_cloud(foliage), stems: main.stems.len() })
 }
 
 /// The trunk and the level-1 stems (parents remapped to the kept stems).
@@ -269,13 +264,16 @@ pub fn thin_leaves(foliage: &Foliage, stride: usize) -> Foliage {
     let s = (n as f32 / kept as f32).sqrt();
     let mut matrices = Vec::with_capacity(kept * 16);
     let mut colors = Vec::with_capacity(kept * 3);
+    let mut fallen = 0;
     for i in (0..n).step_by(stride) {
         let m = &foliage.matrices[i * 16..i * 16 + 16];
         matrices.extend(m[..12].iter().map(|v| v * s));
         matrices.extend_from_slice(&m[12..16]);
         colors.extend_from_slice(&foliage.colors[i * 3..i * 3 + 3]);
+        fallen += usize::from(i >= foliage.on_tree());
     }
-    Foliage { mesh: lighter_leaf_mesh(foliage), matrices, colors, leaf: foliage.leaf.clone() }
+    let organs = foliage.organs.clone();
+    Foliage { mesh: lighter_leaf_mesh(foliage), matrices, colors, leaf: foliage.leaf.clone(), fallen, organs }
 }
 
 /// Area of the leaf box (leaf units `x` × `y` mapped to metres) summed over the leaves: the

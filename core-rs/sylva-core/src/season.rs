@@ -111,6 +111,12 @@ const WILLOW: Phenology =
 /// Black tupelo: crimson and purple-red, the first to turn.
 const TUPELO: Phenology =
     deciduous([4.6, 5.5, 9.3, 10.0, 10.8], [[0.76, 0.09, 0.10], [0.56, 0.10, 0.20]], [0.80, 0.42, 0.14]);
+/// Wild cherry: orange and red.
+const CHERRY: Phenology =
+    deciduous([4.2, 5.0, 9.7, 10.4, 11.0], [[0.92, 0.46, 0.10], [0.80, 0.17, 0.10]], [0.80, 0.62, 0.20]);
+/// Apple: dull yellow and brown, late.
+const APPLE: Phenology =
+    deciduous([4.3, 5.2, 10.1, 10.8, 11.6], [[0.82, 0.72, 0.26], [0.70, 0.50, 0.18]], [0.60, 0.55, 0.25]);
 /// Evergreen conifers.
 const CONIFER: Phenology = Phenology { evergreen: true, ..ASPEN };
 
@@ -125,6 +131,8 @@ pub fn phenology(kind: LeafPhenology) -> &'static Phenology {
         LeafPhenology::Willow => &WILLOW,
         LeafPhenology::Tupelo => &TUPELO,
         LeafPhenology::Conifer => &CONIFER,
+        LeafPhenology::Cherry => &CHERRY,
+        LeafPhenology::Apple => &APPLE,
     }
 }
 
@@ -243,11 +251,82 @@ fn bronze(month: f32, sky: f32) -> LeafState {
     LeafState::Changed { scale: 1.0, tint: Vec3::ONE.lerp(Vec3::from(BRONZE.0), w) }
 }
 
+/// How long (months) a fallen leaf lies before it starts to rot away, and the spread of that.
+const LITTER_MONTHS: (f32, f32) = (4.0, 2.5);
+
+/// The tint of a leaf of `ph` on the ground at `month`, or `None` when it is not there: it fell
+/// this autumn (its autumn colour at its fall, browning on the ground), or last autumn while
+/// the tree is bare (it lies until it rots, from [`LITTER_MONTHS`] after its fall). A leaf
+/// that is absent because it has not yet left the bud this year is on the ground only as last
+/// year's leaf.
+fn fallen_tint(ph: &Phenology, pal: &Palette, month: f32, sky: f32, dice: LeafDice) -> Option<Vec3> {
+    if ph.evergreen {
+        return None;
+    }
+    let shift = (2.0 * dice.timing - 1.0) * JITTER;
+    let delay = shift + SHADE_DELAY * (1.0 - sun(sky));
+    let (onset, peak, end) = (ph.onset + delay, ph.peak + delay, ph.fall_end + delay);
+    let first_fall = peak - 0.3 * (peak - onset);
+    let fell = first_fall + (end - first_fall) * dice.fall;
+    let down = if month >= fell {
+        month - fell
+    } else if month < ph.leaf_out + shift {
+        month + 12.0 - fell
+    } else {
+        return None;
+    };
+    if down > LITTER_MONTHS.0 + LITTER_MONTHS.1 * dice.hue {
+        return None;
+    }
+    let tint = match leaf_state(ph, pal, fell - 1e-3, sky, dice) {
+        LeafState::Changed { tint, .. } => tint,
+        _ => Vec3::ONE,
+    };
+    Some(tint.lerp(pal.brown, 0.6 * ease(down / 2.0)) * GROUND_SHADE)
+}
+
+/// How much darker a leaf lies on the ground, in the crown's shade, than in the open.
+const GROUND_SHADE: f32 = 0.7;
+/// The farthest a falling leaf drifts sideways, as a fraction of the height it falls from.
+const DRIFT: f32 = 0.35;
+
+/// The fallen leaves on the ground under the crown (**Fallen Leaves**): each lies flat at
+/// `y ≈ 0` where it drifted to from its place in the crown, turned at random, in the same
+/// matrices-and-tints layout as the leaves on the tree (so it is drawn with the same leaf).
+#[derive(Debug, Default)]
+pub struct Ground {
+    /// Per-leaf 4×4 matrices, column-major.
+    pub matrices: Vec<f32>,
+    /// Per-leaf RGB tints.
+    pub colors: Vec<f32>,
+}
+
+impl Ground {
+    /// Lays the leaf of matrix `m`, centred at `centre` in the crown, tinted `tint`, by its
+    /// three random numbers `drop` (drift, its direction, the leaf's turn).
+    fn lay(&mut self, m: &[f32; 16], centre: Vec3, tint: Vec3, drop: [f32; 3]) {
+        let col = |k: usize| Vec3::new(m[4 * k], m[4 * k + 1], m[4 * k + 2]).length();
+        let (w, l, d) = (col(0), col(1), col(2));
+        let a = std::f32::consts::TAU * drop[1];
+        let drift = Vec3::new(math::cos(a), 0.0, math::sin(a)) * (DRIFT * centre.y.max(0.0) * drop[0]);
+        let b = std::f32::consts::TAU * drop[2];
+        let y = Vec3::new(math::cos(b), 0.0, math::sin(b));
+        let x = y.cross(Vec3::Y);
+        let at = Vec3::new(centre.x, 0.003 + 0.004 * drop[0], centre.z) + drift - y * (0.5 * l);
+        for (axis, s) in [(x, w), (y, l), (Vec3::Y, d)] {
+            self.matrices.extend_from_slice(&[axis.x * s, axis.y * s, axis.z * s, 0.0]);
+        }
+        self.matrices.extend_from_slice(&[at.x, at.y, at.z, 1.0]);
+        self.colors.extend_from_slice(&tint.to_array());
+    }
+}
+
 /// The leaf sites of one placement, gathered while the leaves are placed: each leaf's base on
 /// its stem and its random numbers.
 #[derive(Debug)]
 pub struct Sites {
     rng: Rng,
+    seed: u32,
     month: f32,
     kind: LeafPhenology,
     origins: Vec<Vec3>,
@@ -259,6 +338,7 @@ impl Sites {
     pub fn new(seed: u32, p: &FoliageParams) -> Option<Sites> {
         (p.season != SUMMER).then(|| Sites {
             rng: Rng::new(u64::from(seed), "season"),
+            seed,
             month: p.season,
             kind: p.leaf_phenology,
             origins: Vec::new(),
@@ -293,23 +373,39 @@ impl Sites {
 
     /// Applies the season to the placed leaves (`matrices` and `colors` as [`crate::foliage`]
     /// has them, not yet darkened), reading each leaf's light in `light` (the summer crown's
-    /// field; `None`: every leaf in the open). Absent leaves are removed. Returns whether the
-    /// crown's leaf area changed (a leaf resized or removed), so its light field must be
-    /// built again.
-    pub fn apply(self, light: Option<&CrownLight>, matrices: &mut Vec<f32>, colors: &mut Vec<f32>) -> bool {
+    /// field; `None`: every leaf in the open). Absent leaves are removed; those that fell
+    /// (this autumn, or last autumn while the tree is bare) go to `ground` when it is given
+    /// ([`Ground`]). Returns whether the crown's leaf area changed (a leaf resized or
+    /// removed), so its light field must be built again.
+    pub fn apply(
+        self,
+        light: Option<&CrownLight>,
+        matrices: &mut Vec<f32>,
+        colors: &mut Vec<f32>,
+        mut ground: Option<&mut Ground>,
+    ) -> bool {
         let ph = phenology(self.kind);
         let pal = Palette::of(ph);
         let mut kept = 0usize;
         let mut area_changed = false;
+        let mut litter = Rng::new(u64::from(self.seed), "fallen");
         for (i, (&origin, &dice)) in self.origins.iter().zip(&self.dice).enumerate() {
             let mut m: [f32; 16] = matrices[16 * i..16 * i + 16].try_into().expect("16 floats per leaf");
             let mut c = [colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]];
             let centre = Vec3::new(m[12], m[13], m[14]) + 0.5 * Vec3::new(m[4], m[5], m[6]);
             let sky = light.map_or(1.0, |f| f.sky_at(centre));
+            // Every leaf draws its place on the ground, fallen or not, so a leaf lies in the
+            // same place all winter.
+            let drop = [litter.next_f32(), litter.next_f32(), litter.next_f32()];
             match leaf_state(ph, &pal, self.month, sky, dice) {
                 LeafState::Summer => {}
                 LeafState::Absent => {
                     area_changed = true;
+                    if let Some(g) = ground.as_deref_mut() {
+                        if let Some(tint) = fallen_tint(ph, &pal, self.month, sky, dice) {
+                            g.lay(&m, centre, Vec3::from(c) * tint, drop);
+                        }
+                    }
                     continue;
                 }
                 LeafState::Changed { scale, tint } => {

@@ -117,5 +117,5 @@ fn cloud_foliage(cloud: &[f32]) -> Foliage {
         );
         colors.extend_from_slice(&q[9..12]);
     }
-    Foliage { mesh, matrices, colors, leaf: None }
+    Foliage { mesh, matrices, colors, ..Foliage::bare() }
 }

@@ -32,6 +32,8 @@ pub enum Material {
     /// The end grain of a cut stem's face ([`cut_face`]), inside its bark rim.
     #[serde(rename = "cut_face")]
     CutFace,
+    /// A flower, fruit, catkin or bud ([`crate::organs`]): each set has its own colour.
+    Organ,
 }
 
 impl Material {
@@ -41,6 +43,7 @@ impl Material {
             Material::Bark => "bark",
             Material::Leaves => "leaves",
             Material::CutFace => "cut_face",
+            Material::Organ => "organ",
         }
     }
 }

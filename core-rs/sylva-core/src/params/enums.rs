@@ -173,6 +173,32 @@ param_enum! {
         Tupelo = 6, "Tupelo";
         /// Evergreen conifer: keeps its needles, a slight bronzing in winter.
         Conifer = 7, "Evergreen Conifer";
+        /// Wild cherry: white blossom in April just before and with its leaves, cherries ripe in
+        /// June, orange and red in October.
+        Cherry = 8, "Cherry";
+        /// Apple: pink-budded white blossom with its leaves in May, apples through the summer,
+        /// yellow-brown late in autumn.
+        Apple = 9, "Apple";
+    }
+}
+
+param_enum! {
+    /// The fruit a tree bears in its months ([`crate::organs`]).
+    Fruit {
+        /// No fruit shown.
+        None = 0, "None";
+        /// Oak acorns in their cups, green in August, brown and dropping in October.
+        Acorns = 1, "Acorns";
+        /// Paired winged maple seeds, hanging in bunches, green then tan, falling in autumn.
+        Samaras = 2, "Samaras";
+        /// Pine cones hanging under the shoots, brown from August through the winter.
+        HangingCones = 3, "Hanging Cones";
+        /// Fir cones standing upright on the top of the upper branches, August to November.
+        UprightCones = 4, "Upright Cones";
+        /// Cherries in pairs on long stalks, green after the blossom, red in June.
+        Cherries = 5, "Cherries";
+        /// Apples on short stalks, swelling from June, red-cheeked by September.
+        Apples = 6, "Apples";
     }
 }
 

@@ -36,8 +36,8 @@ pub mod volumes;
 
 pub use edits::{Bend, Crown, Cut, Edit, Paint};
 pub use enums::{
-    BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries,
-    LeafVenation, TwigDetail,
+    BarkType, CrownShape, CrownVolumeKind, Fruit, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPhenology,
+    LeafPrimaries, LeafVenation, TwigDetail,
 };
 pub use registry::{FoliageParams, LeafParams, LevelParams, MeshParams, SkeletonParams, ViewerParams};
 pub use spec::{ParamKind, ParamSpec, ParamValue, Stage, GROUPS};

@@ -10,8 +10,8 @@
 //! The macro is `define_params!` (`params/macros.rs`).
 
 use super::enums::{
-    BarkType, CrownShape, CrownVolumeKind, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries,
-    LeafVenation, TwigDetail,
+    BarkType, CrownShape, CrownVolumeKind, Fruit, GrowthMode, LeafLod, LeafMargin, LeafOutline, LeafPhenology,
+    LeafPrimaries, LeafVenation, TwigDetail,
 };
 use super::macros::define_params;
 use super::{ParamSpec, ParamValue, Stage, GROUPS};
@@ -194,6 +194,14 @@ define_params! {
             "Random per-leaf tint: brightness and a shift toward yellow.";
         season: f32 = 7.0; [1.0, 12.99, 0.05] "month", "Foliage", "Season", Foliage,
             "Month of the year (northern temperate; 1 = 1 January, 7.5 = mid-July): spring leaves flush small and pale, autumn leaves turn by species and light (sun leaves first) and fall, deciduous trees are bare in winter and conifers bronze slightly. July (the default) is the summer tree.";
+        organs: bool = true; [0, 1, 1] "", "Flowers & Fruit", "Flowers & Fruit", Foliage,
+            "Through the Season: blossom (cherry, apple) and catkins (birch, aspen, willow) in spring, the Fruit in its months, buds at the shoot tips of bare deciduous trees in winter.";
+        fruit: Fruit = Fruit::None; [0, 6, 1] "", "Flowers & Fruit", "Fruit", Foliage,
+            "The fruit the tree bears in its months: acorns (August to November), samaras (August to November), hanging or upright cones (from August), cherries (May to June), apples (June to October).";
+        fruit_load: f32 = 0.3; [0.0, 1.0, 0.01] "", "Flowers & Fruit", "Fruit Load", Foliage,
+            "Fraction of the leafy shoots that carry flowers and fruit (each shoot one cluster near its tip).";
+        fallen_leaves: bool = true; [0, 1, 1] "", "Flowers & Fruit", "Fallen Leaves", Foliage,
+            "Leaves that fell lie on the ground under the crown, from their fall until the next spring.";
         leaf_years: f32 = 0.0; [0.0, 100.0, 1.0] "years", "Life", "Leafy Years", Foliage,
             "Leaves only on wood grown in the last this many years (the youngest shoots): older, inner wood goes bare (0: leaves on all wood).";
         foliage_lod: LeafLod = LeafLod::Auto; [0, 3, 1] "", "Foliage", "Leaf Mesh", Leaf,
@@ -224,7 +232,7 @@ define_params! {
             "Leaf stalk between the twig and the blade (leaf lengths); the tree hangs the blade this far from its stem.";
         leaf_petiole_flat: bool = true; [0, 1, 1] "", "Leaf", "Flat Petiole", Leaf,
             "The petiole is flattened sideways, across the blade's plane, so the leaf flutters in the lightest wind (aspens, poplars).";
-        leaf_phenology: LeafPhenology = LeafPhenology::Aspen; [0, 7, 1] "", "Leaf", "Phenology", Foliage,
+        leaf_phenology: LeafPhenology = LeafPhenology::Aspen; [0, 9, 1] "", "Leaf", "Phenology", Foliage,
             "Whose calendar and autumn colours the leaves follow through the Season: when they leaf out, turn and fall, and their autumn palette (aspen, birch, ginkgo and willow yellow, maple scarlet to orange, oak russet and brown, tupelo crimson); an Evergreen Conifer keeps its needles.";
         leaf_fascicle: u32 = 1; [1, 5, 1] "", "Leaf", "Needles per Fascicle", Leaf,
             "1 = one leaf; 2 to 5 = a pine fascicle: that many round needles (the outline's length and width) from one sheath.";

@@ -166,7 +166,7 @@ impl ParamValue for bool {
     }
 }
 /// Panel sections in display order. Every parameter's group is one of these.
-pub const GROUPS: [&str; 16] = [
+pub const GROUPS: [&str; 17] = [
     "Tree",
     "Life",
     "Crown",
@@ -178,6 +178,7 @@ pub const GROUPS: [&str; 16] = [
     "Growth Volume",
     "Environment",
     "Foliage",
+    "Flowers & Fruit",
     "Quality",
     "Budget",
     "Leaf",

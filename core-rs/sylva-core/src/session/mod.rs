@@ -350,9 +350,9 @@ impl Session {
             Some(c) => Changes {
                 skeleton: skeleton.is_some(),
                 bark: bark.is_some(),
-                placements: placements
-                    .as_ref()
-                    .is_some_and(|(f, _)| f.matrices != c.foliage.matrices || f.colors != c.foliage.colors),
+                placements: placements.as_ref().is_some_and(|(f, _)| {
+                    f.matrices != c.foliage.matrices || f.colors != c.foliage.colors || f.organs != c.foliage.organs
+                }),
                 leaf_mesh: leaf.as_ref().is_some_and(|(m, _)| *m != c.foliage.mesh),
                 leaf: leaf.as_ref().is_some_and(|(_, l)| l.as_ref().map_or(0, |l| l.hash) != c.foliage.leaf_hash()),
                 shade: shade.as_ref().is_some_and(|s| *s != c.bark.mesh.shade),

@@ -181,6 +181,10 @@ ParamId = Literal[
     "foliage_color_v",
     "season",
     "foliage_lod",
+    "organs",
+    "fruit",
+    "fruit_load",
+    "fallen_leaves",
     "twig_detail",
     "mesh_quality",
     "max_vertices",
@@ -284,6 +288,17 @@ FoliageLodOption = Literal[
 ]
 """The option labels of `foliage_lod` (Leaf Mesh); the index is the value."""
 
+FruitOption = Literal[
+    "None",
+    "Acorns",
+    "Samaras",
+    "Hanging Cones",
+    "Upright Cones",
+    "Cherries",
+    "Apples",
+]
+"""The option labels of `fruit` (Fruit); the index is the value."""
+
 TwigDetailOption = Literal[
     "1 (finest)",
     "2",
@@ -309,6 +324,8 @@ LeafPhenologyOption = Literal[
     "Willow",
     "Tupelo",
     "Evergreen Conifer",
+    "Cherry",
+    "Apple",
 ]
 """The option labels of `leaf_phenology` (Phenology); the index is the value."""
 
@@ -629,6 +646,14 @@ class Params(TypedDict, total=False):
     """Season (Foliage, float; 1 to 12.99 month; default 7 month): Month of the year (northern temperate; 1 = 1 January, 7.5 = mid-July): spring leaves flush small and pale, autumn leaves turn by species and light (sun leaves first) and fall, deciduous trees are bare in winter and conifers bronze slightly. July (the default) is the summer tree."""
     foliage_lod: int | FoliageLodOption
     """Leaf Mesh (Foliage, enum; 0 Auto, 1 Blade, 2 Billboards, 3 Card; default Auto): Geometry drawn for every leaf: Auto (the full blade while the foliage stays under 200,000 triangles, else billboards, else cards), Blade, Billboards or Card."""
+    organs: bool
+    """Flowers & Fruit (Flowers & Fruit, bool; True or False; default True): Through the Season: blossom (cherry, apple) and catkins (birch, aspen, willow) in spring, the Fruit in its months, buds at the shoot tips of bare deciduous trees in winter."""
+    fruit: int | FruitOption
+    """Fruit (Flowers & Fruit, enum; 0 None, 1 Acorns, 2 Samaras, 3 Hanging Cones, 4 Upright Cones, 5 Cherries, 6 Apples; default None): The fruit the tree bears in its months: acorns (August to November), samaras (August to November), hanging or upright cones (from August), cherries (May to June), apples (June to October)."""
+    fruit_load: float
+    """Fruit Load (Flowers & Fruit, float; 0 to 1; default 0.3): Fraction of the leafy shoots that carry flowers and fruit (each shoot one cluster near its tip)."""
+    fallen_leaves: bool
+    """Fallen Leaves (Flowers & Fruit, bool; True or False; default True): Leaves that fell lie on the ground under the crown, from their fall until the next spring."""
     twig_detail: int | TwigDetailOption
     """Twig Detail (Quality, enum; 0 1 (finest), 1 2, 2 4, 3 8 (coarsest); default 4): Bezier twigs (the thinnest stems): step along the control circle, 1 = four times the sides a tube of that radius gets, 4 = the same, 8 = half."""
     mesh_quality: float
@@ -658,7 +683,7 @@ class Params(TypedDict, total=False):
     leaf_petiole_flat: bool
     """Flat Petiole (Leaf, bool; True or False; default True): The petiole is flattened sideways, across the blade's plane, so the leaf flutters in the lightest wind (aspens, poplars)."""
     leaf_phenology: int | LeafPhenologyOption
-    """Phenology (Leaf, enum; 0 Aspen, 1 Maple, 2 Oak, 3 Birch, 4 Ginkgo, 5 Willow, 6 Tupelo, 7 Evergreen Conifer; default Aspen): Whose calendar and autumn colours the leaves follow through the Season: when they leaf out, turn and fall, and their autumn palette (aspen, birch, ginkgo and willow yellow, maple scarlet to orange, oak russet and brown, tupelo crimson); an Evergreen Conifer keeps its needles."""
+    """Phenology (Leaf, enum; 0 Aspen, 1 Maple, 2 Oak, 3 Birch, 4 Ginkgo, 5 Willow, 6 Tupelo, 7 Evergreen Conifer, 8 Cherry, 9 Apple; default Aspen): Whose calendar and autumn colours the leaves follow through the Season: when they leaf out, turn and fall, and their autumn palette (aspen, birch, ginkgo and willow yellow, maple scarlet to orange, oak russet and brown, tupelo crimson); an Evergreen Conifer keeps its needles."""
     leaf_fascicle: int
     """Needles per Fascicle (Leaf, int; 1 to 5; default 1): 1 = one leaf; 2 to 5 = a pine fascicle: that many round needles (the outline's length and width) from one sheath."""
     leaf_shoot: int

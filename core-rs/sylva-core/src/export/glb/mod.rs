@@ -221,7 +221,8 @@ fn write_with(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: u
     let pick = |m: Material| match m {
         Material::CutFace => cut_material.or(bark_material).or(leaf_material).unwrap_or(0),
         Material::Bark => bark_material.or(leaf_material).unwrap_or(0),
-        Material::Leaves => leaf_material.or(bark_material).unwrap_or(0),
+        // The bark mesh never carries organ groups; organs get their own materials.
+        Material::Leaves | Material::Organ => leaf_material.or(bark_material).unwrap_or(0),
     };
     let mut bark_wind = None;
     if has_bark {

@@ -1610,6 +1610,51 @@ export const PARAM_SPECS = {
     unit: '',
     options: ['Auto', 'Blade', 'Billboards', 'Card'],
   },
+  organs: {
+    label: 'Flowers & Fruit',
+    group: 'Flowers & Fruit',
+    kind: 'bool',
+    stage: 'foliage',
+    default: 1,
+    min: 0,
+    max: 1,
+    step: 1,
+    unit: '',
+  },
+  fruit: {
+    label: 'Fruit',
+    group: 'Flowers & Fruit',
+    kind: 'enum',
+    stage: 'foliage',
+    default: 0,
+    min: 0,
+    max: 6,
+    step: 1,
+    unit: '',
+    options: ['None', 'Acorns', 'Samaras', 'Hanging Cones', 'Upright Cones', 'Cherries', 'Apples'],
+  },
+  fruit_load: {
+    label: 'Fruit Load',
+    group: 'Flowers & Fruit',
+    kind: 'float',
+    stage: 'foliage',
+    default: 0.30000001192092896,
+    min: 0,
+    max: 1,
+    step: 0.01,
+    unit: '',
+  },
+  fallen_leaves: {
+    label: 'Fallen Leaves',
+    group: 'Flowers & Fruit',
+    kind: 'bool',
+    stage: 'foliage',
+    default: 1,
+    min: 0,
+    max: 1,
+    step: 1,
+    unit: '',
+  },
   twig_detail: {
     label: 'Twig Detail',
     group: 'Quality',
@@ -1773,10 +1818,21 @@ export const PARAM_SPECS = {
     stage: 'foliage',
     default: 0,
     min: 0,
-    max: 7,
+    max: 9,
     step: 1,
     unit: '',
-    options: ['Aspen', 'Maple', 'Oak', 'Birch', 'Ginkgo', 'Willow', 'Tupelo', 'Evergreen Conifer'],
+    options: [
+      'Aspen',
+      'Maple',
+      'Oak',
+      'Birch',
+      'Ginkgo',
+      'Willow',
+      'Tupelo',
+      'Evergreen Conifer',
+      'Cherry',
+      'Apple',
+    ],
   },
   leaf_fascicle: {
     label: 'Needles per Fascicle',
@@ -2275,10 +2331,20 @@ export interface ParamOptions {
   growth_mode: 'Parametric (Weber & Penn)' | 'Space Colonization';
   crown_volume: 'Ellipsoid' | 'Crown Shape envelope' | 'Primitives (user volumes)';
   foliage_lod: 'Auto' | 'Blade' | 'Billboards' | 'Card';
+  fruit: 'None' | 'Acorns' | 'Samaras' | 'Hanging Cones' | 'Upright Cones' | 'Cherries' | 'Apples';
   twig_detail: '1 (finest)' | '2' | '4' | '8 (coarsest)';
   leaf_outline: 'Superformula' | 'Spline' | 'Pinnate' | 'Palmate';
   leaf_phenology:
-    'Aspen' | 'Maple' | 'Oak' | 'Birch' | 'Ginkgo' | 'Willow' | 'Tupelo' | 'Evergreen Conifer';
+    | 'Aspen'
+    | 'Maple'
+    | 'Oak'
+    | 'Birch'
+    | 'Ginkgo'
+    | 'Willow'
+    | 'Tupelo'
+    | 'Evergreen Conifer'
+    | 'Cherry'
+    | 'Apple';
   leaf_margin: 'Entire' | 'Serrate' | 'Dentate' | 'Crenate' | 'Lobed';
   leaf_venation: 'None' | 'Open' | 'Closed' | 'Spline';
   leaf_primary_veins: 'None' | 'Pinnate' | 'Palmate' | 'Dichotomous';

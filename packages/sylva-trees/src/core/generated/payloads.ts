@@ -15,7 +15,7 @@ export const STAGES = ['skeleton', 'mesh', 'foliage', 'leaf', 'viewer'] as const
 export type Stage = (typeof STAGES)[number];
 
 /** Every value of `MaterialName`, in the core's order. */
-export const MATERIALS = ['bark', 'leaves', 'cut_face'] as const;
+export const MATERIALS = ['bark', 'leaves', 'cut_face', 'organ'] as const;
 
 /** The material of an index range of the bark mesh (`sylva_core::Material`). */
 export type MaterialName = (typeof MATERIALS)[number];
