@@ -17,6 +17,8 @@ const GOLDEN: &[(&str, &str)] = &[
     ("cypress", "fe0bfcfb389de051"),
     ("umbrella", "b490dcf7ac471bdc"),
     ("weeping", "a567c59b121ad2ac"),
+    ("cherry", "d52e4376d47b169d"),
+    ("apple", "a1035edd3447c206"),
     ("grown_broadleaf", "654350748d87a769"),
     ("grown_shrub", "6bfc872f9c669d7b"),
     ("grown_hedgerow", "f283bda79442a16c"),

@@ -20,6 +20,8 @@ const GOLDEN: &[(&str, &str)] = &[
     ("willow", "8250f969fa2c24dd"),
     ("tupelo", "d4024b2675e0d87b"),
     ("ginkgo", "fc0bebd1f956c591"),
+    ("cherry", "6946e198f5d443c1"),
+    ("apple", "045dc583950dd08d"),
     ("pine", "0427650aa9388f85"),
     ("fir", "810cb18ec87fd389"),
     ("cypress", "c1ef326598edb2d3"),

@@ -35,7 +35,18 @@ fn mid_july_is_the_summer_tree_on_every_preset() {
         let params = p.params().unwrap();
         let mut july = params.clone();
         july.foliage.season = 7.5;
-        assert_eq!(generate(&july).unwrap().hash, generate(&params).unwrap().hash, "{}", p.name);
+        let (mid, first) = (generate(&july).unwrap(), generate(&params).unwrap());
+        if first.foliage.organs.is_empty() {
+            assert_eq!(mid.hash, first.hash, "{}", p.name);
+        } else {
+            // The apple's young fruit swells through July; its leaves stay as they are.
+            assert_eq!(
+                (mid.foliage.matrices, mid.foliage.colors),
+                (first.foliage.matrices, first.foliage.colors),
+                "{}",
+                p.name
+            );
+        }
     }
 }
 

@@ -7,7 +7,9 @@
 
 use crate::error::SylvaError;
 use crate::param_values;
-use crate::params::{LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries, LeafVenation, ParamValues, TreeParams};
+use crate::params::{
+    Fruit, LeafMargin, LeafOutline, LeafPhenology, LeafPrimaries, LeafVenation, ParamValues, TreeParams,
+};
 
 /// A named set of leaf parameter values.
 #[derive(Clone, Debug)]
@@ -55,6 +57,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "English oak (Quercus robur)",
         description: "Obovate, five rounded lobes per side along the midrib, leaning to the tip, with rounded sinuses over halfway in, one secondary vein per lobe, very short petiole.",
         values: param_values! {
+            foliage.fruit = Fruit::Acorns,
             foliage.leaf_phenology = LeafPhenology::Oak,
             leaf.leaf_asymmetry_seed = 11,
             leaf.leaf_outline = LeafOutline::Pinnate,
@@ -85,6 +88,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "California black oak (Quercus kelloggii)",
         description: "Deeply cut into three or four pointed, bristle-tipped lobes per side; pinnate veins, one per lobe.",
         values: param_values! {
+            foliage.fruit = Fruit::Acorns,
             foliage.leaf_phenology = LeafPhenology::Oak,
             leaf.leaf_outline = LeafOutline::Pinnate,
             leaf.leaf_aspect = 0.72,
@@ -114,6 +118,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Norway maple (Acer platanoides)",
         description: "Palmate: five pointed lobes with a few large teeth, five primary veins from the petiole junction, closed net venation, long petiole.",
         values: param_values! {
+            foliage.fruit = Fruit::Samaras,
             foliage.leaf_phenology = LeafPhenology::Maple,
             leaf.leaf_outline = LeafOutline::Palmate,
             leaf.leaf_aspect = 1.2,
@@ -269,10 +274,63 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         },
     },
     LeafPreset {
+        name: "cherry",
+        label: "Wild cherry (Prunus avium)",
+        description: "Obovate-elliptic with a drawn-out tip, coarsely and doubly serrate, ten pairs of secondary veins curving toward the tip, a long petiole.",
+        values: param_values! {
+            foliage.fruit = Fruit::Cherries,
+            foliage.leaf_phenology = LeafPhenology::Cherry,
+            leaf.leaf_outline = LeafOutline::Pinnate,
+            leaf.leaf_aspect = 0.45,
+            leaf.leaf_base_shape = 0.9,
+            leaf.leaf_tip_shape = 1.7,
+            leaf.leaf_lobes = 0,
+            leaf.leaf_margin = LeafMargin::Serrate,
+            leaf.leaf_teeth = 70,
+            leaf.leaf_tooth_depth = 0.03,
+            leaf.leaf_tooth_sharpness = 0.6,
+            foliage.leaf_petiole = 0.3,
+            leaf.leaf_petiole_flat = false,
+            leaf.leaf_primary_veins = LeafPrimaries::Pinnate,
+            leaf.leaf_secondaries = 10,
+            leaf.leaf_secondary_angle = 50.0,
+            leaf.leaf_venation = LeafVenation::Open,
+            leaf.leaf_midrib_curvature = 0.15,
+            leaf.leaf_cross_curvature = 0.15,
+            leaf.leaf_edge_curl = 0.05,
+        },
+    },
+    LeafPreset {
+        name: "apple",
+        label: "Apple (Malus domestica)",
+        description: "Ovate to elliptic with a short point, finely crenate-serrate, soft and slightly downy, six pairs of secondary veins, a medium petiole.",
+        values: param_values! {
+            foliage.fruit = Fruit::Apples,
+            foliage.leaf_phenology = LeafPhenology::Apple,
+            leaf.leaf_outline = LeafOutline::Pinnate,
+            leaf.leaf_aspect = 0.6,
+            leaf.leaf_base_shape = 0.7,
+            leaf.leaf_tip_shape = 1.2,
+            leaf.leaf_lobes = 0,
+            leaf.leaf_margin = LeafMargin::Crenate,
+            leaf.leaf_teeth = 50,
+            leaf.leaf_tooth_depth = 0.02,
+            foliage.leaf_petiole = 0.35,
+            leaf.leaf_petiole_flat = false,
+            leaf.leaf_primary_veins = LeafPrimaries::Pinnate,
+            leaf.leaf_secondaries = 6,
+            leaf.leaf_secondary_angle = 45.0,
+            leaf.leaf_venation = LeafVenation::Open,
+            leaf.leaf_midrib_curvature = 0.2,
+            leaf.leaf_cross_curvature = 0.2,
+        },
+    },
+    LeafPreset {
         name: "pine",
         label: "Scots pine (Pinus sylvestris)",
         description: "Needles in fascicles of two from one sheath, each long, narrow and pointed, no veins, 30 fascicles all around a shoot.",
         values: param_values! {
+            foliage.fruit = Fruit::HangingCones,
             foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_shoot = 30,
             leaf.leaf_shoot_angle = 40.0,
@@ -298,6 +356,7 @@ pub const LEAF_PRESETS: &[LeafPreset] = &[
         label: "Silver fir (Abies alba)",
         description: "Single flat needles with rounded tips, set one by one along the twig and twisted into two flat ranks, 56 to a shoot.",
         values: param_values! {
+            foliage.fruit = Fruit::UprightCones,
             foliage.leaf_phenology = LeafPhenology::Conifer,
             leaf.leaf_shoot = 56,
             leaf.leaf_shoot_flat = true,

@@ -147,8 +147,8 @@ fn build(part: Part, kind: OrganKind) -> TreeMesh {
     let stalk = |r: f32| lathe(&[(0.0, 0.0), (0.0, r), (1.0, r), (1.0, 0.0)], 4);
     match (part, kind) {
         (_, OrganKind::Stalk) => stalk(if matches!(part, Part::Fruit(Fruit::Apples)) { 0.0014 } else { 0.0007 }),
-        (Part::CherryBlossom, OrganKind::Petals) => flower(0.013, 0.85, 25.0, 0.002, &blade(35.0, 80.0, 0.25)),
-        (_, OrganKind::Petals) => flower(0.018, 0.95, 30.0, 0.002, &blade(40.0, 85.0, 0.3)),
+        (Part::CherryBlossom, OrganKind::Petals) => flower(0.013, 1.7, 25.0, 0.002, &blade(35.0, 80.0, 0.25)),
+        (_, OrganKind::Petals) => flower(0.018, 1.8, 30.0, 0.002, &blade(40.0, 85.0, 0.3)),
         (_, OrganKind::FlowerCentre) => {
             lathe(&[(0.0, 0.0), (0.0, 0.004), (0.004, 0.0035), (0.007, 0.002), (0.008, 0.0)], SIDES)
         }
@@ -173,8 +173,9 @@ fn fruit(f: Fruit, kind: OrganKind) -> TreeMesh {
         (Fruit::Cherries, _) => ball(0.011, 0.95, 0.0015),
         (Fruit::Apples, _) => ball(0.034, 0.88, 0.006),
         (Fruit::Acorns, OrganKind::Fruit) => {
-            lathe(&profile(0.026, 0.0085, 8, 0.0, |t| math::pow(arch(0.5 * t + 0.5 * t * t), 0.8)), SIDES)
-                .with_offset(Vec3::new(0.0, 0.004, 0.0))
+            // Widest at the cup's rim, rounded into the cup, tapering to a blunt point.
+            let nut = |t: f32| if t < 0.3 { (t / 0.3).sqrt() } else { math::pow((1.0 - t) / 0.7, 0.6) };
+            lathe(&profile(0.026, 0.0085, 9, 0.0, nut), SIDES).with_offset(Vec3::new(0.0, 0.002, 0.0))
         }
         (Fruit::Acorns, _) => lathe(
             &[(0.0, 0.0), (0.002, 0.006), (0.006, 0.0092), (0.0105, 0.0098), (0.0110, 0.0075), (0.0095, 0.0)],

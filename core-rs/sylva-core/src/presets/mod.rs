@@ -11,8 +11,10 @@
 //! |---|---|
 //! | `species.rs` | Weber & Penn's four species, with the paper's values |
 //! | `shapes.rs` | five trees that illustrate one crown shape each |
+//! | `fruit.rs` | two flowering fruit trees, cherry and apple |
 //! | `grown.rs` | the space-colonization trees |
 
+mod fruit;
 mod grown;
 mod shapes;
 mod species;
@@ -38,7 +40,8 @@ pub struct Preset {
 
 /// All presets, the default tree first. The four Weber & Penn species use the paper's values (Weber
 /// & Penn 1995, *Creation and Rendering of Realistic Trees*); the next five illustrate one crown
-/// shape each; the `grown_*` presets use space-colonization growth.
+/// shape each; then two flowering fruit trees; the `grown_*` presets use space-colonization
+/// growth.
 pub const PRESETS: &[Preset] = &[
     DEFAULT,
     species::QUAKING_ASPEN,
@@ -50,6 +53,8 @@ pub const PRESETS: &[Preset] = &[
     shapes::CYPRESS,
     shapes::UMBRELLA,
     shapes::WEEPING,
+    fruit::CHERRY,
+    fruit::APPLE,
     grown::GROWN_BROADLEAF,
     grown::GROWN_SHRUB,
     grown::GROWN_HEDGEROW,

@@ -28,6 +28,8 @@ PresetName = Literal[
     "cypress",
     "umbrella",
     "weeping",
+    "cherry",
+    "apple",
     "grown_broadleaf",
     "grown_shrub",
     "grown_hedgerow",
