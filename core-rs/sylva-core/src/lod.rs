@@ -236,7 +236,7 @@ pub fn main_stems(skeleton: &Skeleton) -> Skeleton {
         stems.push(kept);
     }
     let Skeleton { mode, scale, crown_base, seed, levels, max_vertices, age, maturity, .. } = *skeleton;
-    Skeleton { mode, stems, scale, crown_base, seed, levels, max_vertices, age, maturity }
+    Skeleton { mode, stems, scale, crown_base, seed, levels, max_vertices, age, maturity, life: None }
 }
 
 /// The leaf mesh one step lighter than `mesh`: blade → billboard cloud → card.

@@ -30,17 +30,23 @@ pub fn callus(years: f32, radius: f32) -> f32 {
     (CALLUS_RATE * years.max(0.0) / radius.max(1e-3)).min(1.0)
 }
 
-/// Cut stem `i` at fraction `t` of its length, `years` ago (0: a fresh cut; older cuts carry
-/// woundwood, [`callus`]).
-pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32, years: f32) {
+/// What a cut takes away, decided on one skeleton and applicable to another with the same
+/// stems (the same tree thinner, in an earlier year: [`crate::life::LifeRecord::at`]).
+#[derive(Clone, Debug)]
+pub struct CutPlan {
+    /// The stump would sit inside its parent: the whole branch goes.
+    whole: bool,
+    /// The children (with their descendants) that go.
+    gone: Vec<bool>,
+}
+
+/// What cutting stem `i` at fraction `t` of its length takes away (see the module doc).
+pub fn plan(skeleton: &Skeleton, i: usize, t: f32) -> CutPlan {
     let s = &skeleton.stems[i];
-    let t = t.clamp(0.0, 1.0);
-    let along = t * s.length;
+    let along = t.clamp(0.0, 1.0) * s.length;
     let n = skeleton.stems.len();
     if s.parent.is_some() && along < 2.0 * s.radius {
-        // The stump would sit inside its parent: the whole branch goes.
-        remove(skeleton, &subtree(skeleton, i));
-        return;
+        return CutPlan { whole: true, gone: Vec::new() };
     }
     // Children whose footprint reaches past the cut go, with their descendants.
     let mut gone = vec![false; n];
@@ -52,6 +58,24 @@ pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32, years: f32) {
             None => {}
         }
     }
+    CutPlan { whole: false, gone }
+}
+
+/// Cut stem `i` at fraction `t` of its length, `years` ago (0: a fresh cut; older cuts carry
+/// woundwood, [`callus`]).
+pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32, years: f32) {
+    let plan = plan(skeleton, i, t);
+    cut_by(skeleton, i, t, years, &plan);
+}
+
+/// [`cut`] by a plan made on this skeleton or on one with the same stems.
+pub fn cut_by(skeleton: &mut Skeleton, i: usize, t: f32, years: f32, plan: &CutPlan) {
+    if plan.whole {
+        remove(skeleton, &subtree(skeleton, i));
+        return;
+    }
+    let t = t.clamp(0.0, 1.0);
+    let along = t * skeleton.stems[i].length;
     let old = skeleton.stems[i].clone();
     let segs = (old.points.len() - 1).max(MIN_SEGMENTS) * if old.flare > 0.0 { 4 } else { 1 };
     let mut cursor = old.points();
@@ -65,8 +89,8 @@ pub fn cut(skeleton: &mut Skeleton, i: usize, t: f32, years: f32) {
     stem.callus = callus(years, stem.radius_at(1.0));
     // The kept children sit on the resampled curve exactly (it differs from the old one by
     // rounding between the samples).
-    reattach_children(skeleton, i, &gone);
-    remove(skeleton, &gone);
+    reattach_children(skeleton, i, &plan.gone);
+    remove(skeleton, &plan.gone);
 }
 
 /// Moves each kept child of stem `i` (with its subtree) so that its base lies on `i`'s curve at

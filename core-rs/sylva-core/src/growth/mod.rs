@@ -264,17 +264,17 @@ fn skeleton_at(p: &SkeletonParams, growth: &Growth, fraction: f32) -> Skeleton {
             points,
         });
     }
-    let crown_base = p.crown_base;
     Skeleton {
         mode: GrowthMode::SpaceColonization,
         stems,
         scale: p.crown_base + p.crown_height,
-        crown_base,
+        crown_base: p.crown_base,
         seed: p.seed,
         levels: p.levels,
         max_vertices: p.max_vertices,
         age: p.age,
         maturity: p.maturity,
+        life: None,
     }
 }
 

@@ -24,14 +24,64 @@ pub mod thicken;
 
 use crate::params::SkeletonParams;
 use crate::skeleton::Skeleton;
+use std::sync::Arc;
 
-/// The years past `p`'s Mature Age acted on `skeleton` (see the module doc).
+/// What the years past the Mature Age started from and how they acted: kept on the
+/// skeleton ([`Skeleton::life`]) so the growth animation can show the tree in any year between
+/// ([`LifeRecord::at`]).
+#[derive(Clone, Debug)]
+pub struct LifeRecord {
+    /// The stems at the Mature Age, before any year of life.
+    pub mature: Skeleton,
+    /// Ring Width (m a year).
+    pub ring: f32,
+    /// Shedding Light and Shedding Delay.
+    pub shed: (f32, f32),
+    /// Droop (degrees a decade).
+    pub droop: f32,
+    /// The Mature Age and the Age.
+    pub years: (f32, f32),
+}
+
+impl LifeRecord {
+    /// The tree in `year` (from the Mature Age to the Age): thickened and sunk by the years to
+    /// it; the branches dead by the Age are shed, their stubs as old as they are in `year` (a
+    /// fresh cut before the branch's death: the animation has no wood for a branch the tree
+    /// as built has lost). At the Age, the tree as built.
+    pub fn at(&self, year: f32) -> Skeleton {
+        let (mature, age) = self.years;
+        let seen = year.clamp(mature, age);
+        let years = seen - mature;
+        // The branches are shed (and their stubs cut) as the tree at its Age has them, so
+        // every year has the same stems; an earlier year's thinner stems follow those cuts.
+        let mut s = self.mature.clone();
+        thicken::thicken(&mut s, self.ring * (age - mature));
+        let mut then = (seen < age).then(|| {
+            let mut t = self.mature.clone();
+            thicken::thicken(&mut t, self.ring * years);
+            t
+        });
+        shed::shed(&mut s, self.shed.0, self.shed.1, (mature, age), seen, then.as_mut());
+        let mut s = then.unwrap_or(s);
+        droop::droop(&mut s, self.droop * years / 10.0);
+        s
+    }
+}
+
+/// The years past `p`'s Mature Age acted on `skeleton` (see the module doc); the skeleton
+/// keeps the record of them ([`LifeRecord`]).
 pub fn live(skeleton: &mut Skeleton, p: &SkeletonParams) {
     let years = p.age - p.maturity;
     if years <= 0.0 {
         return;
     }
-    thicken::thicken(skeleton, p.ring_width * 1e-3 * years);
-    shed::shed(skeleton, p.shed_light, p.shed_years, (p.maturity, p.age));
-    droop::droop(skeleton, p.droop * years / 10.0);
+    let record = LifeRecord {
+        mature: skeleton.clone(),
+        ring: p.ring_width * 1e-3,
+        shed: (p.shed_light, p.shed_years),
+        droop: p.droop,
+        years: (p.maturity, p.age),
+    };
+    *skeleton = record.at(p.age);
+    skeleton.life = Some(Arc::new(record));
 }

@@ -12,7 +12,7 @@
 //! field is the mature crown's: the light a drop lets through is not given back to the others.
 
 use crate::crown_shade::CrownLight;
-use crate::edits::cut::cut;
+use crate::edits::cut::{cut_by, plan};
 use crate::skeleton::{Skeleton, StemKind};
 use glam::Vec3;
 
@@ -57,8 +57,17 @@ pub fn shoot_light(skeleton: &Skeleton) -> Option<CrownLight> {
 }
 
 /// Drops the branches that died of shade between the Mature Age and the Age (`years`:
-/// `(mature, age)`), each cut to a stub dated to its death (see the module doc).
-pub fn shed(skeleton: &mut Skeleton, threshold: f32, delay: f32, (mature, age): (f32, f32)) {
+/// `(mature, age)`), each cut to a stub dated to its death and seen in year `seen` (its callus
+/// has grown for the years from its death to `seen`; see the module doc). `twin`, the same
+/// stems in an earlier year (thinner), loses the same branches to the same stubs.
+pub fn shed(
+    skeleton: &mut Skeleton,
+    threshold: f32,
+    delay: f32,
+    (mature, age): (f32, f32),
+    seen: f32,
+    mut twin: Option<&mut Skeleton>,
+) {
     if threshold <= 0.0 {
         return;
     }
@@ -105,7 +114,12 @@ pub fn shed(skeleton: &mut Skeleton, threshold: f32, delay: f32, (mature, age): 
         // From the parent's axis (where a branch starts) through its bark, then the stub.
         let parent = &skeleton.stems[s.parent.expect("a branch") as usize];
         let inside = parent.radius_at(s.offset / parent.length.max(1e-3));
-        let stub = (inside + STUB_RADII * s.radius + STUB_EXTRA) / s.length.max(1e-3);
-        cut(skeleton, i, stub.min(0.5), age - death);
+        let stub = ((inside + STUB_RADII * s.radius + STUB_EXTRA) / s.length.max(1e-3)).min(0.5);
+        let plan = plan(skeleton, i, stub);
+        let years = (seen - death).max(0.0);
+        cut_by(skeleton, i, stub, years, &plan);
+        if let Some(t) = twin.as_deref_mut() {
+            cut_by(t, i, stub, years, &plan);
+        }
     }
 }

@@ -46,6 +46,9 @@ pub struct Skeleton {
     pub age: f32,
     /// The tree's Mature Age (years): the form the stems were built in ([`crate::age`]).
     pub maturity: f32,
+    /// For a tree past its Mature Age: the stems at it and the life that followed
+    /// ([`crate::life::LifeRecord`]), so the growth animation can show any year between.
+    pub life: Option<std::sync::Arc<crate::life::LifeRecord>>,
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
@@ -161,6 +164,7 @@ pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Ske
         max_vertices: p.max_vertices,
         age: p.age,
         maturity: p.maturity,
+        life: None,
     })
 }
 

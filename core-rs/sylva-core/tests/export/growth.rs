@@ -49,7 +49,7 @@ fn the_growth_glb_plays_year_0_to_the_age_over_one_target_per_key_year() {
         glb.check_layout();
         let label = format!("{name} at {age}");
         assert!(glb.node("leaves").unwrap().get("extensions").is_none(), "{label}: baked leaves");
-        let years = key_years(age, mature);
+        let years = key_years(age, mature, false);
         assert_eq!((years[0], *years.last().unwrap()), (0.0, age), "{label}");
         let targets = years.len() - 1;
         assert!((7..=9).contains(&targets), "{label}: {years:?}");
@@ -129,7 +129,7 @@ fn the_morphed_tree_is_the_tree_generated_at_each_key_year() {
         let still = bark_target(&g.mesh, &places, &now);
         let moved = still.iter().fold(0.0f32, |m, d| m.max(d.abs()));
         assert!(moved < 1e-4, "{name} at {age}: a vertex moves {moved} m at the Age");
-        for &y in key_years(age, mature).iter().filter(|&&y| y >= 1.0 && y < age) {
+        for &y in key_years(age, mature, false).iter().filter(|&&y| y >= 1.0 && y < age) {
             let shape = YearShape::new(sk, &lives, y);
             let mut q = p.clone();
             q.skeleton.age = y;
@@ -156,6 +156,62 @@ fn the_morphed_tree_is_the_tree_generated_at_each_key_year() {
             assert!(off < 0.03 * size + step, "{name} at {age}, year {y}: bounds {lo}..{hi} vs {clo}..{chi}");
         }
     }
+}
+
+/// The mean of the bark's `base + delta` heights, and the largest distance from the trunk's
+/// axis of the bark within 0.3 m of the ground (the trunk's base radius, with its flare).
+fn height_and_foot(base: &[f32], delta: &[f32]) -> (f32, f32) {
+    let (mut sum, mut foot) = (0.0f64, 0.0f32);
+    for (p, d) in base.chunks_exact(3).zip(delta.chunks_exact(3)) {
+        let q = Vec3::from_slice(p) + Vec3::from_slice(d);
+        sum += f64::from(q.y);
+        if Vec3::from_slice(p).y < 0.3 {
+            foot = foot.max(Vec3::new(q.x, 0.0, q.z).length());
+        }
+    }
+    ((sum / (base.len() / 3) as f64) as f32, foot)
+}
+
+#[test]
+fn an_old_tree_plays_its_life_past_the_mature_age() {
+    // The oak (Mature Age 100) at 160: sixty years of rings, shedding and drooping, played
+    // between key years 100, 115, 130 and 145 and the tree as built at 160.
+    let p = params("oak", Some(160.0));
+    let g = generate(&p).unwrap();
+    let glb = parse(&write_growth(&g, &ExportOptions::default(), 160.0, 100.0));
+    glb.check_layout();
+    let years = key_years(160.0, 100.0, true);
+    assert_eq!(years[years.len() - 5..], [100.0, 115.0, 130.0, 145.0, 160.0]);
+    let s = &glb.json["animations"][0]["samplers"][0];
+    assert_eq!(flat(&glb, s["input"].as_u64().unwrap()), years);
+    let mesh = glb.mesh_of("bark");
+    let prim = &mesh["primitives"][0];
+    let base = flat(&glb, prim["attributes"]["POSITION"].as_u64().unwrap());
+    let targets: Vec<Vec<f32>> =
+        prim["targets"].as_array().unwrap().iter().map(|t| flat(&glb, t["POSITION"].as_u64().unwrap())).collect();
+    assert_eq!(targets.len(), years.len() - 1);
+    let at = |y: f32| years.iter().position(|&k| k == y).unwrap();
+    let mut shapes: Vec<(f32, f32)> =
+        [100.0, 115.0, 130.0, 145.0].iter().map(|&y| height_and_foot(&base, &targets[at(y)])).collect();
+    shapes.push(height_and_foot(&base, &vec![0.0; base.len()]));
+    println!("oak 100 → 160: (mean bark height, trunk foot radius) {shapes:?}");
+    for w in shapes.windows(2) {
+        // The limbs sink year by year and the trunk thickens.
+        assert!(w[1].0 < w[0].0, "the bark rises from one key to the next: {shapes:?}");
+        assert!(w[1].1 > w[0].1, "the trunk thins: {shapes:?}");
+    }
+    // Sixty rings of 3 mm: the trunk's base radius is 18 cm more at 160 than at 100, and its
+    // flared foot grows in the same proportion.
+    let r = g.skeleton.stems[0].radius;
+    let (grew, expect) = (shapes[4].1 / shapes[0].1, r / (r - 0.18));
+    assert!((grew / expect - 1.0).abs() < 0.05, "the trunk's foot grew {grew}x, its base radius {expect}x");
+    // At the Mature Age the morphed tree is the tree generated at that Age, but for the branches
+    // it sheds later (stubs already): its bounds within a few per cent.
+    let cold = generate(&params("oak", Some(100.0))).unwrap();
+    let (lo, hi) = morphed(&base, &targets[at(100.0)]);
+    let (clo, chi) = (Vec3::from(cold.bounds.min), Vec3::from(cold.bounds.max));
+    let off = (lo - clo).abs().max((hi - chi).abs()).max_element();
+    assert!(off < 0.05 * (chi - clo).max_element(), "year 100: {lo}..{hi} vs {clo}..{chi}");
 }
 
 #[test]
