@@ -133,17 +133,21 @@ if (only.length === 0 || only.includes('default')) {
   }
 }
 
-// The growth animation: the default tree (Age 40) and a grown preset (grown_broadleaf, Age 35).
+// The growth animation: the default tree (Age 40), a grown preset (grown_broadleaf, Age 35) and
+// the default tree past its Mature Age (Age 60: its life played too, fewer leaves to keep it small).
 let growthFiles = 0;
-for (const [name, age] of [
-  ['default', 40],
-  ['grown_broadleaf', 35],
+for (const [name, age, extra] of [
+  ['default', 40, []],
+  ['grown_broadleaf', 35, []],
+  ['default', 60, ['--age', '60', '--set', 'leaves=6']],
 ]) {
   if (only.length > 0 && !only.includes(name)) continue;
-  const file = join(dir, `${name}-growth.glb`);
-  execFileSync(sylva, ['generate', '--preset', name, '--growth-animation', '--out', file], {
-    stdio: 'ignore',
-  });
+  const file = join(dir, `${name}-${age}-growth.glb`);
+  execFileSync(
+    sylva,
+    ['generate', '--preset', name, ...extra, '--growth-animation', '--out', file],
+    { stdio: 'ignore' },
+  );
   const bytes = new Uint8Array(readFileSync(file));
   if (keepAt < 0) rmSync(file);
   const report = await validateBytes(bytes, { maxIssues: 100 });
@@ -160,7 +164,7 @@ for (const [name, age] of [
   warnings += numWarnings;
   growthFiles++;
   console.log(
-    `${name.padEnd(19)} ${'growth'.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
+    `${`${name}${extra.length > 0 ? ` at ${age}` : ''}`.padEnd(19)} ${'growth'.padEnd(10)} ${mb(bytes.length)}  ${String(numErrors).padStart(6)} ${String(numWarnings).padStart(8)} ${String(numInfos).padStart(5)}` +
       (bad ? `  FAIL (animation ends at ${end}, Age ${age})` : ''),
   );
   for (const m of report.issues.messages) {

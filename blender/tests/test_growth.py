@@ -99,6 +99,8 @@ def render(out, label, years, fps):
 def main():
     check("default", [], 40)
     check("grown_broadleaf", ["--preset", "grown_broadleaf"], 35)
+    # Past its Mature Age (40): keys at 40, 45, 50, 55 and the Age, the limbs sinking.
+    check("default-aged", ["--age", "60", "--set", "leaves=6"], 60)
     print("growth animation: imported with shape keys and an action")
 
 

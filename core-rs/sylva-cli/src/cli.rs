@@ -228,9 +228,10 @@ pub struct GenerateArgs {
     /// The export options.
     #[command(flatten)]
     pub export: ExportArgs,
-    /// Add every stem (skeleton) or the mesh's topology, welds, forks and holes (mesh) to the
-    /// output; repeatable
-    #[arg(long, value_name = "skeleton|mesh", value_parser = report)]
+    /// Add every stem (skeleton), the mesh's topology, welds, forks and holes (mesh), or the
+    /// leaves on the tree and on the ground and every set of flowers, fruit, catkins and buds
+    /// with its instances' origins (foliage) to the output; repeatable
+    #[arg(long, value_name = "skeleton|mesh|foliage", value_parser = report)]
     pub report: Vec<String>,
 }
 
@@ -410,12 +411,12 @@ fn leaf_mode(v: &str) -> Result<LeafMode, String> {
     LeafMode::from_name(v).ok_or_else(|| format!("--leaves takes 'instanced', 'baked' or 'none', got '{v}'"))
 }
 
-/// `--report skeleton|mesh`.
+/// `--report skeleton|mesh|foliage`.
 fn report(what: &str) -> Result<String, String> {
-    if what == "skeleton" || what == "mesh" {
+    if what == "skeleton" || what == "mesh" || what == "foliage" {
         Ok(what.to_string())
     } else {
-        Err(format!("--report takes 'skeleton' or 'mesh', got '{what}'"))
+        Err(format!("--report takes 'skeleton', 'mesh' or 'foliage', got '{what}'"))
     }
 }
 

@@ -191,7 +191,7 @@ mod tests {
             synopsis(generate),
             "sylva generate [--preset NAME] [--seed N] [--age YEARS] [--set id=value]... [--volumes FILE.json] \
              [--edits FILE.json] [--out FILE.glb|FILE.obj] [--lods] [--growth-animation] [--growth-years FILE.zip] [--leaves instanced|baked|none] [--no-textures] [--no-tangents] \
-             [--no-wind] [--strict] [--report skeleton|mesh]..."
+             [--no-wind] [--strict] [--report skeleton|mesh|foliage]..."
         );
         let envelope = cmd.find_subcommand("envelope").expect("envelope");
         assert_eq!(synopsis(envelope), "sylva envelope --shape NAME [--samples N]");

@@ -98,6 +98,9 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
         out["split_fallbacks"] = g.stats.welds.split_fallbacks.into();
         out["forks"] = g.stats.welds.forks.into();
     }
+    if a.report.iter().any(|r| r == "foliage") {
+        out["foliage"] = foliage_report(&g.foliage);
+    }
     if a.report.iter().any(|r| r == "skeleton") {
         let stems: Vec<serde_json::Value> = g
             .skeleton
@@ -118,6 +121,20 @@ pub fn generate(a: &GenerateArgs) -> Result<String, String> {
         out["skeleton"] = serde_json::Value::Array(stems);
     }
     Ok(out.to_string())
+}
+
+/// `--report foliage`: the leaves on the tree and on the ground, and each set of parts with the
+/// origins of its instances.
+fn foliage_report(f: &sylva_core::foliage::Foliage) -> serde_json::Value {
+    let organs: Vec<serde_json::Value> = f
+        .organs
+        .iter()
+        .map(|s| {
+            let origins: Vec<[f32; 3]> = s.matrices.chunks_exact(16).map(|m| [m[12], m[13], m[14]]).collect();
+            serde_json::json!({"name": s.name, "kind": s.kind, "count": s.count(), "origins": origins})
+        })
+        .collect();
+    serde_json::json!({"leaves": f.on_tree(), "fallen": f.fallen, "organs": organs})
 }
 
 /// Writes the levels of `l` to `path` as one GLB ([`sylva_core::export::lods_glb`]), its nodes

@@ -98,6 +98,20 @@ fn enum_values_by_name_and_obj_output() {
 }
 
 #[test]
+fn report_foliage_lists_the_parts_of_the_season() {
+    let (code, out, _) = sylva(&["generate", "--preset", "oak", "--set", "season=9.5", "--report", "foliage"]);
+    assert_eq!(code, 0);
+    let f = &json(&out)["foliage"];
+    assert!(f["leaves"].as_u64().unwrap() > 1000);
+    assert_eq!(f["fallen"], 0);
+    let names: Vec<&str> = f["organs"].as_array().unwrap().iter().map(|o| o["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["acorn stalks", "acorns", "acorn cups"]);
+    let acorns = &f["organs"][1];
+    assert_eq!(acorns["kind"], "fruit");
+    assert_eq!(acorns["origins"].as_array().unwrap().len() as u64, acorns["count"].as_u64().unwrap());
+}
+
+#[test]
 fn report_skeleton_lists_stems() {
     let (code, out, _) = sylva(&["generate", "--preset", "weeping", "--report", "skeleton"]);
     assert_eq!(code, 0);
@@ -178,7 +192,7 @@ fn report_mesh_counts_open_and_non_manifold_edges() {
     assert_eq!((v["boundary_edges"].as_u64(), v["non_manifold_edges"].as_u64()), (Some(0), Some(0)));
     let (code, _, err) = sylva(&["generate", "--report", "everything"]);
     assert_eq!(code, 2);
-    assert!(err.contains("--report takes 'skeleton' or 'mesh'"), "{err}");
+    assert!(err.contains("--report takes 'skeleton', 'mesh' or 'foliage'"), "{err}");
 }
 
 /// A fresh, empty folder under the system's temporary folder.
