@@ -1,5 +1,5 @@
-// `npm run gallery`: renders the look of every preset, three trees through the seasons,
-// close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) and
+// `npm run gallery`: renders the look of every preset, every broadleaf through the seasons,
+// close-ups of flowers and fruit, growth over the years, close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) and
 // the Shape by hand tools before and after in the built app (web/dist, embed page, headless
 // Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under 150 KB each) and
 // writes docs/gallery.md. Each section is a module in scripts/gallery/ with
@@ -17,7 +17,7 @@ import { galleryContext, markdown, updateSections } from './gallery/context.mjs'
 import { closeupsSection } from './gallery/closeups.mjs';
 import { handEditsSection } from './gallery/handEdits.mjs';
 import { presetsSection } from './gallery/presets.mjs';
-import { seasonsSection } from './gallery/seasons.mjs';
+import { partsSection, seasonsSection } from './gallery/seasons.mjs';
 import { growthSection } from './gallery/growth.mjs';
 import { galleryLeaves } from './gallery-leaves.mjs';
 
@@ -25,6 +25,7 @@ import { galleryLeaves } from './gallery-leaves.mjs';
 export const SECTIONS = [
   presetsSection,
   seasonsSection,
+  partsSection,
   growthSection,
   closeupsSection,
   handEditsSection,
