@@ -1,7 +1,8 @@
 // `npm run gallery`: renders the look of every preset, every broadleaf through the seasons,
-// close-ups of flowers and fruit, growth over the years, close-ups of the details (bark types, a fork, a branch collar, a tree hole, a leaf cluster) and
-// the Shape by hand tools before and after in the built app (web/dist, embed page, headless
-// Chromium with software WebGL) into docs/gallery/*.png (palette PNGs, well under 150 KB each) and
+// close-ups of flowers and fruit, growth over the years, close-ups of the details (bark types,
+// a fork, a branch collar, a tree hole, a leaf cluster) and the Shape by hand tools before and
+// after in the built app (web/dist, embed page, headless Chromium with software WebGL) into
+// docs/gallery/*.png (palette PNGs, well under 150 KB each) and
 // writes docs/gallery.md. Each section is a module in scripts/gallery/ with
 // `{ id, title, intro, shots(ctx) }`; to add one, import it and append it to SECTIONS. The leaf
 // sheet (scripts/gallery-leaves.mjs, docs/gallery-leaves.md) follows (`--only leaves` alone).
