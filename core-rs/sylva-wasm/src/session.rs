@@ -67,6 +67,11 @@ impl Session {
         self.0.clear();
     }
 
+    /// The current tree's organ sets (none before the first update).
+    pub(crate) fn organs(&self) -> &[sylva_core::organs::OrganSet] {
+        self.0.current().map(|c| c.foliage.organs.as_slice()).unwrap_or_default()
+    }
+
     fn current(&self) -> Result<&sylva_core::session::Current, JsValue> {
         self.0.current().ok_or_else(|| JsValue::from_str("no tree yet: call update() first"))
     }
