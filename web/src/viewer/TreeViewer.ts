@@ -23,6 +23,7 @@ import type { TreeBuffers, TreeUpdate } from 'sylva-trees/core';
 import {
   applySoftShadows,
   buildEnvelopeGeometry,
+  ORGAN_MESH_PREFIX,
   SceneLights,
   TreeObject,
   type WindController,
@@ -30,6 +31,15 @@ import {
 import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
+
+/** The organ meshes and fallen leaves of the tree shown ([`TreeViewer.organs`], the debug hook). */
+export interface OrganDebug {
+  sets: { name: string; kind: string; count: number; visible: boolean }[];
+  /** Leaf instances (on the tree and fallen). */
+  leaves: number;
+  /** Leaf instances lying on the ground (below 0.3 m). */
+  onGround: number;
+}
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';
@@ -393,6 +403,29 @@ export class TreeViewer {
       this.shadowsDeferred = false;
       this.requestRender();
     }
+  }
+
+  /**
+   * Test support: the organ meshes in the scene (name, kind, instances, shown) and how many leaf
+   * instances lie on the ground (below 0.3 m: the fallen leaves) of how many.
+   */
+  organs(): OrganDebug {
+    const sets = this.tree.organMeshes.map((m) => ({
+      name: m.name.slice(ORGAN_MESH_PREFIX.length),
+      kind: String(m.userData.organKind),
+      count: m.count,
+      visible: m.visible && m.parent !== null,
+    }));
+    const matrices = this.tree.buffers?.foliage?.matrices ?? new Float32Array(0);
+    let onGround = 0;
+    for (let i = 13; i < matrices.length; i += 16) if (matrices[i]! < 0.3) onGround++;
+    return { sets, leaves: matrices.length / 16, onGround };
+  }
+
+  /** Test support: shows or hides the organ meshes (a frame with and without them). */
+  setOrgansVisible(visible: boolean): void {
+    for (const m of this.tree.organMeshes) m.visible = visible;
+    this.requestRender();
   }
 
   /** Test support: the current leaves drawn pulled and instanced, compared (leafPullCheck.ts). */

@@ -24,6 +24,7 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
     instances: f
       ? { matrices: f.matrices, colors: f.colors }
       : { matrices: new Float32Array(0), colors: new Float32Array(0) },
+    organs: tree.organs ?? [],
     ...(f
       ? {
           leafMesh: { positions: f.positions, normals: f.normals, uvs: f.uvs, indices: f.indices },
@@ -65,6 +66,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
   const textures = update.barkTextures ?? current?.bark;
   const endGrain = update.endGrain ?? current?.endGrain;
   const shade = update.shade ?? current?.shade;
+  const organs = update.organs ?? current?.organs ?? [];
   return {
     positions: bark.positions,
     normals: bark.normals,
@@ -73,6 +75,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     envelope: update.envelope ?? current?.envelope ?? EMPTY_F32,
     meta: update.meta,
     foliage,
+    organs,
     ...(wind ? { wind } : {}),
     ...(markers ? { markers } : {}),
     ...(textures ? { bark: textures } : {}),
