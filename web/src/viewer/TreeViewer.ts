@@ -34,7 +34,14 @@ import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
 
 /** The organ meshes and fallen leaves of the tree shown ([`TreeViewer.organs`], the debug hook). */
 export interface OrganDebug {
-  sets: { name: string; kind: string; count: number; visible: boolean }[];
+  sets: {
+    name: string;
+    kind: string;
+    count: number;
+    visible: boolean;
+    /** Tree-space positions of up to 64 of its instances. */
+    samples: [number, number, number][];
+  }[];
   /** Leaf instances (on the tree and fallen). */
   leaves: number;
   /** Leaf instances lying on the ground (below 0.3 m). */
@@ -410,12 +417,22 @@ export class TreeViewer {
    * instances lie on the ground (below 0.3 m: the fallen leaves) of how many.
    */
   organs(): OrganDebug {
-    const sets = this.tree.organMeshes.map((m) => ({
-      name: m.name.slice(ORGAN_MESH_PREFIX.length),
-      kind: String(m.userData.organKind),
-      count: m.count,
-      visible: m.visible && m.parent !== null,
-    }));
+    const sets = this.tree.organMeshes.map((m) => {
+      const a = m.instanceMatrix.array;
+      // Up to 64 instance positions, spread over the set (close-up screenshots aim at one).
+      const step = Math.max(1, Math.ceil(m.count / 64));
+      const samples: [number, number, number][] = [];
+      for (let i = 0; i < m.count; i += step) {
+        samples.push([a[i * 16 + 12]!, a[i * 16 + 13]!, a[i * 16 + 14]!]);
+      }
+      return {
+        name: m.name.slice(ORGAN_MESH_PREFIX.length),
+        kind: String(m.userData.organKind),
+        count: m.count,
+        visible: m.visible && m.parent !== null,
+        samples,
+      };
+    });
     const matrices = this.tree.buffers?.foliage?.matrices ?? new Float32Array(0);
     let onGround = 0;
     for (let i = 13; i < matrices.length; i += 16) if (matrices[i]! < 0.3) onGround++;

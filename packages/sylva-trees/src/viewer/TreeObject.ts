@@ -89,10 +89,10 @@ export class TreeObject {
     );
     this.organs = new OrganSets(this.group, {
       patch: (material) => {
-        this.wind.apply(material, 'leaves');
+        this.wind.apply(material, 'organs');
         applySoftShadows(material);
       },
-      depthMaterial: () => this.wind.depthMaterial('leaves', 'organs'),
+      depthMaterial: () => this.wind.depthMaterial('organs'),
     });
   }
 

@@ -18,9 +18,14 @@ import { describe, expect, it } from 'vitest';
 import type { OrganSetBuffers, TreeBuffers, TreeMeta } from '../core/types';
 import { ORGAN_MESH_PREFIX, OrganSets } from './organs';
 import { TreeObject } from './TreeObject';
+import { createWindUniforms, patchWindShader } from './wind';
 
 /** A set of `count` one-triangle parts at x = 0, 1, 2, ... */
-function set(name: string, count: number, color: [number, number, number] = [0.5, 0.4, 0.2]): OrganSetBuffers {
+function set(
+  name: string,
+  count: number,
+  color: [number, number, number] = [0.5, 0.4, 0.2],
+): OrganSetBuffers {
   const matrices = new Float32Array(count * 16);
   for (let i = 0; i < count; i++) {
     matrices.set([1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, i, 1, 0, 1], i * 16);
@@ -39,7 +44,10 @@ function set(name: string, count: number, color: [number, number, number] = [0.5
 }
 
 /** Counts `dispose` events of the meshes' geometries and materials. */
-function watchDisposal(meshes: readonly InstancedMesh[]): { geometries: number; materials: number } {
+function watchDisposal(meshes: readonly InstancedMesh[]): {
+  geometries: number;
+  materials: number;
+} {
   const seen = { geometries: 0, materials: 0 };
   for (const m of meshes) {
     m.geometry.addEventListener('dispose', () => seen.geometries++);
@@ -69,7 +77,9 @@ describe('organ sets in the viewer', () => {
     const material = m.material as MeshStandardMaterial;
     expect(material.side).toBe(DoubleSide);
     expect(material.roughness).toBe(0.45);
-    expect(material.color.getHex()).toBe(new Color().setRGB(0.48, 0.4, 0.17, SRGBColorSpace).getHex());
+    expect(material.color.getHex()).toBe(
+      new Color().setRGB(0.48, 0.4, 0.17, SRGBColorSpace).getHex(),
+    );
     // The sRGB colour is stored linear by three.js: darker numbers than given.
     expect(material.color.r).toBeLessThan(0.48);
     expect(m.userData.organKind).toBe('fruit');
@@ -121,8 +131,16 @@ describe('organ sets in the viewer', () => {
     const [buds] = tree.organMeshes;
     expect(buds?.parent).toBe(tree.group);
     expect(tree.buffers?.organs?.length).toBe(1);
-    // Patched like the leaves: the wind's program key.
-    expect((buds!.material as MeshStandardMaterial).customProgramCacheKey()).toContain('wind');
+    // Swaying with their anchors, without the leaves' flutter (parts are in metres).
+    expect((buds!.material as MeshStandardMaterial).customProgramCacheKey()).toBe(
+      'sylva-wind-organs-sylva-soft-shadows',
+    );
+    const shader = {
+      vertexShader: '#include <common>\nvoid main() {\n#include <begin_vertex>\n}',
+      uniforms: {},
+    };
+    patchWindShader(shader, createWindUniforms(), 'organs');
+    expect(shader.vertexShader).toContain('#define WIND_NO_FLUTTER');
     const ray = new Raycaster(new Vector3(1, 1, 5), new Vector3(0, 0, -1));
     expect(ray.intersectObject(buds!)).toEqual([]);
     // An update without organs keeps them; an empty list removes them.
