@@ -174,3 +174,41 @@ test('a tree in January shows winter buds and its fallen leaves on the ground', 
   await canvasShot(page, testInfo.outputPath('organs-litter.png'));
   expect(errors).toEqual([]);
 });
+
+/** The leaf inspector's month tint (`data-month-tint` on its SVG: "r g b" or "none"). */
+async function inspectorTint(page: Page): Promise<number[] | 'none'> {
+  const value = await page.getByTestId('leaf-svg').getAttribute('data-month-tint');
+  if (!value) throw new Error('the leaf drawing carries no month tint');
+  return value === 'none' ? 'none' : value.split(' ').map(Number);
+}
+
+test('the leaf inspector shows the leaf in the colour of the Season', async ({ page }) => {
+  const errors = watchErrors(page);
+  // The default tree wears the aspen's calendar: green in July, golden in October, bare in January.
+  const tints: Record<string, number[] | 'none'> = {};
+  for (const [month, season] of [
+    ['July', '7.5'],
+    ['October', '10.3'],
+    ['January', '1.5'],
+  ] as const) {
+    await page.goto(`/?debug=1&v=1&season=${season}`);
+    await waitForTree(page);
+    await page.getByTestId('tab-leaf').click();
+    await expect(page.getByTestId('leaf-svg')).toBeVisible();
+    await expect
+      .poll(() => page.getByTestId('leaf-svg').getAttribute('data-month-tint'))
+      .not.toBe(null);
+    tints[month] = await inspectorTint(page);
+    // A tinted drawing goes through a colour matrix in linear light; a bare tree's through none.
+    const matrix = page.locator(
+      '[data-testid="leaf-svg"] filter#sylva-month-tint[color-interpolation-filters="linearRGB"] feColorMatrix',
+    );
+    await expect(matrix).toHaveCount(month === 'January' ? 0 : 1);
+  }
+  const [july, october] = [tints.July, tints.October];
+  if (!Array.isArray(july) || !Array.isArray(october)) throw new Error(JSON.stringify(tints));
+  expect(Math.abs(july[0]! - july[2]!)).toBeLessThan(0.15);
+  expect(october[0]!).toBeGreaterThan(2 * october[2]!);
+  expect(tints.January).toBe('none');
+  expect(errors).toEqual([]);
+});

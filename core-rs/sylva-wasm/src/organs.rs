@@ -14,6 +14,9 @@
 //! - `organ_matrices(i)`: per instance a 4×4 matrix, column-major, 16 floats (rotation × axis
 //!   scale in the first three columns, translation in the fourth: the leaves' layout).
 //! - `organ_colors(i)`: per instance an RGB tint, 3 floats, linear light, multiplying `color`.
+//!
+//! And `fallen()`: how many of the leaf instances, at the end of `leaf_matrices` and
+//! `leaf_colors`, lie on the ground (**Fallen Leaves**); the ones before them are on the tree.
 
 use crate::{GeneratedTree, Session};
 use sylva_core::organs::OrganSet;
@@ -43,6 +46,10 @@ fn field<T: Copy>(sets: &[OrganSet], i: usize, get: impl Fn(&OrganSet) -> &[T]) 
 
 #[wasm_bindgen]
 impl GeneratedTree {
+    /// How many leaf instances, the last ones, lie on the ground (`Foliage::fallen`).
+    pub fn fallen(&self) -> usize {
+        self.0.foliage.fallen
+    }
     /// Number of organ sets (see the module doc of `organs.rs` for every layout).
     pub fn organ_count(&self) -> usize {
         self.0.foliage.organs.len()
@@ -75,6 +82,10 @@ impl GeneratedTree {
 
 #[wasm_bindgen]
 impl Session {
+    /// How many leaf instances of the current tree, the last ones, lie on the ground.
+    pub fn fallen(&self) -> usize {
+        self.fallen_leaves()
+    }
     /// Number of organ sets of the current tree (0 before the first update).
     pub fn organ_count(&self) -> usize {
         self.organs().len()

@@ -31,6 +31,7 @@ import {
 import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
+import { monthTint } from '../leaf/monthTint';
 
 /** The organ meshes and fallen leaves of the tree shown ([`TreeViewer.organs`], the debug hook). */
 export interface OrganDebug {
@@ -170,6 +171,8 @@ export class TreeViewer {
   }
 
   private afterTree(buffers: TreeBuffers, newEnvelope: boolean, frame: boolean): void {
+    // The leaf inspector tints its drawing by the Season's colour of this tree's leaves.
+    monthTint.set(buffers.leafTint ?? null);
     if (newEnvelope) {
       this.envelope.geometry.dispose();
       this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);

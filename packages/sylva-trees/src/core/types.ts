@@ -183,6 +183,11 @@ export interface TreeUpdate {
   instances?: { matrices: Float32Array; colors: Float32Array };
   /** The flowers, fruit, catkins and buds (sent with the placements; [] = none). */
   organs?: OrganSetBuffers[];
+  /**
+   * The mean tint of the leaves on the tree (linear light; the fallen ones left out), sent with
+   * the placements: the Season's leaf colour for the leaf inspector. Null: no leaf on the tree.
+   */
+  leafTint?: [number, number, number] | null;
   leafMesh?: LeafMeshBuffers;
   /** The leaf texture (a new leaf shape). */
   leafTexture?: LeafTextureBuffers;
@@ -212,6 +217,8 @@ export interface TreeBuffers {
   foliage?: FoliageBuffers;
   /** Flowers, fruit, catkins and buds, one set per kind (absent or [] = none). */
   organs?: OrganSetBuffers[];
+  /** Mean tint of the leaves on the tree (see `TreeUpdate.leafTint`); absent or null: none. */
+  leafTint?: [number, number, number] | null;
   /**
    * Wind data, 8 floats per vertex (`pivot xyz, level, phase, stiffness, distance, radius`, see
    * `TreeMesh.wind`); absent or empty when the core has none (the viewer falls back).
@@ -357,6 +364,8 @@ export interface WasmSession {
   organ_indices?(i: number): Uint32Array;
   organ_matrices?(i: number): Float32Array;
   organ_colors?(i: number): Float32Array;
+  /** How many leaf instances, the last ones, lie on the ground (optional: fakes lack it). */
+  fallen?(): number;
   free(): void;
 }
 

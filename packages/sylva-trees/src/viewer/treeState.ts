@@ -25,6 +25,7 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
       ? { matrices: f.matrices, colors: f.colors }
       : { matrices: new Float32Array(0), colors: new Float32Array(0) },
     organs: tree.organs ?? [],
+    leafTint: tree.leafTint ?? null,
     ...(f
       ? {
           leafMesh: { positions: f.positions, normals: f.normals, uvs: f.uvs, indices: f.indices },
@@ -67,6 +68,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
   const endGrain = update.endGrain ?? current?.endGrain;
   const shade = update.shade ?? current?.shade;
   const organs = update.organs ?? current?.organs ?? [];
+  const leafTint = update.leafTint !== undefined ? update.leafTint : (current?.leafTint ?? null);
   return {
     positions: bark.positions,
     normals: bark.normals,
@@ -76,6 +78,7 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     meta: update.meta,
     foliage,
     organs,
+    leafTint,
     ...(wind ? { wind } : {}),
     ...(markers ? { markers } : {}),
     ...(textures ? { bark: textures } : {}),

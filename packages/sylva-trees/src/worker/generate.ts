@@ -18,7 +18,7 @@ import { coreInput } from '../core/editsJson';
 import { pickBoxes } from '../core/pickBoxes';
 import { volumeToCore } from '../core/volumes';
 import type { GenerateRequest, WorkerResponse } from './protocol';
-import { organsOf, organViews } from './organs';
+import { meanTint, organsOf, organViews } from './organs';
 
 /** Sends a response, transferring the given buffers. */
 export type Post = (message: WorkerResponse, transfer: Transferable[]) => void;
@@ -247,9 +247,11 @@ export class SessionGenerator {
       update.markers = s.markers();
     }
     if (changes.placements) {
-      update.instances = { matrices: s.leaf_matrices(), colors: s.leaf_colors() };
-      // The core's placements change covers the organ sets too.
+      const colors = s.leaf_colors();
+      update.instances = { matrices: s.leaf_matrices(), colors };
+      // The core's placements change covers the organ sets and the fallen leaves too.
       update.organs = organsOf(s);
+      update.leafTint = meanTint(colors, colors.length / 3 - (s.fallen?.() ?? 0));
     }
     if (changes.leaf_mesh) {
       update.leafMesh = {

@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { realPresets } from '../testing/realWasm';
 import { harness } from '../testing/workerHarness';
 import type { Params } from '../core/types';
+import { meanTint } from './organs';
 
 /** The oak preset bearing acorns (Fruit 1 = Acorns) in `season`. */
 function oak(season: number): Params {
@@ -77,5 +78,32 @@ describe('organ sets in the tree message', () => {
     let high = 0;
     for (let i = 13; i < m.length; i += 16) if (m[i]! > 0.5) high++;
     expect(high, JSON.stringify(meta.leaves)).toBe(0);
+  });
+});
+
+describe('the leaves on the tree: their Season tint', () => {
+  it('is the mean tint of the leaves on the tree, leaving the fallen ones out', () => {
+    const mean = meanTint(new Float32Array([1, 1, 1, 0.5, 0.25, 0.125, 9, 9, 9]), 2);
+    expect(mean).toEqual([0.75, 0.625, 0.5625]);
+    expect(meanTint(new Float32Array([1, 1, 1]), 0)).toBeNull();
+  });
+
+  it('is about 1 in July, yellow in October and absent in January', () => {
+    const h = harness();
+    h.handle({ type: 'generate', id: 1, params: { season: 7.5 } });
+    const july = h.lastResult().leafTint;
+    h.handle({ type: 'generate', id: 2, params: { season: 10.3 } });
+    const october = h.lastResult().leafTint;
+    h.handle({ type: 'generate', id: 3, params: { season: 1.5 } });
+    const january = h.lastResult().leafTint;
+    if (!july || !october) throw new Error('no tint');
+    // July: the summer crown, grey (the crown's shade darkens every channel alike).
+    expect(Math.min(...july) / Math.max(...july)).toBeGreaterThan(0.85);
+    expect(Math.max(...july)).toBeLessThan(1.2);
+    // October (the default tree wears the aspen's calendar): golden, far more red than blue.
+    expect(october[0]).toBeGreaterThan(2 * october[2]);
+    // January: every leaf has fallen.
+    expect(january).toBeNull();
+    expect(h.tree().leafTint).toBeNull();
   });
 });
