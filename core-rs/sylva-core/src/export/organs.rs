@@ -9,7 +9,7 @@
 //! the base colour is multiplied by it (then clamped to glTF's 0..1).
 
 use super::bake::{bake_instances, BakedLeaves};
-use super::{ExportOptions, LeafMode};
+use super::options::{ExportOptions, LeafMode};
 use crate::organs::OrganSet;
 use crate::Generated;
 
