@@ -7,14 +7,7 @@
  * resulting `<svg>` element is adopted into the page (no innerHTML; the SVG has no scripts or
  * style attributes, so the CSP holds).
  */
-import {
-  useEffect,
-  useMemo,
-  useRef,
-  useState,
-  useSyncExternalStore,
-  type RefObject,
-} from 'react';
+import { useEffect, useMemo, useRef, useState, useSyncExternalStore, type RefObject } from 'react';
 import {
   groupParams,
   type LeafInspection,

@@ -116,13 +116,7 @@ export interface FoliageBuffers {
 
 /** What an organ set is (`sylva_core::organs::OrganKind`). */
 export type OrganKind =
-  | 'petals'
-  | 'flower_centre'
-  | 'catkin'
-  | 'bud'
-  | 'fruit'
-  | 'fruit_part'
-  | 'stalk';
+  'petals' | 'flower_centre' | 'catkin' | 'bud' | 'fruit' | 'fruit_part' | 'stalk';
 
 /**
  * One kind of flower, fruit, catkin or bud (`sylva_core::organs::OrganSet`, the wasm's
