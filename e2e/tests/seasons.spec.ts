@@ -205,6 +205,26 @@ test('the leaf inspector shows the leaf in the colour of the Season', async ({ p
     );
     await expect(matrix).toHaveCount(month === 'January' ? 0 : 1);
   }
+  // And it is seen: the October drawing (the last tinted one, drawn again) is a golden leaf on
+  // white paper, not a blank page.
+  await page.goto('/?debug=1&v=1&season=10.3');
+  await waitForTree(page);
+  await page.getByTestId('tab-leaf').click();
+  await expect(page.getByTestId('leaf-svg')).toHaveAttribute('data-month-tint', /\d/);
+  const shot = await decodePng(page, await page.getByTestId('leaf-svg').screenshot());
+  let ink = 0;
+  let [red, blue] = [0, 0];
+  for (let i = 0; i < shot.data.length; i += 4) {
+    const [r, g, b] = [shot.data[i]!, shot.data[i + 1]!, shot.data[i + 2]!];
+    if (765 - r - g - b < 60) continue;
+    ink++;
+    red += r;
+    blue += b;
+  }
+  expect(ink / (shot.width * shot.height), 'share of the drawing that is leaf').toBeGreaterThan(
+    0.1,
+  );
+  expect(red / ink, 'the October leaf is warm').toBeGreaterThan(blue / ink + 60);
   const [july, october] = [tints.July, tints.October];
   if (!Array.isArray(july) || !Array.isArray(october)) throw new Error(JSON.stringify(tints));
   expect(Math.abs(july[0]! - july[2]!)).toBeLessThan(0.15);

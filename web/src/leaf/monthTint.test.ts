@@ -4,7 +4,7 @@
  * a value of its own. The SVG filter itself is checked in the browser (e2e/tests/seasons.spec.ts).
  */
 import { describe, expect, it } from 'vitest';
-import { MonthTintStore } from './monthTint';
+import { drawingTint, MonthTintStore } from './monthTint';
 
 describe('MonthTintStore', () => {
   it('notifies subscribers when the tint changes, not when the same numbers come again', () => {
@@ -23,5 +23,19 @@ describe('MonthTintStore', () => {
     stop();
     store.set([1, 1, 1]);
     expect(calls).toBe(3);
+  });
+});
+
+describe('drawingTint', () => {
+  it("keeps the blade's lightness and the tint's hue", () => {
+    // A grey tint (the crown's shade) leaves the drawing as drawn.
+    for (const c of drawingTint([0.44, 0.44, 0.44])) expect(c).toBeCloseTo(1, 5);
+    // An aspen's October gold: many times the blade's red; the drawing stays as light, gold.
+    const [r, g, b] = drawingTint([12, 2.5, 0.8]);
+    const luma = 0.2126 * r * 0.0732 + 0.7152 * g * 0.233 + 0.0722 * b * 0.0272;
+    expect(luma).toBeCloseTo(0.2126 * 0.0732 + 0.7152 * 0.233 + 0.0722 * 0.0272, 5);
+    expect(r / g).toBeCloseTo(12 / 2.5, 5);
+    expect(r).toBeGreaterThan(1);
+    expect(b).toBeLessThan(0.5);
   });
 });

@@ -3,9 +3,9 @@
  * seasonal colours, averaged in the generator worker: `TreeUpdate.leafTint`), kept in a tiny
  * external store the viewer writes and the inspector reads, and laid over the leaf drawing as
  * an SVG colour-matrix filter in linear light (what the tint multiplies in the viewer and the
- * exports), divided by its largest channel. July's tint is about 1 (the drawing as drawn),
- * October's aspen golden, a maple's red, and a bare tree's none (the drawing untinted, marked
- * `data-month-tint="none"`).
+ * exports) at the drawing's lightness ([`drawingTint`]). July's tint is about 1 (the drawing as
+ * drawn), October's aspen golden, a maple's red, and a bare tree's none (the drawing untinted,
+ * marked `data-month-tint="none"`).
  */
 
 /** A linear-light RGB multiplier, or null when no leaf is on the tree. */
@@ -15,6 +15,32 @@ export type MonthTint = [number, number, number] | null;
 export const MONTH_TINT_FILTER_ID = 'sylva-month-tint';
 
 const SVG_NS = 'http://www.w3.org/2000/svg';
+
+/** Top-level elements of the leaf drawing left untinted: the paper and the caption. */
+const UNTINTED = new Set(['rect', 'text']);
+
+/**
+ * The blade's green the leaf tints multiply, in linear light: the core's `BLADE`
+ * (core-rs/sylva-core/src/leaf/texture.rs, sRGB 0.30, 0.52, 0.18) decoded.
+ */
+const BLADE_LINEAR: [number, number, number] = [0.0732, 0.233, 0.0272];
+
+/** Relative luminance weights of linear sRGB (ITU-R BT.709). */
+const LUMA = [0.2126, 0.7152, 0.0722] as const;
+
+/**
+ * `tint` for the drawing: divided by how much it brightens or darkens the blade (the
+ * luminance of tint × blade over the blade's), so the drawing keeps its lightness and takes the
+ * Season's hue. The crown's shade darkens every leaf alike (the mean July tint is about 0.44
+ * grey) while the drawing shows one leaf; autumn's golds and reds are many times the blade's
+ * red.
+ */
+export function drawingTint(tint: [number, number, number]): [number, number, number] {
+  const luma = (c: readonly number[]) => c.reduce((s, v, i) => s + v * LUMA[i]!, 0);
+  const shown = luma(tint.map((t, i) => Math.max(0, t) * BLADE_LINEAR[i]!));
+  const scale = shown > 1e-6 ? luma(BLADE_LINEAR) / shown : 1;
+  return tint.map((t) => Math.max(0, t) * scale) as [number, number, number];
+}
 
 /** The tint of the tree on screen; subscribers are told when it changes. */
 export class MonthTintStore {
@@ -52,20 +78,20 @@ export function applyMonthTint(svg: SVGSVGElement, tint: MonthTint): void {
   svg.querySelector(`#${MONTH_TINT_FILTER_ID}`)?.remove();
   let group = svg.querySelector<SVGGElement>(':scope > g[data-month-tint-group]');
   if (!group) {
+    // The leaf goes through the filter; the paper behind it and the caption stay as they are.
     group = doc.createElementNS(SVG_NS, 'g');
     group.setAttribute('data-month-tint-group', '');
-    group.append(...Array.from(svg.childNodes));
-    svg.append(group);
+    const leaf = Array.from(svg.childNodes).filter((n) => !UNTINTED.has(n.nodeName));
+    // In the place of the first leaf element: after the paper, so the paper stays behind.
+    svg.insertBefore(group, leaf.find((n) => n.nodeType === 1) ?? null);
+    group.append(...leaf);
   }
   if (!tint) {
     group.removeAttribute('filter');
     svg.setAttribute('data-month-tint', 'none');
     return;
   }
-  // At the drawing's brightness: the crown's shade darkens every leaf alike (the mean July
-  // tint is about 0.45 grey), the drawing shows one leaf in the open.
-  const top = Math.max(...tint, 1e-6);
-  const [r, g, b] = tint.map((c) => Math.max(0, c / top).toFixed(4));
+  const [r, g, b] = drawingTint(tint).map((c) => c.toFixed(4));
   const filter = doc.createElementNS(SVG_NS, 'filter');
   filter.setAttribute('id', MONTH_TINT_FILTER_ID);
   filter.setAttribute('color-interpolation-filters', 'linearRGB');
