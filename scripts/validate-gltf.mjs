@@ -14,7 +14,9 @@
 // whose last key time is the tree's Age.
 //
 // Also the default tree with a main branch cut (`--edits`, [`CUT`]): its GLB has the third
-// material, `cut_face` (the end grain).
+// material, `cut_face` (the end grain); and trees with flowers, fruit, catkins and buds (the
+// Season): the default tree in January (buds, fallen leaves), the oak bearing acorns in
+// September, the quaking aspen's catkins in March.
 //
 // Then, when the wasm build exists (packages/sylva-trees/src/wasm), checks that the wasm exporters (`to_glb`,
 // `to_glb_file`) write the same bytes as the native one (default tree, with and without the cut,
@@ -46,6 +48,18 @@ writeFileSync(editsFile, JSON.stringify({ version: 1, edits: [CUT] }));
 const trees = presets.map((name) => [name, ['--preset', name]]);
 if (only.length === 0 || only.includes('default')) {
   trees.push(['default + cut', ['--edits', editsFile]]);
+  // January: winter buds at the shoot tips and the fallen leaves on the ground.
+  trees.push(['default January', ['--set', 'season=1.5']]);
+}
+// Seasons with flowers and fruit: one material, mesh and node per organ set.
+if (only.length === 0 || only.includes('oak')) {
+  trees.push([
+    'oak September acorns',
+    ['--preset', 'oak', '--set', 'fruit=1', '--set', 'season=9.5'],
+  ]);
+}
+if (only.length === 0 || only.includes('quaking_aspen')) {
+  trees.push(['quaking_aspen March catkins', ['--preset', 'quaking_aspen', '--set', 'season=3.2']]);
 }
 
 let failed = 0;
@@ -182,9 +196,16 @@ if (existsSync(glue) && (only.length === 0 || only.includes('default'))) {
       new URL('../packages/sylva-trees/src/wasm/sylva_wasm_bg.wasm', import.meta.url),
     ),
   });
+  const oak = JSON.parse(wasm.presets_json()).find((p) => p.name === 'oak');
   for (const [label, input, cliArgs] of [
     ['default', {}, []],
     ['default + cut', { edits: [CUT] }, ['--edits', editsFile]],
+    // Organ sets (acorns, cups, stalks): fruit 1 = Acorns.
+    [
+      'oak September acorns',
+      { ...oak.values, fruit: 1, season: 9.5 },
+      ['--preset', 'oak', '--set', 'fruit=1', '--set', 'season=9.5'],
+    ],
   ]) {
     const tree = wasm.generate(JSON.stringify(input));
     if (typeof tree.to_glb !== 'function') {

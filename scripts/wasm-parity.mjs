@@ -45,6 +45,22 @@ for (const [name, season] of [
     args: ['--preset', name, '--set', `season=${season}`],
   });
 }
+// Flowers and fruit: the oak bearing acorns (Fruit 1) in September (acorns, cups, stalks),
+// the default tree in January (winter buds and the fallen leaves on the ground) and the quaking
+// aspen's catkins in March: the hash covers the organ sets and the fallen leaves.
+for (const [name, values] of [
+  ['oak', { fruit: 1, season: 9.5 }],
+  ['default', { season: 1.5 }],
+  ['quaking_aspen', { season: 3.2 }],
+]) {
+  const preset = presets.find((p) => p.name === name);
+  const set = Object.entries(values).flatMap(([k, v]) => ['--set', `${k}=${v}`]);
+  cases.push({
+    name: `${name} ${JSON.stringify(values)}`,
+    values: { ...preset.values, ...values },
+    args: ['--preset', name, ...set],
+  });
+}
 // Age: the default tree at 10 of its 40 years, Black Tupelo at 30 of its 80, and Grown:
 // Broadleaf at 12 of its 35 (the growth replay: birth years, the growth curve, young stems).
 for (const [name, age] of [

@@ -66,6 +66,12 @@ class Tree:
     def leaf_colors(self) -> npt.NDArray[np.float32]:
         """One RGB tint per leaf, ``(leaves, 3)``."""
     @property
+    def fallen_leaves(self) -> int:
+        """How many leaves, the last rows of ``leaf_transforms`` and ``leaf_colors``, lie on the ground."""
+    @property
+    def organs(self) -> list[dict[str, Any]]:
+        """Flowers, fruit, catkins and buds, one dict per kind of part: ``kind``, ``name``, ``color`` (sRGB), ``roughness``, ``positions``, ``normals``, ``indices``, ``transforms`` ``(count, 4, 4)``, ``colors`` ``(count, 3)``."""
+    @property
     def wind(self) -> npt.NDArray[np.float32]:
         """Per bark vertex ``(vertices, 8)``: pivot x, y, z, level, phase, stiffness, distance, radius."""
     def textures(self, bark_size: int = 512) -> dict[str, bytes]:

@@ -14,6 +14,9 @@
 //!   becomes three crossed quads on its principal planes, sized to the cluster and tinted with its
 //!   mean leaf colour, for the browser to texture.
 //! * The **impostor** (a hemi-octahedral atlas of views) is baked in the browser from LOD0.
+//! * **Flowers, fruit, catkins and buds** ([`crate::organs`]): LOD1 keeps every organ set as it
+//!   is (they are few and small next to the leaves); LOD2 carries none (at its distance they
+//!   are a pixel or less, and its leaves are the cloud).
 //!
 //! The LOD1 and LOD2 barks carry the same crown-depth occlusion as LOD0's
 //! ([`TreeMesh::shade`], from LOD0's leaves), so a level switch does not change the bark's tone.

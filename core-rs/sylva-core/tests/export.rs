@@ -556,6 +556,10 @@ mod season;
 #[path = "export/strict.rs"]
 mod strict;
 
+/// Flowers, fruit, catkins and buds in the GLB (both modes), the OBJ and the LODs.
+#[path = "export/organs.rs"]
+mod organs;
+
 #[path = "export/lods.rs"]
 mod lods;
 

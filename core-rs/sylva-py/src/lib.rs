@@ -8,7 +8,9 @@ use pyo3::prelude::*;
 use sylva_core::params::TreeParams;
 use sylva_core::presets as core_presets;
 
+mod buffer;
 mod convert;
+mod organs;
 mod share;
 mod tree;
 

@@ -2,7 +2,6 @@
 //! rest of the core's `Generated` kept for the exporters, and GLB/OBJ export that writes the
 //! bytes `sylva generate --out` writes.
 
-use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use sylva_core::export::ExportOptions;
@@ -10,33 +9,9 @@ use sylva_core::export::{bark_pngs, end_grain_pngs, leaf_pngs};
 use sylva_core::mesh::WIND_STRIDE;
 use sylva_core::Generated;
 
+use crate::buffer::Buffer;
 use crate::convert::{json_loads, py_err};
-
-/// One buffer: the flat array that owns the core's `Vec` and its shaped, read-only view.
-struct Buffer {
-    flat: Py<PyAny>,
-    shaped: Py<PyAny>,
-}
-
-impl Buffer {
-    /// Moves `data` into NumPy (the array takes the `Vec`'s allocation) and views it as rows of
-    /// `width`; both are read-only, so the arrays stay the tree the hash was taken of.
-    fn new<T: Element>(py: Python<'_>, data: Vec<T>, width: usize) -> PyResult<Self> {
-        let rows = data.len() / width;
-        let flat = PyArray1::from_vec(py, data);
-        let no_write = PyDict::new(py);
-        no_write.set_item("write", false)?;
-        flat.call_method("setflags", (), Some(&no_write))?;
-        let shaped = flat.reshape([rows, width])?;
-        Ok(Buffer { flat: flat.into_any().unbind(), shaped: shaped.into_any().unbind() })
-    }
-
-    /// A copy of the data back in a `Vec`, for the exporters.
-    fn to_vec<T: Element + Copy>(&self, py: Python<'_>) -> PyResult<Vec<T>> {
-        let array = self.flat.bind(py).cast::<PyArray1<T>>()?;
-        Ok(array.readonly().as_slice()?.to_vec())
-    }
-}
+use crate::organs::OrganBuffers;
 
 /// A generated tree. The mesh arrays are read-only NumPy views of the core's buffers (no copy):
 /// `positions`, `normals` (float32, one row per vertex), `uvs` (float32, two columns) and
@@ -56,6 +31,8 @@ pub struct Tree {
     colors: Buffer,
     wind: Buffer,
     leaf_transforms: Py<PyAny>,
+    /// The organ sets' arrays, in the order of `rest.foliage.organs`.
+    organs: Vec<OrganBuffers>,
 }
 
 impl Tree {
@@ -81,15 +58,9 @@ impl Tree {
         let f = &mut g.foliage;
         let matrices = Buffer::new(py, take(&mut f.matrices), 16)?;
         let colors = Buffer::new(py, take(&mut f.colors), 3)?;
-        // Column-major 4x4 per leaf: rows of 16 as (4, 4) are the transposes; swap the last
-        // two axes (a strided view, no copy) for matrices that multiply column vectors.
-        let count = matrices.shaped.bind(py).len()?;
-        let transposed = matrices
-            .flat
-            .bind(py)
-            .call_method1("reshape", ((count, 4, 4),))?
-            .call_method1("transpose", ((0, 2, 1),))?;
-        Ok(Tree { rest: g, meta_json, bark, leaf, matrices, colors, wind, leaf_transforms: transposed.unbind() })
+        let leaf_transforms = matrices.transposed(py)?;
+        let organs = f.organs.iter_mut().map(|s| OrganBuffers::take(py, s)).collect::<PyResult<Vec<_>>>()?;
+        Ok(Tree { rest: g, meta_json, bark, leaf, matrices, colors, wind, leaf_transforms, organs })
     }
 
     /// The whole `Generated` again (the buffers copied back from NumPy), for the exporters.
@@ -105,6 +76,9 @@ impl Tree {
             (p.to_vec(py)?, n.to_vec(py)?, uv.to_vec(py)?, i.to_vec(py)?);
         f.matrices = self.matrices.to_vec(py)?;
         f.colors = self.colors.to_vec(py)?;
+        for (set, b) in f.organs.iter_mut().zip(&self.organs) {
+            b.restore(py, set)?;
+        }
         Ok(g)
     }
 }
@@ -177,6 +151,21 @@ impl Tree {
     #[getter]
     fn leaf_colors(&self, py: Python<'_>) -> Py<PyAny> {
         self.colors.shaped.clone_ref(py)
+    }
+    /// How many of the leaves, the last rows of `leaf_transforms` and `leaf_colors`, lie on
+    /// the ground (**Fallen Leaves**, the Season); the rows before them are on the tree.
+    #[getter]
+    fn fallen_leaves(&self) -> usize {
+        self.rest.foliage.fallen
+    }
+    /// The flowers, fruit, catkins and buds the Season gives the tree, one dict per kind of
+    /// part: `kind` (`"petals"`, `"flower_centre"`, `"catkin"`, `"bud"`, `"fruit"`,
+    /// `"fruit_part"`, `"stalk"`), `name`, `color` (sRGB), `roughness`, the part's mesh in metres
+    /// (`positions`, `normals`, `indices`), `transforms` (float32 `(count, 4, 4)`) and `colors`
+    /// (float32 `(count, 3)`, linear tints multiplying `color`); read-only NumPy arrays, no copy.
+    #[getter]
+    fn organs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+        crate::organs::as_list(py, &self.rest.foliage.organs, &self.organs)
     }
     /// The wind record of each bark vertex, float32 `(vertices, 8)`: pivot x, y, z (the base of
     /// the vertex's stem, m), level (0 trunk to 3), phase (0..1), stiffness (0..1), distance from

@@ -10,6 +10,7 @@ use wasm_bindgen::prelude::*;
 
 mod baked;
 mod lod_glb;
+mod organs;
 mod session;
 
 pub use baked::BakedLeafMesh;

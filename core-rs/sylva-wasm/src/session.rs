@@ -67,6 +67,16 @@ impl Session {
         self.0.clear();
     }
 
+    /// The current tree's organ sets (none before the first update).
+    pub(crate) fn organs(&self) -> &[sylva_core::organs::OrganSet] {
+        self.0.current().map(|c| c.foliage.organs.as_slice()).unwrap_or_default()
+    }
+
+    /// How many of the current tree's leaf instances lie on the ground (0 before the first update).
+    pub(crate) fn fallen_leaves(&self) -> usize {
+        self.0.current().map_or(0, |c| c.foliage.fallen)
+    }
+
     fn current(&self) -> Result<&sylva_core::session::Current, JsValue> {
         self.0.current().ok_or_else(|| JsValue::from_str("no tree yet: call update() first"))
     }

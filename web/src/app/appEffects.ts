@@ -24,6 +24,8 @@ export function useViewerDebugHook(viewerRef: RefObject<TreeViewer | null>): voi
         },
         probeFrame: () => viewerRef.current?.probeFrame() ?? null,
         leafPullCheck: () => viewerRef.current?.leafPullCheck() ?? null,
+        organs: () => viewerRef.current?.organs() ?? null,
+        setOrgansVisible: (visible) => viewerRef.current?.setOrgansVisible(visible),
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();
           if (host) lookFrom(host, from, to);

@@ -1,5 +1,6 @@
 /** The `window.__sylva` debug hook (dev mode or `?debug=1` only). */
 import type { LeafPullCheck } from '../viewer/leafPullCheck';
+import type { OrganDebug } from '../viewer/TreeViewer';
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
 import type { WindSettings } from 'sylva-trees/viewer';
@@ -85,6 +86,10 @@ export interface SylvaDebugHook {
   leafPullCheck(): LeafPullCheck | null;
   /** Size of the bark colour map, null before it arrived. */
   barkTexture(): { width: number; height: number } | null;
+  /** Flowers, fruit, catkins and buds drawn (one InstancedMesh per set) and the fallen leaves. */
+  organs(): OrganDebug | null;
+  /** Shows or hides the organ meshes (e2e: a frame with and without them). */
+  setOrgansVisible(visible: boolean): void;
 }
 
 declare global {

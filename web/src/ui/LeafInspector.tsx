@@ -7,7 +7,7 @@
  * resulting `<svg>` element is adopted into the page (no innerHTML; the SVG has no scripts or
  * style attributes, so the CSP holds).
  */
-import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
+import { useEffect, useMemo, useRef, useState, useSyncExternalStore, type RefObject } from 'react';
 import {
   groupParams,
   type LeafInspection,
@@ -20,6 +20,7 @@ import {
 import { createModuleWorker } from '../createWorker';
 import { downloadBlob } from '../export/download';
 import { LeafClient } from '../leaf/leafClient';
+import { applyMonthTint, monthTint } from '../leaf/monthTint';
 import { ParamGroups, PresetOptions } from './ParamGroups';
 
 /** Registry groups the inspector edits. */
@@ -66,6 +67,8 @@ function useLeafDrawing(
 ): LeafDrawing {
   const clientRef = useRef<LeafClient | null>(null);
   const viewRef = useRef<HTMLDivElement | null>(null);
+  // The Season's colour of the tree's leaves (leaf/monthTint.ts).
+  const tint = useSyncExternalStore(monthTint.subscribe, monthTint.get);
   const [leaf, setLeaf] = useState<LeafInspection | null>(null);
   const [error, setError] = useState<SylvaError | null>(null);
   const [presets, setPresets] = useState<LeafPreset[]>([]);
@@ -106,8 +109,10 @@ function useLeafDrawing(
     svg.setAttribute('data-testid', 'leaf-svg');
     svg.removeAttribute('width');
     svg.removeAttribute('height');
-    view.replaceChildren(document.importNode(svg, true));
-  }, [leaf]);
+    const shown = document.importNode(svg, true) as unknown as SVGSVGElement;
+    applyMonthTint(shown, tint);
+    view.replaceChildren(shown);
+  }, [leaf, tint]);
 
   return { leaf, error, presets, viewRef };
 }

@@ -23,6 +23,7 @@ import type { TreeBuffers, TreeUpdate } from 'sylva-trees/core';
 import {
   applySoftShadows,
   buildEnvelopeGeometry,
+  ORGAN_MESH_PREFIX,
   SceneLights,
   TreeObject,
   type WindController,
@@ -30,6 +31,23 @@ import {
 import { antialiasFor, firstTreePixelRatio, webglRendererName } from './renderQuality';
 import { hashPixels } from './windDebug';
 import { checkLeafPull, type LeafPullCheck } from './leafPullCheck';
+import { monthTint } from '../leaf/monthTint';
+
+/** The organ meshes and fallen leaves of the tree shown ([`TreeViewer.organs`], the debug hook). */
+export interface OrganDebug {
+  sets: {
+    name: string;
+    kind: string;
+    count: number;
+    visible: boolean;
+    /** Tree-space positions of up to 64 of its instances. */
+    samples: [number, number, number][];
+  }[];
+  /** Leaf instances (on the tree and fallen). */
+  leaves: number;
+  /** Leaf instances lying on the ground (below 0.3 m). */
+  onGround: number;
+}
 
 /** Scene background (also used by the e2e test to tell the tree from the sky). */
 export const BACKGROUND_COLOR = '#dce6ec';
@@ -153,6 +171,8 @@ export class TreeViewer {
   }
 
   private afterTree(buffers: TreeBuffers, newEnvelope: boolean, frame: boolean): void {
+    // The leaf inspector tints its drawing by the Season's colour of this tree's leaves.
+    monthTint.set(buffers.leafTint ?? null);
     if (newEnvelope) {
       this.envelope.geometry.dispose();
       this.envelope.geometry = buildEnvelopeGeometry(buffers.envelope);
@@ -393,6 +413,39 @@ export class TreeViewer {
       this.shadowsDeferred = false;
       this.requestRender();
     }
+  }
+
+  /**
+   * Test support: the organ meshes in the scene (name, kind, instances, shown) and how many leaf
+   * instances lie on the ground (below 0.3 m: the fallen leaves) of how many.
+   */
+  organs(): OrganDebug {
+    const sets = this.tree.organMeshes.map((m) => {
+      const a = m.instanceMatrix.array;
+      // Up to 64 instance positions, spread over the set (close-up screenshots aim at one).
+      const step = Math.max(1, Math.ceil(m.count / 64));
+      const samples: [number, number, number][] = [];
+      for (let i = 0; i < m.count; i += step) {
+        samples.push([a[i * 16 + 12]!, a[i * 16 + 13]!, a[i * 16 + 14]!]);
+      }
+      return {
+        name: m.name.slice(ORGAN_MESH_PREFIX.length),
+        kind: String(m.userData.organKind),
+        count: m.count,
+        visible: m.visible && m.parent !== null,
+        samples,
+      };
+    });
+    const matrices = this.tree.buffers?.foliage?.matrices ?? new Float32Array(0);
+    let onGround = 0;
+    for (let i = 13; i < matrices.length; i += 16) if (matrices[i]! < 0.3) onGround++;
+    return { sets, leaves: matrices.length / 16, onGround };
+  }
+
+  /** Test support: shows or hides the organ meshes (a frame with and without them). */
+  setOrgansVisible(visible: boolean): void {
+    for (const m of this.tree.organMeshes) m.visible = visible;
+    this.requestRender();
   }
 
   /** Test support: the current leaves drawn pulled and instanced, compared (leafPullCheck.ts). */

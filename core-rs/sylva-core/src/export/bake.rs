@@ -127,8 +127,21 @@ pub fn bake_leaves(f: &Foliage, with_tangents: bool) -> BakedLeaves {
 
 /// [`bake_leaves`] with each tint divided by `scale` ([`tint_scale`]) before it is clamped.
 pub fn bake_leaves_scaled(f: &Foliage, with_tangents: bool, scale: [f32; 3]) -> BakedLeaves {
-    let leaf = &f.mesh;
-    let (nv, count) = (leaf.vertex_count(), f.count());
+    bake_instances(&f.mesh, &f.matrices, &f.colors, with_tangents, scale)
+}
+
+/// [`bake_leaves_scaled`] of any instanced mesh: `leaf` drawn once per 4×4 matrix of `matrices`
+/// (column-major, 16 floats each) with the RGB tint of `colors` (3 floats each) divided by
+/// `scale`; the organ sets ([`crate::organs::OrganSet`]) are baked by it too. The group keeps
+/// the material of the leaves.
+pub fn bake_instances(
+    leaf: &TreeMesh,
+    matrices: &[f32],
+    colors_in: &[f32],
+    with_tangents: bool,
+    scale: [f32; 3],
+) -> BakedLeaves {
+    let (nv, count) = (leaf.vertex_count(), (colors_in.len() / 3).min(matrices.len() / 16));
     let leaf_t =
         if with_tangents { tangents(&leaf.positions, &leaf.normals, &leaf.uvs, &leaf.indices) } else { Vec::new() };
     let total = nv * count;
@@ -144,7 +157,7 @@ pub fn bake_leaves_scaled(f: &Foliage, with_tangents: bool, scale: [f32; 3]) -> 
     };
     let mut colors = Vec::with_capacity(total * 4);
     let mut tan = Vec::with_capacity(if with_tangents { total * 4 } else { 0 });
-    for (k, (m, rgb)) in f.matrices.chunks_exact(16).zip(f.colors.chunks_exact(3)).enumerate() {
+    for (k, (m, rgb)) in matrices.chunks_exact(16).zip(colors_in.chunks_exact(3)).enumerate() {
         let lin =
             Mat3::from_cols(Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]), Vec3::new(m[8], m[9], m[10]));
         let t = Vec3::new(m[12], m[13], m[14]);

@@ -8,7 +8,9 @@
 //! zip holds one such file per level).
 //!
 //! * **LOD0**: the tree as [`super::glb::write`] writes it.
-//! * **LOD1**: the lighter bark sweep and every third leaf (larger), same materials.
+//! * **LOD1**: the lighter bark sweep and every third leaf (larger), same materials, and every
+//!   flower, fruit, catkin and bud (the organ sets of LOD0).
+//! * Organ sets are left out of LOD2 ([`crate::lod`]).
 //! * **LOD2**: the trunk and main branches, and the billboard cloud as leaves: each quad one
 //!   "leaf" (corners `centre ± u ± v`, the cluster's tint as its colour) on an untextured
 //!   double-sided `leaves` material (the app paints a leaf-clump texture on the cloud in the

@@ -28,6 +28,7 @@ pub mod growth;
 mod lods;
 pub mod obj;
 mod options;
+pub mod organs;
 pub mod png;
 mod quant;
 mod textures;
@@ -35,8 +36,8 @@ mod tint;
 pub mod zip;
 
 pub use bake::{
-    bake_leaves, bake_leaves_scaled, decompose, decompose_rotation, decompose_scale, scale_texels, tint_scale,
-    BakedLeaves,
+    bake_instances, bake_leaves, bake_leaves_scaled, decompose, decompose_rotation, decompose_scale, scale_texels,
+    tint_scale, BakedLeaves,
 };
 pub use lods::{lod_level_glb, lods_glb, LOD_SCREEN_SIZES};
 pub use options::{ExportOptions, LeafMode};

@@ -9,6 +9,10 @@
 //!   faces (1-based, global across objects, counter-clockwise seen from outside). Numbers are
 //!   Rust's shortest round-trip form of the `f32` values (colours: 4 decimals), so the text is
 //!   deterministic and reads back to the same floats.
+//! * Flowers, fruit, catkins and buds ([`crate::organs`]): after the leaves, one object per organ
+//!   set, baked as the leaves are (tints as vertex colours), named after the set with `_` for
+//!   spaces (`acorn_cups`), each with a plain material of that name (`Kd` its colour); none with
+//!   [`LeafMode::None`].
 //! * `NAME.mtl`: materials `bark` and `leaves`, `Kd` (white when textured, the plain colour
 //!   otherwise), `Ks 0 0 0`, `map_Kd NAME_bark_color.png`, `norm NAME_bark_normal.png`, and the
 //!   same for the leaves (the leaf colour PNG has the alpha that cuts the blade outline). A tree
@@ -18,6 +22,7 @@
 //!   baked textures (row 0 = `v` 0) are written with their rows reversed and the UVs stay as
 //!   they are; the normal maps then follow the OpenGL (+Y up) convention.
 
+use super::organs::BakedSet;
 use super::{ExportOptions, LeafMode};
 use crate::mesh::{Material, TreeMesh};
 use crate::Generated;
@@ -62,8 +67,13 @@ pub fn obj(g: &Generated, opts: &ExportOptions, name: &str) -> String {
     let scale = super::tint_scale(&g.foliage);
     let baked = has_leaves(g, opts).then(|| super::bake_leaves_scaled(&g.foliage, false, scale));
     let leaves = baked.as_ref().map(|b| &b.mesh);
-    let verts = bark.vertex_count() + leaves.map_or(0, TreeMesh::vertex_count);
-    let tris = bark.triangle_count() + leaves.map_or(0, TreeMesh::triangle_count);
+    let organs: Vec<BakedSet> = super::organs::exported(g, opts).into_iter().map(super::organs::bake_set).collect();
+    let verts = bark.vertex_count()
+        + leaves.map_or(0, TreeMesh::vertex_count)
+        + organs.iter().map(|b| b.baked.mesh.vertex_count()).sum::<usize>();
+    let tris = bark.triangle_count()
+        + leaves.map_or(0, TreeMesh::triangle_count)
+        + organs.iter().map(|b| b.baked.mesh.triangle_count()).sum::<usize>();
     let mut s = String::with_capacity(verts * 100 + tris * 40);
     let _ = writeln!(s, "# Sylva {} tree, hash {}", crate::VERSION, g.hash_hex());
     let _ = writeln!(s, "# {verts} vertices, {tris} triangles");
@@ -71,16 +81,21 @@ pub fn obj(g: &Generated, opts: &ExportOptions, name: &str) -> String {
     let bark_colors = opts.vertex_colors.then(|| super::bark_colors(bark));
     let mut first = 1u64;
     if bark.vertex_count() > 0 {
-        first += object(&mut s, "bark", bark, bark_colors.as_deref(), first);
+        first += object(&mut s, "bark", bark, bark_colors.as_deref(), first, None);
     }
     if let Some(b) = &baked {
-        object(&mut s, "leaves", &b.mesh, opts.vertex_colors.then_some(&b.colors[..]), first);
+        first += object(&mut s, "leaves", &b.mesh, opts.vertex_colors.then_some(&b.colors[..]), first, None);
+    }
+    for b in &organs {
+        let name = super::organs::file_name(b.set);
+        first +=
+            object(&mut s, &name, &b.baked.mesh, opts.vertex_colors.then_some(&b.baked.colors[..]), first, Some(&name));
     }
     s
 }
 
-/// Writes one object; returns its vertex count.
-fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first: u64) -> u64 {
+/// Writes one object (its groups' materials, or `material` for all); returns its vertex count.
+fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first: u64, material: Option<&str>) -> u64 {
     let _ = writeln!(s, "o {name}");
     for (i, p) in m.positions.chunks_exact(3).enumerate() {
         let _ = write!(s, "v {} {} {}", p[0], p[1], p[2]);
@@ -98,7 +113,7 @@ fn object(s: &mut String, name: &str, m: &TreeMesh, colors: Option<&[u8]>, first
         let _ = writeln!(s, "vn {} {} {}", n[0], n[1], n[2]);
     }
     for g in m.groups.iter().filter(|g| g.count > 0) {
-        let mat = g.material.name();
+        let mat = material.unwrap_or(g.material.name());
         let _ = writeln!(s, "usemtl {mat}");
         for t in m.indices[g.start as usize..(g.start + g.count) as usize].chunks_exact(3) {
             let (a, b, c) = (u64::from(t[0]) + first, u64::from(t[1]) + first, u64::from(t[2]) + first);
@@ -134,6 +149,7 @@ pub fn mtl(g: &Generated, opts: &ExportOptions, name: &str) -> String {
             }
         }
     }
+    organ_materials(g, opts, &mut s);
     if has_cut(g) {
         // Plain: the viewer's cut-face wood #c8a57a.
         s.push_str("\nnewmtl cut_face\n");
@@ -147,6 +163,18 @@ pub fn mtl(g: &Generated, opts: &ExportOptions, name: &str) -> String {
         }
     }
     s
+}
+
+/// One plain material per organ set, named as its object: `Kd` the set's colour (sRGB; with
+/// vertex colours, times the tint scale the baked colours were divided by, as in the GLB).
+fn organ_materials(g: &Generated, opts: &ExportOptions, s: &mut String) {
+    for set in super::organs::exported(g, opts) {
+        let lin = if opts.vertex_colors { super::organs::bake_set(set).base } else { super::organs::linear_color(set) };
+        let kd = lin.map(super::organs::linear_to_srgb);
+        let _ = writeln!(s, "\nnewmtl {}", super::organs::file_name(set));
+        let _ = writeln!(s, "Kd {:.4} {:.4} {:.4}", kd[0], kd[1], kd[2]);
+        s.push_str("Ks 0 0 0\nNs 10\nd 1\nillum 2\n");
+    }
 }
 
 /// The textures an OBJ export references, in file order.

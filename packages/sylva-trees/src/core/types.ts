@@ -114,6 +114,34 @@ export interface FoliageBuffers {
   leafHash: string;
 }
 
+/** What an organ set is (`sylva_core::organs::OrganKind`). */
+export type OrganKind =
+  'petals' | 'flower_centre' | 'catkin' | 'bud' | 'fruit' | 'fruit_part' | 'stalk';
+
+/**
+ * One kind of flower, fruit, catkin or bud (`sylva_core::organs::OrganSet`, the wasm's
+ * `organs_json` and `organ_*` getters): `positions`/`normals`/`indices` drawn once per instance,
+ * double-sided, in a plain material of `color` and `roughness`.
+ */
+export interface OrganSetBuffers {
+  kind: OrganKind;
+  /** A name for objects and materials (`"acorns"`, `"cherry blossom petals"`). */
+  name: string;
+  /** Base colour, sRGB 0..1. */
+  color: [number, number, number];
+  roughness: number;
+  /** The part in metres (x, y, z per vertex; attachment at the origin, along +y). */
+  positions: Float32Array;
+  /** Unit normal per vertex. */
+  normals: Float32Array;
+  /** Triangle list. */
+  indices: Uint32Array;
+  /** Column-major 4x4 matrix per instance (16 floats). */
+  matrices: Float32Array;
+  /** RGB tint per instance (3 floats, linear light, multiplies `color`). */
+  colors: Float32Array;
+}
+
 /** The bark arrays of a tree (see `TreeMesh`). */
 export interface BarkBuffers {
   positions: Float32Array;
@@ -147,6 +175,13 @@ export interface TreeUpdate {
   markers?: Float32Array;
   /** Per-leaf matrices and tints. */
   instances?: { matrices: Float32Array; colors: Float32Array };
+  /** The flowers, fruit, catkins and buds (sent with the placements; [] = none). */
+  organs?: OrganSetBuffers[];
+  /**
+   * The mean tint of the leaves on the tree (linear light; the fallen ones left out), sent with
+   * the placements: the Season's leaf colour for the leaf inspector. Null: no leaf on the tree.
+   */
+  leafTint?: [number, number, number] | null;
   leafMesh?: LeafMeshBuffers;
   /** The leaf texture (a new leaf shape). */
   leafTexture?: LeafTextureBuffers;
@@ -174,6 +209,10 @@ export interface TreeBuffers {
   meta: TreeMeta;
   /** The leaves (absent from hand-made test buffers). */
   foliage?: FoliageBuffers;
+  /** Flowers, fruit, catkins and buds, one set per kind (absent or [] = none). */
+  organs?: OrganSetBuffers[];
+  /** Mean tint of the leaves on the tree (see `TreeUpdate.leafTint`); absent or null: none. */
+  leafTint?: [number, number, number] | null;
   /**
    * Wind data, 8 floats per vertex (`pivot xyz, level, phase, stiffness, distance, radius`, see
    * `TreeMesh.wind`); absent or empty when the core has none (the viewer falls back).
@@ -308,6 +347,19 @@ export interface WasmSession {
   leaf_texture(): Uint8Array;
   /** Bark occlusion, one byte per vertex (empty for a preview). */
   shade(): Uint8Array;
+  /**
+   * The organ sets (optional: test fakes and older builds lack them): their count, then
+   * `[{kind, name, color, roughness, count}]` as JSON and set `i`'s arrays.
+   */
+  organ_count?(): number;
+  organs_json?(): string;
+  organ_positions?(i: number): Float32Array;
+  organ_normals?(i: number): Float32Array;
+  organ_indices?(i: number): Uint32Array;
+  organ_matrices?(i: number): Float32Array;
+  organ_colors?(i: number): Float32Array;
+  /** How many leaf instances, the last ones, lie on the ground (optional: fakes lack it). */
+  fallen?(): number;
   free(): void;
 }
 

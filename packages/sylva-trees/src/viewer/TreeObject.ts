@@ -15,6 +15,7 @@ import {
   Sphere,
   Vector3,
   type BufferGeometry,
+  type InstancedMesh,
   type Texture,
 } from 'three';
 import type { BarkBuffers, TreeBuffers, TreeUpdate } from '../core/types';
@@ -27,6 +28,7 @@ import { buildTreeGeometry, updateShade, updateTreeGeometry } from './geometry';
 import { applyLeafCoverage } from './leafCoverage';
 import { applyLeafTranslucency } from './lighting';
 import { applySoftShadows } from './softShadows';
+import { OrganSets } from './organs';
 import { mergeUpdate, updateOf } from './treeState';
 import { WindController } from './wind';
 
@@ -51,6 +53,8 @@ export class TreeObject {
   private readonly endGrain = new EndGrainTextures(this.cutFace);
   private readonly foliage = new Foliage(this.group);
   private readonly barkTextures = new BarkTextures(this.bark, this.barkLook);
+  /** Flowers, fruit, catkins and buds: swaying with the leaves, soft-shadowed as they are. */
+  private readonly organs: OrganSets;
   private mesh: Mesh<BufferGeometry, MeshStandardMaterial[]> | null = null;
   /** The current bark's pick boxes (`core/pickBoxes.ts`), or null. */
   private pickBoxes: Float32Array | null = null;
@@ -83,6 +87,18 @@ export class TreeObject {
       this.wind.depthMaterial('leaves', 'pulled'),
       this.wind.depthMaterial('leaves'),
     );
+    this.organs = new OrganSets(this.group, {
+      patch: (material) => {
+        this.wind.apply(material, 'organs');
+        applySoftShadows(material);
+      },
+      depthMaterial: () => this.wind.depthMaterial('organs'),
+    });
+  }
+
+  /** The organ meshes drawn (one `InstancedMesh` per set). */
+  get organMeshes(): readonly InstancedMesh[] {
+    return this.organs.objects;
   }
 
   /** The whole current tree, null before the first update. */
@@ -133,6 +149,7 @@ export class TreeObject {
     if (update.bark) this.setBark(update.bark, buffers);
     if (update.shade && this.mesh) updateShade(this.mesh.geometry, update.shade);
     this.foliage.update(update);
+    if (update.organs) this.organs.set(update.organs);
     const geometry = this.mesh?.geometry;
     this.wind.setTree(buffers.meta.bounds, geometry?.hasAttribute('windPivot') ?? false);
     if (update.barkTextures) this.barkTextures.set(update.barkTextures);
@@ -174,6 +191,7 @@ export class TreeObject {
       this.mesh = null;
     }
     this.foliage.dispose();
+    this.organs.dispose();
     this.wind.dispose();
     this.barkTextures.dispose();
     this.endGrain.dispose();

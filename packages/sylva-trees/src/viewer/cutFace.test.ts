@@ -24,7 +24,7 @@ function grain(size: number, kind = 0): EndGrainBuffers {
 
 describe('cut face material slot', () => {
   it('maps each group to its own slot: bark, leaves, cut face', () => {
-    expect(MATERIAL_INDEX).toEqual({ bark: 0, leaves: 1, cut_face: 2 });
+    expect(MATERIAL_INDEX).toEqual({ bark: 0, leaves: 1, cut_face: 2, organ: 1 });
   });
 
   it('a tree with a cut has a cut_face group drawn with slot 2, on the same buffers', () => {

@@ -11,9 +11,11 @@ import { attachWindAttributes } from './wind';
 
 /**
  * Material slot of each mesh group in the material array [bark, leaves, cut face]: a cut stem's
- * face (`cut_face`) draws with the end-grain material (cutFaceMaterial.ts) in its disc uvs.
+ * face (`cut_face`) draws with the end-grain material (cutFaceMaterial.ts) in its disc uvs. The
+ * bark mesh never carries `organ` groups (organ sets are meshes of their own, organs.ts); the
+ * slot of the leaves stands in, as in the core's GLB.
  */
-export const MATERIAL_INDEX = { bark: 0, leaves: 1, cut_face: 2 } as const;
+export const MATERIAL_INDEX = { bark: 0, leaves: 1, cut_face: 2, organ: 1 } as const;
 
 /** Wraps the arrays in BufferAttributes (no copying, no per-vertex JS) and adds material groups. */
 export function buildTreeGeometry(tree: TreeBuffers): BufferGeometry {

@@ -13,6 +13,7 @@ export { leafTexture, srgbTexture } from './leafTexture';
 export { applyLeafCoverage } from './leafCoverage';
 export { LEAF_INSTANCED_MATERIAL_KEY, LEAF_MATRICES_KEY, LEAF_TRANSLUCENCY } from './Foliage';
 export { wrapInstances } from './instances';
+export { OrganSets, ORGAN_MESH_PREFIX, organMaterial, organGeometry } from './organs';
 export { attachBarkAttributes } from './barkLook';
 export { applyLeafPull, LeafPullData } from './leafPull';
 export type { WindController } from './wind';

@@ -24,6 +24,8 @@ export function updateOf(tree: TreeBuffers): TreeUpdate {
     instances: f
       ? { matrices: f.matrices, colors: f.colors }
       : { matrices: new Float32Array(0), colors: new Float32Array(0) },
+    organs: tree.organs ?? [],
+    leafTint: tree.leafTint ?? null,
     ...(f
       ? {
           leafMesh: { positions: f.positions, normals: f.normals, uvs: f.uvs, indices: f.indices },
@@ -65,6 +67,8 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
   const textures = update.barkTextures ?? current?.bark;
   const endGrain = update.endGrain ?? current?.endGrain;
   const shade = update.shade ?? current?.shade;
+  const organs = update.organs ?? current?.organs ?? [];
+  const leafTint = update.leafTint !== undefined ? update.leafTint : (current?.leafTint ?? null);
   return {
     positions: bark.positions,
     normals: bark.normals,
@@ -73,6 +77,8 @@ export function mergeUpdate(current: TreeBuffers | null, update: TreeUpdate): Tr
     envelope: update.envelope ?? current?.envelope ?? EMPTY_F32,
     meta: update.meta,
     foliage,
+    organs,
+    leafTint,
     ...(wind ? { wind } : {}),
     ...(markers ? { markers } : {}),
     ...(textures ? { bark: textures } : {}),

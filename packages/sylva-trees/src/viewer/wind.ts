@@ -59,8 +59,12 @@ export interface WindUniforms {
   [name: string]: IUniform;
 }
 
-/** Which displacement a material gets. */
-export type WindKind = 'bark' | 'leaves';
+/**
+ * Which displacement a material gets: the bark's, the leaves' (flutter, then their anchor's
+ * sway), or the organs' (flowers, fruit, buds: the leaves' without the flutter, rigid parts
+ * carried by their anchor).
+ */
+export type WindKind = 'bark' | 'leaves' | 'organs';
 
 /** Fresh uniforms with the default settings and a 10 m tree. */
 export function createWindUniforms(): WindUniforms {
@@ -120,8 +124,9 @@ export function patchWindShader(
   if (!shader.vertexShader.includes(common) || !shader.vertexShader.includes(begin)) {
     throw new Error('wind: the vertex shader has no <common>/<begin_vertex> chunk');
   }
+  const rigid = kind === 'organs' ? '#define WIND_NO_FLUTTER\n' : '';
   shader.vertexShader = shader.vertexShader
-    .replace(common, `${common}\n${WIND_MARKER} ${kind}\n${WIND_COMMON_GLSL}${pars}`)
+    .replace(common, `${common}\n${WIND_MARKER} ${kind}\n${rigid}${WIND_COMMON_GLSL}${pars}`)
     .replace(begin, `${begin}\n${body}`);
   Object.assign(shader.uniforms, uniforms);
 }

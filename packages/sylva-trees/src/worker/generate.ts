@@ -18,6 +18,7 @@ import { coreInput } from '../core/editsJson';
 import { pickBoxes } from '../core/pickBoxes';
 import { volumeToCore } from '../core/volumes';
 import type { GenerateRequest, WorkerResponse } from './protocol';
+import { meanTint, organsOf, organViews } from './organs';
 
 /** Sends a response, transferring the given buffers. */
 export type Post = (message: WorkerResponse, transfer: Transferable[]) => void;
@@ -96,6 +97,7 @@ export function transferOf(update: TreeUpdate): Transferable[] {
   if (update.envelope) views.push(update.envelope);
   if (update.markers) views.push(update.markers);
   if (update.instances) views.push(update.instances.matrices, update.instances.colors);
+  views.push(...organViews(update.organs));
   const l = update.leafMesh;
   if (l) views.push(l.positions, l.normals, l.uvs, l.indices);
   if (update.leafTexture) views.push(update.leafTexture.rgba);
@@ -245,7 +247,11 @@ export class SessionGenerator {
       update.markers = s.markers();
     }
     if (changes.placements) {
-      update.instances = { matrices: s.leaf_matrices(), colors: s.leaf_colors() };
+      const colors = s.leaf_colors();
+      update.instances = { matrices: s.leaf_matrices(), colors };
+      // The core's placements change covers the organ sets and the fallen leaves too.
+      update.organs = organsOf(s);
+      update.leafTint = meanTint(colors, colors.length / 3 - (s.fallen?.() ?? 0));
     }
     if (changes.leaf_mesh) {
       update.leafMesh = {

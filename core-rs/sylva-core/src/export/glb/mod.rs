@@ -58,6 +58,13 @@
 //!   largest value over 1, which the leaf texture takes: `bake::tint_scale`) and, with
 //!   wind, each leaf's twig's wind record, coded as the bark's (the bark's codec and
 //!   `extras`); indices `u32` past 65,535 vertices, as the bark's.
+//! * **Flowers, fruit, catkins and buds** (`organs.rs`, [`crate::organs`]): after the leaves,
+//!   one node, mesh and material per organ set, named after the set (`"acorns"`), with the
+//!   set's colour as `baseColorFactor` (linear), its roughness and `doubleSided`; instanced as
+//!   the leaves are (`_COLOR_0` = the per-instance tints) or, where the leaves are baked, baked
+//!   with the tints as `COLOR_0`. Left out with [`LeafMode::None`] and from the growth
+//!   animation. Their materials come after the others, so a tree without parts (every preset
+//!   in July) keeps every index and byte.
 //! * **Materials** (metallic-roughness, metallic 0; `materials.rs`): `bark` (roughness 0.9, bark colour map,
 //!   bark normal map, textures REPEAT-wrapped: bark UVs run past 1 along the stems); `leaves`
 //!   (roughness 0.7, leaf colour map with `alphaMode` MASK, cutoff 0.5, `doubleSided`, leaf
@@ -99,6 +106,7 @@ mod doc;
 mod growth;
 mod materials;
 pub mod merge;
+mod organs;
 
 use super::options::{ExportOptions, LeafMode};
 use super::textures::TexturePngs;
@@ -203,6 +211,11 @@ fn write_with(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: u
             .then(|| super::frames::mesh_tangents(bark)),
         leaf_pngs,
     };
+    // The parts follow the leaves' mode; a growing file has none (they could not grow).
+    let organ_sets = if growth.is_some() { Vec::new() } else { super::organs::exported(g, opts) };
+    let organs_baked = leaves == LeafMode::Baked;
+    let baked_sets: Vec<_> =
+        if organs_baked { organ_sets.iter().map(|s| super::organs::bake_set(s)).collect() } else { Vec::new() };
     let morphs = growth.map(|(age, mature)| growth::morphs(g, owned.baked.as_ref(), age, mature, threads));
     let mut doc = Doc { strict: opts.strict, ..Doc::default() };
     let samplers = json!([
@@ -264,10 +277,16 @@ fn write_with(g: &Generated, opts: &ExportOptions, out: &mut Vec<u8>, threads: u
         instanced_leaves_node(&mut doc, f, mesh, opts.vertex_colors);
         children.push(doc.nodes.len());
     }
+    if organs_baked {
+        organs::baked(&mut doc, &baked_sets, opts.vertex_colors, &mut children);
+    } else {
+        organs::instanced(&mut doc, &organ_sets, opts.vertex_colors, &mut children);
+    }
     if let Some(m) = &morphs {
         growth::animation(&mut doc, &children, m);
     }
-    assemble(doc, g, samplers, used_samplers, instanced, children, out, threads);
+    let instancing = instanced || (!organs_baked && !organ_sets.is_empty());
+    assemble(doc, g, samplers, used_samplers, instancing, children, out, threads);
 }
 
 /// The instanced leaf mesh's extra vertex data: its tangents, when computed.
