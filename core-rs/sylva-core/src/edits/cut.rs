@@ -31,7 +31,7 @@ pub fn callus(years: f32, radius: f32) -> f32 {
 }
 
 /// What a cut takes away, decided on one skeleton and applicable to another with the same
-/// stems (the same tree thinner, in an earlier year: [`crate::life::LifeRecord::at`]).
+/// stems (the same tree thinner, in an earlier year: [`crate::skeleton::LifeRecord::at`]).
 #[derive(Clone, Debug)]
 pub struct CutPlan {
     /// The stump would sit inside its parent: the whole branch goes.

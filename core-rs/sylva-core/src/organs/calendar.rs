@@ -25,7 +25,7 @@
 //! Parts that are present in summer but hardly seen (young green acorns, next year's buds)
 //! start in August, so July stays the summer tree of every preset.
 
-use super::OrganKind;
+use super::set::OrganKind;
 use crate::params::{Fruit, LeafPhenology};
 use crate::season::{phenology, Phenology};
 

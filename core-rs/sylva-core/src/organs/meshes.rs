@@ -12,7 +12,7 @@
 //! Every mesh is built once per process and kept (a pure function of its kind).
 
 use super::calendar::Part;
-use super::OrganKind;
+use super::set::OrganKind;
 use crate::leaf;
 use crate::math;
 use crate::mesh::{Material, MeshGroup, TreeMesh};

@@ -10,7 +10,7 @@
 
 use super::calendar::{Part, Show};
 use super::meshes;
-use super::{OrganKind, OrganSet};
+use super::set::{OrganKind, OrganSet};
 use crate::math;
 use crate::params::{FoliageParams, Fruit, GrowthMode};
 use crate::rng::Rng;

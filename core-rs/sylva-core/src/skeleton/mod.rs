@@ -47,8 +47,25 @@ pub struct Skeleton {
     /// The tree's Mature Age (years): the form the stems were built in ([`crate::age`]).
     pub maturity: f32,
     /// For a tree past its Mature Age: the stems at it and the life that followed
-    /// ([`crate::life::LifeRecord`]), so the growth animation can show any year between.
-    pub life: Option<std::sync::Arc<crate::life::LifeRecord>>,
+    /// ([`LifeRecord`]), so the growth animation can show any year between.
+    pub life: Option<std::sync::Arc<LifeRecord>>,
+}
+
+/// What the years past the Mature Age started from and how they acted: kept on the
+/// skeleton ([`Skeleton::life`]) so the growth animation can show the tree in any year between
+/// (`LifeRecord::at`, in [`crate::life`]).
+#[derive(Clone, Debug)]
+pub struct LifeRecord {
+    /// The stems at the Mature Age, before any year of life.
+    pub mature: Skeleton,
+    /// Ring Width (m a year).
+    pub ring: f32,
+    /// Shedding Light and Shedding Delay.
+    pub shed: (f32, f32),
+    /// Droop (degrees a decade).
+    pub droop: f32,
+    /// The Mature Age and the Age.
+    pub years: (f32, f32),
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.

@@ -14,7 +14,7 @@
 
 use super::life::Lives;
 use super::morph::{Place, YearShape};
-use crate::life::LifeRecord;
+use crate::skeleton::LifeRecord;
 use crate::skeleton::Skeleton;
 use glam::{Quat, Vec3};
 
