@@ -58,19 +58,38 @@ export const seasonsSection = {
   },
 };
 
-/** Close-ups: preset, Season, the set to frame, camera distance (m), caption. */
+/**
+ * Close-ups: preset, Season, the set to frame, camera distance (m), where the camera looks from
+ * (`below`: hanging parts, seen from under and outside the leaves; `above`: a fir's upright
+ * cones; `out`: level, from outside the crown), caption.
+ */
 const PARTS = [
-  ['cherry', 4.2, 'cherry blossom petals', 0.45, 'Cherry blossom in April'],
-  ['apple', 4.9, 'apple blossom petals', 0.45, 'Apple blossom in May'],
-  ['cherry', 6.1, 'cherries', 0.45, 'Cherries in June'],
-  ['apple', 9.2, 'apples', 0.7, 'Apples in September'],
-  ['oak', 9.5, 'acorns', 0.4, 'Acorns in their cups, mid-September (Oak)'],
-  ['umbrella', 9.6, 'samara wings', 0.5, 'Samaras in September (maple leaf)'],
-  ['fir', 9.0, 'fir cones', 1.2, 'Fir cones standing on the upper branches in September'],
-  ['weeping', 4.0, 'birch catkins', 0.6, 'Birch catkins shedding pollen in April'],
-  ['quaking_aspen', 3.3, 'aspen catkins', 0.6, 'Aspen catkins in March, before the leaves'],
-  ['oak', 1.5, 'buds', 0.3, 'Winter buds at the shoot tips in January (Oak)'],
+  ['cherry', 4.2, 'cherry blossom petals', 0.5, 'out', 'Cherry blossom in April'],
+  ['apple', 4.9, 'apple blossom petals', 0.5, 'out', 'Apple blossom in May'],
+  ['cherry', 6.1, 'cherries', 0.4, 'below', 'Cherries in June'],
+  ['apple', 9.2, 'apples', 0.7, 'below', 'Apples in September'],
+  ['oak', 9.5, 'acorns', 0.3, 'below', 'Acorns in their cups, mid-September (Oak)'],
+  ['umbrella', 9.6, 'samara wings', 0.35, 'below', 'Samaras in September (maple leaf)'],
+  ['fir', 9.0, 'fir cones', 0.8, 'above', 'Fir cones standing on the upper branches in September'],
+  ['weeping', 4.0, 'birch catkins', 0.3, 'below', 'Birch catkins shedding pollen in April'],
+  [
+    'quaking_aspen',
+    3.3,
+    'aspen catkins',
+    0.3,
+    'below',
+    'Aspen catkins in March, before the leaves',
+  ],
+  ['oak', 1.5, 'buds', 0.1, 'out', 'Winter buds at the shoot tips in January (Oak)'],
 ];
+
+/** Where the camera stands to look at `at` from `distance` m (see PARTS). */
+export function partCamera(at, distance, from) {
+  const out = Math.hypot(at[0], at[2]) || 1;
+  const [ox, oz] = [at[0] / out, at[2] / out];
+  const [side, up] = { below: [0.6, -0.8], above: [0.6, 0.8], out: [1, 0.25] }[from];
+  return [at[0] + ox * side * distance, at[1] + up * distance, at[2] + oz * side * distance];
+}
 
 /** Of `origins`, one on the crown's outside at mid height: the farthest from the trunk's axis. */
 export function outermost(origins) {
@@ -89,7 +108,7 @@ export const partsSection = {
   async shots(ctx) {
     const shots = [];
     const preset = (name) => ctx.presets.find((p) => p.name === name);
-    for (const [name, season, set, distance, caption] of PARTS) {
+    for (const [name, season, set, distance, side, caption] of PARTS) {
       const p = preset(name);
       if (!p || (ctx.presetFilter && !ctx.presetFilter.includes(name))) continue;
       const values = { ...p.values, season };
@@ -97,12 +116,7 @@ export const partsSection = {
       const part = organs.find((o) => o.name === set);
       if (!part) throw new Error(`${name} at Season ${season} has no ${set}`);
       const at = outermost(part.origins);
-      const out = Math.hypot(at[0], at[2]) || 1;
-      const from = [
-        at[0] + (at[0] / out) * distance,
-        at[1] + 0.25 * distance,
-        at[2] + (at[2] / out) * distance,
-      ];
+      const from = partCamera(at, distance, side);
       await ctx.open(values);
       await ctx.view(from, at);
       const file = `part-${set.replaceAll(' ', '-')}.png`;

@@ -2,7 +2,7 @@
 // the crown's outside at mid height.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { broadleaves, outermost } from './seasons.mjs';
+import { broadleaves, outermost, partCamera } from './seasons.mjs';
 
 test('every preset but the evergreen conifers is in the seasons strip', () => {
   const presets = [
@@ -30,4 +30,11 @@ test('the close-up part is the outermost one between a third and three quarters 
     [6, 1, 0],
   ];
   assert.deepEqual(outermost(origins), [0, 4, -4.5]);
+});
+
+test('a hanging part is seen from under and outside it, an upright one from above', () => {
+  const near = (a, b) => a.every((x, i) => Math.abs(x - b[i]) < 1e-9);
+  assert.ok(near(partCamera([3, 5, 4], 1, 'below'), [3.36, 4.2, 4.48]));
+  assert.ok(near(partCamera([3, 5, 4], 1, 'above'), [3.36, 5.8, 4.48]));
+  assert.ok(near(partCamera([0, 2, -2], 0.5, 'out'), [0, 2.125, -2.5]));
 });

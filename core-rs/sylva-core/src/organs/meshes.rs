@@ -122,7 +122,8 @@ fn blade(a1: f32, a2: f32, cup: f32) -> TreeMesh {
     l.leaf_petiole_flat = false;
     l.leaf_texture_level = 4;
     l.leaf_impostor_grid = 2;
-    l.leaf_rings = 3;
+    l.leaf_rings = 1;
+    l.leaf_detail = 0.25;
     leaf::generate(&p.leaf, 0.0).map(|g| g.mesh).unwrap_or_default()
 }
 
@@ -152,10 +153,8 @@ fn build(part: Part, kind: OrganKind) -> TreeMesh {
         (_, OrganKind::FlowerCentre) => {
             lathe(&[(0.0, 0.0), (0.0, 0.004), (0.004, 0.0035), (0.007, 0.002), (0.008, 0.0)], SIDES)
         }
-        (Part::BirchCatkin | Part::AspenCatkin, _) => {
-            lathe(&profile(0.06, 0.0045, 14, 0.15, |t| arch(t).sqrt()), SIDES)
-        }
-        (Part::WillowCatkin, _) => lathe(&profile(0.04, 0.003, 12, 0.15, |t| arch(t).sqrt()), SIDES),
+        (Part::BirchCatkin | Part::AspenCatkin, _) => lathe(&profile(0.06, 0.0045, 13, 0.15, |t| arch(t).sqrt()), 6),
+        (Part::WillowCatkin, _) => lathe(&profile(0.04, 0.003, 11, 0.15, |t| arch(t).sqrt()), 6),
         (Part::Bud, _) => {
             lathe(&profile(0.009, 0.0022, 5, 0.0, |t| math::pow(t, 0.3) * math::pow(1.0 - t, 0.7) * 1.6), SIDES)
         }
@@ -203,11 +202,11 @@ fn fruit(f: Fruit, kind: OrganKind) -> TreeMesh {
             close(m)
         }
         (Fruit::HangingCones, _) => {
-            lathe(&profile(0.065, 0.021, 16, 0.14, |t| math::pow(arch(0.2 + 0.8 * t), 0.7)), SIDES + 2)
+            lathe(&profile(0.065, 0.021, 11, 0.14, |t| math::pow(arch(0.2 + 0.8 * t), 0.7)), SIDES)
         }
         (Fruit::UprightCones, _) => lathe(
-            &profile(0.09, 0.022, 18, 0.1, |t| math::pow(arch(0.5 * t + 0.1), 0.5) * (1.0 - 0.4 * t * t * t)),
-            SIDES + 2,
+            &profile(0.09, 0.022, 11, 0.1, |t| math::pow(arch(0.5 * t + 0.1), 0.5) * (1.0 - 0.4 * t * t * t)),
+            SIDES,
         ),
         (Fruit::None, _) => TreeMesh::default(),
     }
@@ -285,6 +284,14 @@ mod tests {
             let n = (b - a).cross(c - a);
             let centre = (a + b + c) / 3.0 - Vec3::new(0.0, 0.5, 0.0);
             assert!(n.dot(centre) > 0.0, "inward triangle {t:?}");
+        }
+    }
+
+    #[test]
+    fn parts_are_light_enough_to_draw_by_the_thousand() {
+        for (part, kind, m) in every_mesh() {
+            println!("{part:?} {kind:?}: {} triangles", m.triangle_count());
+            assert!(m.triangle_count() <= 200, "{part:?} {kind:?}: {} triangles", m.triangle_count());
         }
     }
 

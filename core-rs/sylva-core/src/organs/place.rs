@@ -1,6 +1,7 @@
 //! Where the parts hang: on the shoots that carry the leaves (every stem of the last level of a
 //! Weber & Penn tree, every grown shoot), a **Fruit Load** fraction of them bearing one
-//! cluster each, between halfway and near the tip; catkins at the tips; a bud at every tip.
+//! cluster each, between halfway and near the tip (blossom on [`BLOSSOM`] times as many: the
+//! fruiting shoots and more); catkins at the tips; a bud at every tip.
 //!
 //! Each shoot draws the same random numbers (stream `"organs"`) whatever the month, so a part
 //! stays where it is from bud to fruit: the cherries hang where the blossom was. A hanging
@@ -24,6 +25,12 @@ const PER: usize = 5;
 /// The largest cluster.
 const MEMBERS: usize = 5;
 const DRAWS: usize = HEAD + PER * MEMBERS;
+/// Shoots in flower, as a multiple of the Fruit Load: most blossom never sets fruit.
+const BLOSSOM: f32 = 2.5;
+/// Blossom clusters along a flowering shoot.
+const CLUSTERS: usize = 4;
+/// The turn (of a whole) from one blossom cluster's place and numbers to the next's.
+const GOLDEN_TURN: f32 = 0.618_034;
 
 /// One shoot that may bear: the stem and its random numbers.
 struct Shoot {
@@ -172,6 +179,9 @@ pub fn place(skeleton: &Skeleton, p: &FoliageParams) -> Vec<OrganSet> {
                 true
             } else if upright {
                 d[0] < 1.5 * p.fruit_load && tip(skeleton, shoot.stem).y > 0.7 * top
+            } else if part.is_blossom() {
+                // A tree in flower is white all over: most shoots blossom, a few set fruit.
+                d[0] < (BLOSSOM * p.fruit_load).min(1.0)
             } else {
                 d[0] < p.fruit_load
             };
@@ -179,46 +189,66 @@ pub fn place(skeleton: &Skeleton, p: &FoliageParams) -> Vec<OrganSet> {
                 continue;
             }
             let stem = &skeleton.stems[shoot.stem];
-            let (pos, tangent) = stem.points().sample(hab.along.0 + hab.along.1 * d[1]);
             let n = (hab.members.0 + (d[2] * hab.members.1 as f32) as usize).min(MEMBERS);
-            for k in 0..n {
-                let m = &d[HEAD + PER * k..HEAD + PER * k + PER];
-                if m[4] >= show.present {
-                    continue;
-                }
-                let dir = if part == Part::Bud {
-                    tangent
-                } else {
-                    let tilt = math::rad(hab.tilt.0 + hab.tilt.1 * m[1]);
-                    let az = std::f32::consts::TAU * m[0];
-                    let (st, ct) = (math::sin(tilt), math::cos(tilt));
-                    Vec3::new(st * math::cos(az), -ct, st * math::sin(az))
-                };
-                let basis = frame(dir, m[2]);
-                let hue = (m[4] * 7.31).fract();
-                let c = [0, 1, 2].map(|i| show.color[0][i] + (show.color[1][i] - show.color[0][i]) * hue);
-                let bright = 0.9 + 0.2 * m[3];
-                let tint = [0, 1, 2].map(|i| bright * linear(c[i]) / base[i].max(1e-4));
-                let size = show.size * (0.85 + 0.3 * m[3]);
-                let at = pos + dir * hab.stalk;
-                for set in &mut out {
-                    if set.kind == OrganKind::Stalk {
-                        push(&mut set.matrices, &basis, Vec3::new(1.0, hab.stalk, 1.0), pos);
-                        set.colors.extend_from_slice(&[bright; 3]);
-                        continue;
+            // Blossom comes in clusters all along the shoot's spurs; the first is where the
+            // fruit hangs later.
+            let clusters = if part.is_blossom() { CLUSTERS } else { 1 };
+            for j in 0..clusters {
+                let turn = j as f32 * GOLDEN_TURN;
+                let u = if j == 0 { d[1] } else { (d[1] + turn).fract() };
+                let (pos, tangent) = stem.points().sample(hab.along.0 + hab.along.1 * u);
+                for k in 0..n {
+                    let m = &d[HEAD + PER * k..HEAD + PER * k + PER];
+                    if m[4] < show.present {
+                        let m = [(m[0] + turn).fract(), m[1], (m[2] + turn).fract(), m[3], m[4]];
+                        hang(&mut out, (part, show, &hab), (pos, tangent), &m, base);
                     }
-                    // A closed flower is narrow: its petals gather about the axis.
-                    let across = if set.kind == OrganKind::Petals { size * (0.35 + 0.65 * show.open) } else { size };
-                    push(&mut set.matrices, &basis, Vec3::new(across, size, across), at);
-                    let own = set.kind == OrganKind::FlowerCentre
-                        || set.kind == OrganKind::FruitPart && part == Part::Fruit(Fruit::Acorns);
-                    set.colors.extend_from_slice(&if own { [bright; 3] } else { tint });
                 }
             }
         }
         sets.extend(out.into_iter().filter(|s| !s.matrices.is_empty()));
     }
     sets
+}
+
+/// Adds one part hanging at `pos` on a shoot running along `tangent` to every set of `out`,
+/// by its random numbers `m` (azimuth, tilt, spin, size, fall); `base`: the show's first
+/// colour in linear light, which the sets' tints are relative to.
+fn hang(
+    out: &mut [OrganSet],
+    (part, show, hab): (Part, &Show, &Habit),
+    (pos, tangent): (Vec3, Vec3),
+    m: &[f32; PER],
+    base: [f32; 3],
+) {
+    let dir = if part == Part::Bud {
+        tangent
+    } else {
+        let tilt = math::rad(hab.tilt.0 + hab.tilt.1 * m[1]);
+        let az = std::f32::consts::TAU * m[0];
+        let (st, ct) = (math::sin(tilt), math::cos(tilt));
+        Vec3::new(st * math::cos(az), -ct, st * math::sin(az))
+    };
+    let basis = frame(dir, m[2]);
+    let hue = (m[4] * 7.31).fract();
+    let c = [0, 1, 2].map(|i| show.color[0][i] + (show.color[1][i] - show.color[0][i]) * hue);
+    let bright = 0.9 + 0.2 * m[3];
+    let tint = [0, 1, 2].map(|i| bright * linear(c[i]) / base[i].max(1e-4));
+    let size = show.size * (0.85 + 0.3 * m[3]);
+    let at = pos + dir * hab.stalk;
+    for set in out {
+        if set.kind == OrganKind::Stalk {
+            push(&mut set.matrices, &basis, Vec3::new(1.0, hab.stalk, 1.0), pos);
+            set.colors.extend_from_slice(&[bright; 3]);
+            continue;
+        }
+        // A closed flower is narrow: its petals gather about the axis.
+        let across = if set.kind == OrganKind::Petals { size * (0.35 + 0.65 * show.open) } else { size };
+        push(&mut set.matrices, &basis, Vec3::new(across, size, across), at);
+        let own = set.kind == OrganKind::FlowerCentre
+            || set.kind == OrganKind::FruitPart && part == Part::Fruit(Fruit::Acorns);
+        set.colors.extend_from_slice(&if own { [bright; 3] } else { tint });
+    }
 }
 
 /// The tip of stem `i`.
