@@ -5,12 +5,22 @@
  *   grid (`hemiOct.ts`) with an orthographic camera fitted to its bounding sphere, one frame per
  *   atlas cell, into one multisampled render target with two colour attachments (one draw per
  *   frame): albedo + coverage (unlit, premultiplied) and object-space normals (`n · 0.5 + 0.5`,
- *   leaves' back faces flipped toward the camera, premultiplied by coverage).
+ *   leaves' back faces flipped toward the camera, premultiplied by coverage) with the depth
+ *   toward the eye in the normal's alpha (`h / r · 0.5 + 0.5`, h the signed distance from the
+ *   frame's image plane through the centre, premultiplied too).
  * * **Draw**: a camera-facing quad (per instance in the forest) whose vertex shader finds the
- *   3 frames around the view direction in the tree's own frame and their barycentric weights,
- *   and projects the quad's corners onto each frame's image plane along the eye ray; the fragment
- *   shader blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere
- *   light + sun, the viewer's lights), so the impostor follows the scene's lighting.
+ *   3 frames around the view direction in the tree's own frame and their barycentric weights.
+ *   Each fragment casts its eye ray into each of the 3 frames and marches it through that
+ *   frame's depth (parallax occlusion mapping, refined by bisection: `hemiOct.ts`
+ *   `frameRay`/`parallaxHit` are the same maths) to the point where it meets the surface that
+ *   frame saw, so the 3 frames sample the same point of the tree and agree: one trunk, not two
+ *   half-transparent ones. (Projecting onto each frame's plane through the centre instead, as
+ *   this did before, put everything off that plane, such as the trunk's foot seen from a frame
+ *   above the horizon, in a different place per frame.) Depth parallax was chosen over the
+ *   nearest frame with a dithered cross-fade: the cross-fade still shows both frames' trunks,
+ *   stippled, wherever it fades, and without it the image jumps by a frame's angle. The shader
+ *   blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere light +
+ *   sun, the viewer's lights), so the impostor follows the scene's lighting.
  */
 import type { Vector3 } from 'three';
 import {
@@ -102,7 +112,7 @@ export interface ImpostorAtlas {
   dispose(): void;
 }
 
-function bakeMaterial(part: BakePart): ShaderMaterial {
+function bakeMaterial(part: BakePart, radius: number): ShaderMaterial {
   return new ShaderMaterial({
     vertexShader: bakeVertex,
     fragmentShader: bakeFragment,
@@ -110,6 +120,7 @@ function bakeMaterial(part: BakePart): ShaderMaterial {
       uColor: { value: new Color(part.color) },
       uMap: { value: part.map },
       uUseMap: { value: part.map ? 1 : 0 },
+      uRadius: { value: radius },
     },
     glslVersion: GLSL3,
     vertexColors: part.vertexColors ?? false,
@@ -131,11 +142,12 @@ export function bakeImpostor(
   const frames = options.frames ?? 8;
   const cellPx = options.cellPx ?? 128;
   const size = frames * cellPx;
+  const r = Math.max(sphere.radius, 1e-3);
   const scene = new Scene();
   const materials: ShaderMaterial[] = [];
   const meshes: Mesh[] = [];
   for (const part of parts) {
-    const material = bakeMaterial(part);
+    const material = bakeMaterial(part, r);
     materials.push(material);
     let mesh: Mesh;
     if (part.instances) {
@@ -158,7 +170,6 @@ export function bakeImpostor(
     depthBuffer: true,
     samples: options.samples ?? 4,
   });
-  const r = Math.max(sphere.radius, 1e-3);
   const camera = new OrthographicCamera(-r, r, r, -r, r * 0.25, r * 3.75);
   const previousTarget = renderer.getRenderTarget();
   const previousClear = new Color();
