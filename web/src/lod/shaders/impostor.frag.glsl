@@ -1,8 +1,13 @@
 // Impostor (impostor.ts): casts the fragment's eye ray into each of the three views, finds where
 // it meets that view's surface (its baked depth), and blends the three views' albedo and normals
-// found there, lit like the tree.
+// found there, lit like the tree: sky, sun (times the share of it the bake saw reach each texel)
+// and, on leaves, the leaf material's emissive copy and light through the blade (Foliage.ts,
+// lighting.ts).
 uniform sampler2D uColor;
 uniform sampler2D uNormal;
+uniform sampler2D uLight;
+uniform float uLeafEmissive;
+uniform float uLeafTranslucency;
 uniform float uFrames;
 uniform float uCellPx;
 uniform float uAlphaTest;
@@ -107,9 +112,23 @@ void main() {
   vec3 n2 = textureLod(uNormal, a2, 0.0).xyz;
   // Normals are premultiplied by coverage (the colour's alpha) in the multisampled bake.
   vec3 nl = (n0 * 2.0 - c0.a) * wt.x + (n1 * 2.0 - c1.a) * wt.y + (n2 * 2.0 - c2.a) * wt.z;
-  vec3 n = normalize(mat3(vRotX, vRotY, vRotZ) * nl + vec3(0.0, 1e-4, 0.0));
-  vec3 irradiance = mix(uGround, uSky, n.y * 0.5 + 0.5) + uSunColor * max(dot(n, uSunDir), 0.0);
-  gl_FragColor = vec4(albedo * irradiance * RECIPROCAL_PI, uCoverage > 0.5 ? c.a : 1.0);
+  mat3 rot = mat3(vRotX, vRotY, vRotZ);
+  vec3 n = normalize(rot * nl + vec3(0.0, 1e-4, 0.0));
+  // Light terms, premultiplied by coverage: the sun's share and the leaves' share.
+  vec4 l = textureLod(uLight, a0, 0.0) * inside(h0) * wt.x
+    + textureLod(uLight, a1, 0.0) * inside(h1) * wt.y
+    + textureLod(uLight, a2, 0.0) * inside(h2) * wt.z;
+  float sunShare = clamp(l.r / max(c.a, 1e-3), 0.0, 1.0);
+  float leaf = clamp(l.g / max(c.a, 1e-3), 0.0, 1.0);
+  vec3 irradiance = mix(uGround, uSky, n.y * 0.5 + 0.5)
+    + uSunColor * max(dot(n, uSunDir), 0.0) * sunShare;
+  // Leaves: the dim emissive copy, and sunlight through the blade when the sun is behind it,
+  // strongest looking toward the sun (leafTranslucency.frag.glsl).
+  float back = max(-dot(n, uSunDir), 0.0);
+  float forward = pow(max(dot(normalize(rot * w), uSunDir), 0.0), 3.0);
+  vec3 through = uSunColor * uLeafTranslucency * back * (0.35 + 0.65 * forward);
+  vec3 lit = albedo * (irradiance * RECIPROCAL_PI + leaf * (uLeafEmissive + through));
+  gl_FragColor = vec4(lit, uCoverage > 0.5 ? c.a : 1.0);
 #include <tonemapping_fragment>
 #include <colorspace_fragment>
 #include <fog_fragment>
