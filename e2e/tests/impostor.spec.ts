@@ -14,7 +14,7 @@ interface Hook {
   lod(): { radius: number };
   edits(): { bounds: { min: number[]; max: number[] } | null };
   view(from: Vec3, to: Vec3): void;
-  setLodMode(mode: 'hidden' | number): void;
+  setLodMode(mode: 'auto' | 'hidden' | number): void;
   project(p: Vec3): [number, number];
 }
 
@@ -111,7 +111,7 @@ test('the impostor between two atlas frames shows one trunk, as LOD0 does', asyn
     },
     { from, centre, foot: [centre[0], min[1]! + (max[1]! - min[1]!) * 0.15, centre[2]] as Vec3 },
   );
-  const setMode = (mode: 'hidden' | number) =>
+  const setMode = (mode: 'auto' | 'hidden' | number) =>
     page.evaluate((m) => (window.__sylva as unknown as Hook).setLodMode(m), mode);
   await setMode('hidden');
   const empty = await frame(page);
