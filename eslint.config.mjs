@@ -16,6 +16,7 @@ export default [
       'scripts/bench-browser.mjs',
       'scripts/bench-edits.mjs',
       'scripts/bench-page.mjs',
+      'scripts/bench-forest.mjs',
       'scripts/gallery/*.mjs',
     ],
     languageOptions: { globals: { ...globals.browser } },

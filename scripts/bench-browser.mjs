@@ -10,12 +10,15 @@
 //     full-quality tree in the scene; frame_ms = a frame's upload + draw (the GPU waited for),
 //     drawn after each drag and each release (no frames are drawn between the timed steps);
 //   - age: a 20-step drag of Age on the default tree, toward younger trees (the growth replay);
-//   - paint and cut: the hand-edit tools (bench-edits.mjs).
+//   - paint and cut: the hand-edit tools (bench-edits.mjs);
+//   - forest_unique: 16 unique trees with their LODs from the forest's worker pool, click to the
+//     last tree shown (bench-forest.mjs).
 // Exports `benchBrowser()`; run directly it prints the result.
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import { benchCut, benchPaint } from './bench-edits.mjs';
+import { benchForestUnique } from './bench-forest.mjs';
 import { openDefaultTree } from './bench-page.mjs';
 import { CHROMIUM_ARGS, chromiumPath } from './chromium.mjs';
 import { freePort, serve } from './preview-server.mjs';
@@ -260,6 +263,7 @@ export async function benchBrowser(runs = 7) {
     const aged = await drag(browser, url, ['age']);
     const paint = await benchPaint(browser, url);
     const cut = await benchCut(browser, url);
+    const forestUnique = await benchForestUnique(browser, url, Math.min(runs, 3));
     return {
       first_tree_ms: round(median(first.map((t) => t.drawn))),
       first_tree_in_scene_ms: round(median(first.map((t) => t.inScene))),
@@ -268,6 +272,7 @@ export async function benchBrowser(runs = 7) {
       age: { median_ms: aged.median_ms, p95_ms: aged.p95_ms, settle_ms: aged.settle_ms },
       paint,
       cut,
+      forest_unique: forestUnique,
     };
   } finally {
     await browser.close();

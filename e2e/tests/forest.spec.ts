@@ -1,5 +1,5 @@
 /**
- * Forest view: 1,000 trees of several varieties render without console errors, with draw calls
+ * Forest view: 1,000 trees of several unique trees render without console errors, with draw calls
  * under the fixed bound (varieties × 7 + 1), and raising N to 5,000 does not raise them past it.
  */
 import { expect, test, type Page } from '@playwright/test';
@@ -36,10 +36,10 @@ test.use({ viewport: { width: 640, height: 400 } });
 
 test('a forest of 1,000 then 5,000 trees keeps draw calls under the bound', async ({ page }) => {
   const errors = watchErrors(page);
-  // A light tree in the editor; the forest uses 2 presets × 2 seeds (4 varieties) to stay fast.
-  await page.goto('/?debug=1&v=1&levels=2&forestVarieties=4');
+  // A light tree in the editor; a forest link of 4 unique trees of 2 species (fast enough), which
+  // opens the forest view.
+  await page.goto('/?debug=1&v=1&levels=2&forest=4:1:quaking_aspen,fir');
   await waitForTree(page);
-  await page.getByTestId('forest-toggle').click();
   await expect(page.getByTestId('forest-view')).toBeVisible();
   const varieties = page.getByTestId('forest-varieties');
   await expect(varieties).toHaveAttribute('data-total', '4');

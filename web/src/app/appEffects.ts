@@ -30,6 +30,7 @@ export function useViewerDebugHook(viewerRef: RefObject<TreeViewer | null>): voi
           const host = viewerRef.current?.overlayHost();
           if (host) lookFrom(host, from, to);
         },
+        setGroundVisible: (visible) => viewerRef.current?.setGroundVisible(visible),
       }),
     [viewerRef],
   );

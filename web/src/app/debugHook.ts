@@ -42,6 +42,8 @@ export interface SylvaDebugHook {
   programs(): number | null;
   /** Puts the camera at `from` looking at `to` (metres, Y up), e.g. for close-up screenshots. */
   view(from: [number, number, number], to: [number, number, number]): void;
+  /** Shows or hides the viewer's ground disc (brightness tests: the tree alone, no shadow). */
+  setGroundVisible(visible: boolean): void;
   /** Growth overlay: markers and primitive wireframes drawn now, and whether a gizmo drag runs. */
   growth(): { markers: number; volumes: number; dragging: boolean };
   /**

@@ -48,15 +48,16 @@ import {
   cloudMaterial,
   clumpTexture,
   bakedLeafGeometry,
+  treeBox,
   treeSphere,
 } from '../lod/lodObjects';
+import { placeForest, type PlacedTree } from './ecology';
 import { switchDistances } from '../lod/selection';
 import type { LodBuffers } from 'sylva-trees/worker';
 import {
   assignLods,
   createBuckets,
   FOREST_LEVELS,
-  scatter,
   type ForestLayout,
   type LodBuckets,
 } from './layout';
@@ -77,6 +78,8 @@ const FRAME_SAMPLES = 60;
 /** One variety's geometry, materials and impostor (shared by all its instances). */
 interface Variety {
   sphere: Sphere;
+  /** The unique tree it is (`ecology.ts`): its index, species and crown radius (m). */
+  tree: PlacedTree;
   /** Per level 0..3: the parts (geometry + material) drawn for each instance. */
   parts: { geometry: BufferGeometry; material: Material }[][];
   atlas: ImpostorAtlas;
@@ -116,6 +119,11 @@ export interface ForestDebug {
   varieties: number;
   expectedVarieties: number;
   bakeMs: number[];
+  /** `performance.now()` when the forest view opened, and when each unique tree was shown. */
+  openedAt: number;
+  shownAt: number[];
+  /** Generation workers in the forest's pool. */
+  poolSize: number;
 }
 
 function median(values: number[]): number {
@@ -139,6 +147,7 @@ export class ForestScene {
   private buckets: LodBuckets | null = null;
   private count = 0;
   private seed = 1;
+  private species = 1;
   private frameId = 0;
   private lastFrame = 0;
   private readonly frameTimes: number[] = [];
@@ -180,9 +189,14 @@ export class ForestScene {
     this.loop();
   }
 
-  /** Adds a variety (a tree with its levels); bakes its impostor with this renderer. */
-  addVariety(lods: LodBuffers): void {
+  /**
+   * Adds unique tree `tree` (`id` and `species` as `uniqueTrees` made it) with its levels; bakes
+   * its impostor with this renderer and places the forest again with it.
+   */
+  addVariety(lods: LodBuffers, tree: { id: number; species: number }): void {
     const sphere = treeSphere(lods);
+    const { min, max } = treeBox(lods);
+    const crown = Math.max(max.x - min.x, max.z - min.z) / 2;
     const disposables: { dispose(): void }[] = [];
     const own = <T extends { dispose(): void }>(x: T): T => {
       disposables.push(x);
@@ -231,7 +245,14 @@ export class ForestScene {
     const imp = own(impostorMaterial(atlas, impostorLights()));
     parts.push([{ geometry: own(impostorGeometry()), material: imp }]);
     const t = lods.meta.levels.map((x) => x.triangles);
-    this.varieties.push({ sphere, parts, atlas, disposables, triangles: [...t, 2] });
+    this.varieties.push({
+      sphere,
+      tree: { ...tree, crown },
+      parts,
+      atlas,
+      disposables,
+      triangles: [...t, 2],
+    });
     this.rebuild();
   }
 
@@ -250,10 +271,11 @@ export class ForestScene {
     return this.varieties.map((v) => v.atlas.bakeMs);
   }
 
-  /** Sets the number of trees (re-scatters, keeps the seed). */
-  setCount(n: number, seed = this.seed): void {
+  /** Sets the number of trees (places them again, keeps the seed and species map). */
+  setCount(n: number, seed = this.seed, species = this.species): void {
     this.count = Math.max(0, Math.floor(n));
     this.seed = seed;
+    this.species = Math.max(1, species);
     this.rebuild();
   }
 
@@ -315,8 +337,11 @@ export class ForestScene {
     this.disposeInstances();
     const nv = this.varieties.length;
     if (nv === 0) return;
-    const spacing = Math.max(...this.varieties.map((v) => v.sphere.radius)) * 1.1;
-    this.layout = scatter(this.count, { seed: this.seed, varieties: nv, spacing });
+    this.layout = placeForest(
+      this.count,
+      this.varieties.map((v) => v.tree),
+      { seed: this.seed, species: this.species },
+    );
     this.buckets = createBuckets(this.layout, nv);
     this.radius = Float32Array.from(this.varieties.map((v) => v.sphere.radius));
     this.centreY = Float32Array.from(this.varieties.map((v) => v.sphere.center.y));

@@ -1,83 +1,88 @@
 /**
  * The forest mode: a full-stage view with its own canvas (ForestScene), a tree-count slider
  * (1,000 by default, up to 10,000) and live stats (draw calls and their bound, frame time, trees
- * per level). The varieties (a few presets × 2 seeds) are generated with their levels of detail
- * in a worker of their own, one request per variety.
+ * per level). The forest is K unique trees (16 by default, up to 64), each its own species and
+ * seed, as the recipe in the link says (`recipe.ts`: count, seed, species; `ecology.ts` picks
+ * each tree's species from the species map and places them). They are generated with their
+ * levels of detail in a pool of generation workers of the forest's own (one per core, at most 4:
+ * `WorkerPool`), apart from the editor's worker, and each appears as it finishes.
  */
 import { useEffect, useRef, useState } from 'react';
 import { applyPreset, type Params } from 'sylva-trees/core';
+import { poolSize, WorkerPool, type ReadyInfo } from 'sylva-trees/worker';
 import { createModuleWorker } from '../createWorker';
 import { installDebugHook } from '../app/debugHook';
+import { withQueryEntry } from '../app/queryEntry';
 import { LodClient } from '../lod/lodClient';
-import type { ReadyInfo } from 'sylva-trees/worker';
+import { uniqueTrees } from './ecology';
 import { ForestScene, type ForestStats } from './ForestScene';
+import { decodeRecipe, encodeRecipe, type ForestRecipe } from './recipe';
 
-/** Presets the forest mixes (those present are used, in this order). */
+/** Presets the forest mixes by default (those present are used, in this order). */
 export const FOREST_PRESETS = ['quaking_aspen', 'fir', 'oak', 'cypress'];
-/** Seeds per preset. */
-export const FOREST_SEEDS = [1, 2];
 /** Default and largest number of trees. */
 export const DEFAULT_TREES = 1000;
 export const MAX_TREES = 10_000;
+/** The share link's entry holding the forest's recipe (`recipe.ts`). */
+export const FOREST_ENTRY = 'forest';
 
 const integer = new Intl.NumberFormat('en-US');
-
-/** Parameters of each variety: preset × seed. */
-export function varietyParams(
-  info: ReadyInfo,
-  presets = FOREST_PRESETS,
-  seeds = FOREST_SEEDS,
-): Params[] {
-  const chosen = presets
-    .map((name) => info.presets.find((p) => p.name === name))
-    .filter((p) => p !== undefined);
-  const list = chosen.length > 0 ? chosen : info.presets.slice(0, 1);
-  return list.flatMap((preset) =>
-    seeds.map((seed) => ({ ...applyPreset(info.registry, preset), seed })),
-  );
-}
 
 /** The page's query at load (the app rewrites the URL with its own params soon after). */
 const INITIAL_SEARCH = typeof window === 'undefined' ? '' : window.location.search;
 
-/** Reads `?forestVarieties=k` from the URL the page was opened with (tests use fewer). */
-function varietyLimit(): number {
-  const k = Number(new URLSearchParams(INITIAL_SEARCH).get('forestVarieties'));
-  return Number.isInteger(k) && k > 0 ? k : Infinity;
+/** Whether the page was opened with a forest link (the forest view then opens at once). */
+export function openedWithForest(): boolean {
+  return new URLSearchParams(INITIAL_SEARCH).has(FOREST_ENTRY);
+}
+
+/** The recipe of the link the page was opened with (the defaults without one), and its notices. */
+export function initialRecipe(info: ReadyInfo): { recipe: ForestRecipe; notices: string[] } {
+  const names = info.presets.map((p) => p.name);
+  return decodeRecipe(new URLSearchParams(INITIAL_SEARCH).get(FOREST_ENTRY), names, FOREST_PRESETS);
+}
+
+/** The parameters of each unique tree of `recipe`: its species' preset with its own seed. */
+export function uniqueParams(info: ReadyInfo, recipe: ForestRecipe): { params: Params; species: number }[] {
+  return uniqueTrees(recipe.count, recipe.species.length, recipe.seed).flatMap((tree) => {
+    const preset = info.presets.find((p) => p.name === recipe.species[tree.species]);
+    if (!preset) return [];
+    return [{ params: { ...applyPreset(info.registry, preset), seed: tree.seed }, species: tree.species }];
+  });
+}
+
+/** Writes the recipe into the page's link (removed with null), leaving the other entries as they are. */
+function writeRecipe(recipe: ForestRecipe | null): void {
+  const search = withQueryEntry(window.location.search, FOREST_ENTRY, recipe ? encodeRecipe(recipe) : '');
+  window.history.replaceState(window.history.state, '', `${window.location.pathname}${search}${window.location.hash}`);
 }
 
 /**
- * Generates `all` varieties in turn and adds each to `scene` as it comes; the scene stops
- * showing its loading state when every one has settled. Returns a function that ignores what
- * is still to come.
+ * Generates every unique tree in the pool (as many at once as it has workers) and adds each to
+ * `scene` as it comes, so trees appear as they finish. Returns a function that ignores what is
+ * still to come.
  */
-function loadVarieties(
-  client: LodClient,
-  all: Params[],
+function loadTrees(
+  pool: WorkerPool<LodClient>,
+  all: { params: Params; species: number }[],
   scene: ForestScene,
-  on: { loaded: () => void; failed: (message: string) => void },
+  on: { shown: (at: number) => void; failed: (message: string) => void },
 ): () => void {
   let cancelled = false;
-  let settled = 0;
-  const settle = () => {
-    settled++;
-    if (settled === all.length) scene.setLoading(false);
-  };
-  for (const params of all) {
-    client.request(params).then(
+  all.forEach(({ params, species }, id) => {
+    pool.run((client) => client.request(params)).then(
       (lods) => {
         if (cancelled) return;
-        scene.addVariety(lods);
-        on.loaded();
-        settle();
+        scene.addVariety(lods, { id, species });
+        scene.setLoading(false);
+        on.shown(performance.now());
       },
       (e: unknown) => {
         if (cancelled) return;
         on.failed(e instanceof Error ? e.message : String(e));
-        settle();
       },
     );
-  }
+  });
   return () => {
     cancelled = true;
   };
@@ -87,6 +92,7 @@ function loadVarieties(
 function installForestHook(
   scene: ForestScene,
   expectedVarieties: number,
+  pool: { size: number; openedAt: number; shownAt: number[] },
   setCount: (n: number) => void,
 ): () => void {
   return installDebugHook({
@@ -104,6 +110,9 @@ function installForestHook(
         varieties: s.varieties,
         expectedVarieties,
         bakeMs: scene.bakeMs,
+        openedAt: pool.openedAt,
+        shownAt: [...pool.shownAt],
+        poolSize: pool.size,
       };
     },
     setForestTrees: (n: number) => {
@@ -123,24 +132,38 @@ export function ForestView({ info }: { info: ReadyInfo }) {
   const [stats, setStats] = useState<ForestStats | null>(null);
   const [loaded, setLoaded] = useState(0);
   const [total, setTotal] = useState(0);
-  const [error, setError] = useState<string | null>(null);
+  // What was wrong with the link's recipe, if anything (the defaults stand in).
+  const [error, setError] = useState<string | null>(() => {
+    const { notices } = initialRecipe(info);
+    return notices.length > 0 ? notices.join('; ') : null;
+  });
 
   useEffect(() => {
     const container = containerRef.current;
     if (!container) return;
     const scene = new ForestScene(container);
     sceneRef.current = scene;
-    scene.setCount(countRef.current);
-    // Queued, and with the leaves baked in the worker (the forest draws them as one mesh).
-    const client = new LodClient(createModuleWorker, false, true);
-    const all = varietyParams(info).slice(0, varietyLimit());
+    const { recipe } = initialRecipe(info);
+    scene.setCount(countRef.current, recipe.seed, recipe.species.length);
+    writeRecipe(recipe);
+    // A pool of its own (one worker per core, at most 4): the editor's worker stays free.
+    // Queued, with the leaves baked in the worker (the forest draws them as one mesh).
+    const pool = new WorkerPool(
+      () => new LodClient(createModuleWorker, false, true),
+      poolSize(navigator.hardwareConcurrency),
+    );
+    const all = uniqueParams(info, recipe);
     setTotal(all.length);
-    const stop = loadVarieties(client, all, scene, {
-      loaded: () => setLoaded(scene.varietyCount),
+    const timing = { size: pool.size, openedAt: performance.now(), shownAt: [] as number[] };
+    const stop = loadTrees(pool, all, scene, {
+      shown: (at) => {
+        timing.shownAt.push(at);
+        setLoaded(scene.varietyCount);
+      },
       failed: setError,
     });
     const timer = window.setInterval(() => setStats(scene.stats()), 500);
-    const uninstall = installForestHook(scene, all.length, (n) => {
+    const uninstall = installForestHook(scene, all.length, timing, (n) => {
       countRef.current = n;
       setCount(n);
     });
@@ -148,9 +171,10 @@ export function ForestView({ info }: { info: ReadyInfo }) {
       stop();
       uninstall();
       window.clearInterval(timer);
-      client.dispose();
+      pool.dispose();
       scene.dispose();
       sceneRef.current = null;
+      writeRecipe(null);
     };
   }, [info]);
 
@@ -177,7 +201,7 @@ export function ForestView({ info }: { info: ReadyInfo }) {
           />
         </label>
         <dl>
-          <dt>Varieties</dt>
+          <dt>Unique trees</dt>
           <dd data-testid="forest-varieties" data-loaded={loaded} data-total={total}>
             {loaded < total ? `${loaded} / ${total} (generating…)` : loaded}
           </dd>

@@ -406,7 +406,8 @@ export class LodController {
           ]
         : parts,
       this.sphere,
-      { frames: 8, cellPx: 160 },
+      // The viewer draws shadows: the atlas keeps where the tree shadows itself.
+      { frames: 8, cellPx: 160, sunDirection: viewerLights().sunDir },
     );
     bark.dispose();
     leaves?.dispose();

@@ -7,7 +7,7 @@ import { useEffect, useRef, useState, type RefObject } from 'react';
 import { installDebugHook } from '../app/debugHook';
 import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import { createModuleWorker } from '../createWorker';
-import { ForestView } from '../forest/ForestView';
+import { ForestView, openedWithForest } from '../forest/ForestView';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from 'sylva-trees/worker';
 import { LodClient } from './lodClient';
@@ -43,7 +43,8 @@ export function LodPanel({
 }) {
   const controllerRef = useRef<LodController | null>(null);
   const [state, setState] = useState<LodState | null>(null);
-  const [forest, setForest] = useState(false);
+  // A forest link (`?forest=…`) opens the forest view at once.
+  const [forest, setForest] = useState(openedWithForest);
 
   useEffect(() => {
     const viewer = viewerRef.current;

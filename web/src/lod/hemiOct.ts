@@ -111,3 +111,74 @@ export function viewBasis(d: Vec3): { right: Vec3; up: Vec3 } {
   const up: Vec3 = [d[1] * rz - d[2] * 0, d[2] * rx - d[0] * rz, d[0] * 0 - d[1] * rx];
   return { right, up };
 }
+
+/**
+ * The eye ray `eye + t·w` (tree frame, centred on the bounding sphere's centre, in units of its
+ * radius) in the orthographic view from unit direction `d`: `uv0` is where it crosses the view's
+ * image plane through the centre, and at depth `h` (signed distance from that plane toward the
+ * eye) it is at `uv0 + s·h`. Frame uv is `(p · right, p · up) / 2 + ½`.
+ */
+export function frameRay(d: Vec3, eye: Vec3, w: Vec3): { uv0: [number, number]; s: [number, number] } {
+  const { right, up } = viewBasis(d);
+  const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const den = Math.min(dot(w, d), -1e-4);
+  const k = dot(eye, d) / den;
+  const p0: Vec3 = [eye[0] - w[0] * k, eye[1] - w[1] * k, eye[2] - w[2] * k];
+  return {
+    uv0: [dot(p0, right) / 2 + 0.5, dot(p0, up) / 2 + 0.5],
+    s: [dot(w, right) / (2 * den), dot(w, up) / (2 * den)],
+  };
+}
+
+/** Most march steps per view (`impostor.frag.glsl` MAX_STEPS). */
+export const MAX_PARALLAX_STEPS = 32;
+/** How far behind a view's surface a ray may enter it and still hit it (radii). */
+export const PARALLAX_THICKNESS = 0.03;
+
+/** March steps for a ray moving `|s|` per unit depth in a frame of `cellPx` texels: ≤ 2 texels each. */
+export function parallaxSteps(s: [number, number], cellPx: number): number {
+  return Math.min(Math.max(Math.ceil(Math.hypot(s[0], s[1]) * cellPx), 2), MAX_PARALLAX_STEPS);
+}
+
+/**
+ * Where the ray `uv0 + s·h` meets a view's surface, given `depth(uv)`: the surface's depth there
+ * (radii toward the eye) or -2 where the view is empty. Marches h from 1 (the front of the
+ * bounding sphere) to -1, bisects the first step that is behind the surface 4 times, and accepts
+ * the crossing if the ray enters no more than {@link PARALLAX_THICKNESS} behind the surface
+ * (else it passes behind, e.g. beside a trunk, and marches on). Null: the ray misses this view.
+ */
+export function parallaxHit(
+  depth: (uv: [number, number]) => number,
+  uv0: [number, number],
+  s: [number, number],
+  cellPx: number,
+): [number, number] | null {
+  const at = (h: number): [number, number] => [uv0[0] + s[0] * h, uv0[1] + s[1] * h];
+  const n = parallaxSteps(s, cellPx);
+  const dh = 2 / n;
+  let hPrev = 1;
+  let fPrev = depth(at(1)) - 1;
+  for (let k = 1; k <= n; k++) {
+    const h = 1 - dh * k;
+    const f = depth(at(h)) - h;
+    if (f >= 0 && fPrev < 0) {
+      let front = hPrev;
+      let back = h;
+      let fb = f;
+      for (let b = 0; b < 4; b++) {
+        const mid = (front + back) / 2;
+        const fm = depth(at(mid)) - mid;
+        if (fm >= 0) {
+          back = mid;
+          fb = fm;
+        } else front = mid;
+      }
+      if (fb <= PARALLAX_THICKNESS) return at(back);
+    } else if (f >= 0 && f <= PARALLAX_THICKNESS) {
+      return at(h);
+    }
+    hPrev = h;
+    fPrev = f;
+  }
+  return null;
+}

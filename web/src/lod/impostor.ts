@@ -5,22 +5,35 @@
  *   grid (`hemiOct.ts`) with an orthographic camera fitted to its bounding sphere, one frame per
  *   atlas cell, into one multisampled render target with two colour attachments (one draw per
  *   frame): albedo + coverage (unlit, premultiplied) and object-space normals (`n · 0.5 + 0.5`,
- *   leaves' back faces flipped toward the camera, premultiplied by coverage).
+ *   leaves' back faces flipped toward the camera, premultiplied by coverage) with the depth
+ *   toward the eye in the normal's alpha (`h / r · 0.5 + 0.5`, h the signed distance from the
+ *   frame's image plane through the centre, premultiplied too).
  * * **Draw**: a camera-facing quad (per instance in the forest) whose vertex shader finds the
- *   3 frames around the view direction in the tree's own frame and their barycentric weights,
- *   and projects the quad's corners onto each frame's image plane along the eye ray; the fragment
- *   shader blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere
- *   light + sun, the viewer's lights), so the impostor follows the scene's lighting.
+ *   3 frames around the view direction in the tree's own frame and their barycentric weights.
+ *   Each fragment casts its eye ray into each of the 3 frames and marches it through that
+ *   frame's depth (parallax occlusion mapping, refined by bisection: `hemiOct.ts`
+ *   `frameRay`/`parallaxHit` are the same maths) to the point where it meets the surface that
+ *   frame saw, so the 3 frames sample the same point of the tree and agree: one trunk, not two
+ *   half-transparent ones. (Projecting onto each frame's plane through the centre instead, as
+ *   this did before, put everything off that plane, such as the trunk's foot seen from a frame
+ *   above the horizon, in a different place per frame.) Depth parallax was chosen over the
+ *   nearest frame with a dithered cross-fade: the cross-fade still shows both frames' trunks,
+ *   stippled, wherever it fades, and without it the image jumps by a frame's angle. The shader
+ *   blends the 3 samples, alpha-tests, and relights with the blended normal (hemisphere light +
+ *   sun, the viewer's lights), so the impostor follows the scene's lighting.
  */
-import type { Vector3 } from 'three';
 import {
   Color,
+  DepthTexture,
   DoubleSide,
+  FloatType,
   FrontSide,
   GLSL3,
   InstancedMesh,
   LinearFilter,
+  Matrix4,
   Mesh,
+  NearestFilter,
   OrthographicCamera,
   PlaneGeometry,
   RGBAFormat,
@@ -29,6 +42,7 @@ import {
   UniformsLib,
   UniformsUtils,
   UnsignedByteType,
+  Vector3,
   Vector4,
   WebGLRenderTarget,
   type BufferGeometry,
@@ -36,7 +50,12 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import { impostorLights, type ImpostorLights, wrapInstances } from 'sylva-trees/viewer';
+import {
+  impostorLights,
+  type ImpostorLights,
+  LEAF_TRANSLUCENCY,
+  wrapInstances,
+} from 'sylva-trees/viewer';
 import { frameDirection, viewBasis } from './hemiOct';
 import bakeVertex from './shaders/impostorBake.vert.glsl?raw';
 import bakeFragment from './shaders/impostorBake.frag.glsl?raw';
@@ -61,6 +80,12 @@ export interface BakePart {
 
 /** Bake settings. */
 export interface BakeOptions {
+  /**
+   * Direction toward the sun in tree space, for a tree drawn with shadows (the viewer): each
+   * texel then stores the share of the sun it receives (the tree shadowing itself, as LOD0 is
+   * in a scene with shadows). Absent (the forest, drawn without shadows): fully lit.
+   */
+  sunDirection?: Vector3 | undefined;
   /** Frames per side of the atlas (default 8: 64 views). */
   frames?: number;
   /** Pixels per frame side (default 128). */
@@ -87,6 +112,8 @@ export interface ImpostorDrawOptions {
 export interface ImpostorAtlas {
   color: Texture;
   normal: Texture;
+  /** Light terms, premultiplied by coverage: r the sun's share, g 1 on leaves (0 on bark). */
+  light: Texture;
   frames: number;
   cellPx: number;
   /** Bounding sphere the frames were fitted to (tree space). */
@@ -102,7 +129,7 @@ export interface ImpostorAtlas {
   dispose(): void;
 }
 
-function bakeMaterial(part: BakePart): ShaderMaterial {
+function bakeMaterial(part: BakePart, radius: number): ShaderMaterial {
   return new ShaderMaterial({
     vertexShader: bakeVertex,
     fragmentShader: bakeFragment,
@@ -110,6 +137,15 @@ function bakeMaterial(part: BakePart): ShaderMaterial {
       uColor: { value: new Color(part.color) },
       uMap: { value: part.map },
       uUseMap: { value: part.map ? 1 : 0 },
+      uRadius: { value: radius },
+      uLeaf: { value: part.doubleSided ? 1 : 0 },
+      uSunDepth: { value: null },
+      uSunMatrix: { value: new Matrix4() },
+      uSunTexel: { value: 1 / SUN_MAP_PX },
+      uSunBias: { value: radius * 0.004 },
+      uSunDepthBias: { value: 0.002 },
+      uUseSun: { value: 0 },
+      uSunDir: { value: new Vector3(0, 1, 0) },
     },
     glslVersion: GLSL3,
     vertexColors: part.vertexColors ?? false,
@@ -119,7 +155,7 @@ function bakeMaterial(part: BakePart): ShaderMaterial {
 
 /**
  * Renders `parts` from the `frames × frames` hemi-octahedral views fitted to `sphere` into a
- * colour and a normal atlas. Restores the renderer's target, viewport and clear state.
+ * colour, a normal and a light atlas. Restores the renderer's target, viewport and clear state.
  */
 export function bakeImpostor(
   renderer: WebGLRenderer,
@@ -131,11 +167,12 @@ export function bakeImpostor(
   const frames = options.frames ?? 8;
   const cellPx = options.cellPx ?? 128;
   const size = frames * cellPx;
+  const r = Math.max(sphere.radius, 1e-3);
   const scene = new Scene();
   const materials: ShaderMaterial[] = [];
   const meshes: Mesh[] = [];
   for (const part of parts) {
-    const material = bakeMaterial(part);
+    const material = bakeMaterial(part, r);
     materials.push(material);
     let mesh: Mesh;
     if (part.instances) {
@@ -147,9 +184,9 @@ export function bakeImpostor(
     meshes.push(mesh);
     scene.add(mesh);
   }
-  // One target with two colour attachments (albedo, normal): each frame is drawn once.
+  // One target with three colour attachments (albedo, normal, light): each frame is drawn once.
   const target = new WebGLRenderTarget(size, size, {
-    count: 2,
+    count: 3,
     format: RGBAFormat,
     type: UnsignedByteType,
     minFilter: LinearFilter,
@@ -158,7 +195,6 @@ export function bakeImpostor(
     depthBuffer: true,
     samples: options.samples ?? 4,
   });
-  const r = Math.max(sphere.radius, 1e-3);
   const camera = new OrthographicCamera(-r, r, r, -r, r * 0.25, r * 3.75);
   const previousTarget = renderer.getRenderTarget();
   const previousClear = new Color();
@@ -169,7 +205,11 @@ export function bakeImpostor(
   renderer.shadowMap.autoUpdate = false;
   renderer.setClearColor(0x000000, 0);
   renderer.autoClear = false;
+  let sun: WebGLRenderTarget | null = null;
   try {
+    if (options.sunDirection) {
+      sun = sunDepthMap(renderer, scene, materials, sphere, options.sunDirection);
+    }
     target.scissorTest = false;
     target.viewport.set(0, 0, size, size);
     renderer.setRenderTarget(target);
@@ -204,10 +244,12 @@ export function bakeImpostor(
     renderer.shadowMap.autoUpdate = previousShadows;
     for (const m of materials) m.dispose();
     for (const mesh of meshes) if (mesh instanceof InstancedMesh) mesh.dispose();
+    sun?.dispose();
   }
   return {
     color: target.textures[0]!,
     normal: target.textures[1]!,
+    light: target.textures[2]!,
     frames,
     cellPx,
     centre: sphere.center.clone(),
@@ -220,6 +262,61 @@ export function bakeImpostor(
     },
     dispose: () => target.dispose(),
   };
+}
+
+/**
+ * How much sunlight a leaf lets through from behind (packages/sylva-trees/src/viewer/lighting.ts
+ * `LEAF_TRANSLUCENCY`, which the package does not export under that name).
+ */
+const LEAF_THROUGH = 0.45;
+
+/** Edge of the sun's depth map (texels) the bake's shadows are taken from. */
+const SUN_MAP_PX = 1024;
+
+/**
+ * Draws the depth of `scene` (the bake's parts) seen from the sun along `toSun` with an
+ * orthographic camera fitted to `sphere`, and points the bake `materials` at it. Returns the
+ * depth target (the caller disposes of it after the bake).
+ */
+function sunDepthMap(
+  renderer: WebGLRenderer,
+  scene: Scene,
+  materials: ShaderMaterial[],
+  sphere: Sphere,
+  toSun: Vector3,
+): WebGLRenderTarget {
+  const r = Math.max(sphere.radius, 1e-3);
+  const target = new WebGLRenderTarget(SUN_MAP_PX, SUN_MAP_PX, {
+    depthBuffer: true,
+    depthTexture: new DepthTexture(SUN_MAP_PX, SUN_MAP_PX, FloatType),
+    minFilter: NearestFilter,
+    magFilter: NearestFilter,
+  });
+  target.depthTexture!.minFilter = NearestFilter;
+  target.depthTexture!.magFilter = NearestFilter;
+  const dir = toSun.clone().normalize();
+  const camera = new OrthographicCamera(-r, r, r, -r, r, r * 3);
+  camera.position.copy(sphere.center).addScaledVector(dir, 2 * r);
+  camera.up.set(Math.abs(dir.y) > 0.99 ? 1 : 0, Math.abs(dir.y) > 0.99 ? 0 : 1, 0);
+  camera.lookAt(sphere.center);
+  camera.updateMatrixWorld();
+  renderer.setRenderTarget(target);
+  renderer.clear(true, true, true);
+  // The map's own pass samples no map (a texture may not be read while it is drawn into).
+  renderer.render(scene, camera);
+  const matrix = new Matrix4().multiplyMatrices(
+    camera.projectionMatrix,
+    camera.matrixWorldInverse,
+  );
+  for (const m of materials) {
+    m.uniforms.uSunDepth!.value = target.depthTexture;
+    m.uniforms.uSunMatrix!.value = matrix;
+    m.uniforms.uUseSun!.value = 1;
+    m.uniforms.uSunDir!.value = dir;
+    // About 3 cm on a 5 m tree, as the viewer's shadow bias (lighting.ts).
+    m.uniforms.uSunDepthBias!.value = 0.003;
+  }
+  return target;
 }
 
 /** The viewer's lights as the impostor's sky + ground + sun model (one definition: lighting.ts). */
@@ -242,6 +339,9 @@ export function impostorMaterial(
       {
         uColor: { value: null },
         uNormal: { value: null },
+        uLight: { value: null },
+        uLeafEmissive: { value: LEAF_TRANSLUCENCY },
+        uLeafTranslucency: { value: LEAF_THROUGH },
         uFrames: { value: atlas.frames },
         uCellPx: { value: atlas.cellPx },
         uCentre: { value: atlas.centre.clone() },
@@ -263,6 +363,7 @@ export function impostorMaterial(
   // Set after the merge: merging clones uniform values, and render-target textures cannot be.
   material.uniforms.uColor!.value = atlas.color;
   material.uniforms.uNormal!.value = atlas.normal;
+  material.uniforms.uLight!.value = atlas.light;
   return material;
 }
 

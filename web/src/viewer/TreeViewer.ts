@@ -241,6 +241,12 @@ export class TreeViewer {
     this.requestRender();
   }
 
+  /** Shows or hides the ground disc (tests: the tree against the sky, without its shadow). */
+  setGroundVisible(visible: boolean): void {
+    this.ground.visible = visible;
+    this.requestRender();
+  }
+
   /** Shows or hides the crown envelope wireframe (the Show Preview parameter). */
   setPreviewVisible(visible: boolean): void {
     if (this.envelope.visible === visible) return;

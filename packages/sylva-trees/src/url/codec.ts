@@ -12,7 +12,7 @@ export const FORMAT_VERSION = '1';
  */
 export const MAX_QUERY_LENGTH = 4096;
 /** Non-parameter query keys carried over when the URL is rewritten. */
-export const KEPT_KEYS: readonly string[] = ['debug', 'vol', EDITS_KEY, 'aa'];
+export const KEPT_KEYS: readonly string[] = ['debug', 'vol', EDITS_KEY, 'aa', 'forest'];
 /** Most notices one decode reports; the rest are summed up in one more line. */
 export const MAX_MESSAGES = 6;
 

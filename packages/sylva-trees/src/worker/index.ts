@@ -24,6 +24,7 @@ export { DEBUG_WORKER_NAME } from './debugName';
 export { startGeneratorWorker } from '../runtime/startWorker';
 export { adaptWorker, type EarlyMessages } from '../runtime/workerHandle';
 export { loadWasmHere } from '../runtime/inProcess';
+export { poolSize, WorkerPool, type PoolMember } from '../runtime/pool';
 export { ExportClient } from '../export/exportClient';
 export type { ExportFormat, ExportResponse, LeafExport } from '../export/exportProtocol';
 export { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from '../lod/types';

@@ -1,5 +1,5 @@
 // Impostor (impostor.ts): a camera-facing quad that picks the three nearest baked views of the
-// hemi-octahedral grid and their blend weights.
+// hemi-octahedral grid and their blend weights; the fragment shader casts the rays.
 uniform vec3 uCentre;
 uniform float uRadius;
 uniform float uFrames;
@@ -11,29 +11,6 @@ vec2 hemiOctEncode(vec3 d) {
   float s = max(abs(d.x) + d.y + abs(d.z), 1e-6);
   vec2 p = d.xz / s;
   return vec2(p.x + p.y, p.x - p.y) * 0.5 + 0.5;
-}
-vec3 hemiOctDecode(vec2 uv) {
-  vec2 a = uv * 2.0 - 1.0;
-  vec2 p = vec2(a.x + a.y, a.x - a.y) * 0.5;
-  float y = max(1.0 - abs(p.x) - abs(p.y), 0.0);
-  return normalize(vec3(p.x, y, p.y));
-}
-void viewBasis(vec3 d, out vec3 r, out vec3 u) {
-  vec3 rr = vec3(d.z, 0.0, -d.x);
-  float l = length(rr);
-  r = l < 1e-6 ? vec3(1.0, 0.0, 0.0) : rr / l;
-  u = cross(d, r);
-}
-// Where the eye ray through the quad point p meets frame f's image plane, in frame uv.
-vec2 frameUv(vec2 f, vec3 eye, vec3 p) {
-  vec3 d = hemiOctDecode(f / (uFrames - 1.0));
-  vec3 r; vec3 u;
-  viewBasis(d, r, u);
-  vec3 w = p - eye;
-  float den = dot(w, d);
-  float t = abs(den) > 1e-6 ? -dot(eye, d) / den : 1.0;
-  vec3 hit = eye + w * t;
-  return vec2(dot(hit, r), dot(hit, u)) / (2.0 * uRadius) + 0.5;
 }
 
 void main() {
@@ -47,8 +24,9 @@ void main() {
   vec3 eyeL = transpose(rot) * (cameraPosition - centreW) / scale;
   vec3 toEye = normalize(eyeL);
   vec3 view = normalize(vec3(toEye.x, max(toEye.y, 0.0) + 1e-4, toEye.z));
-  vec3 r; vec3 u;
-  viewBasis(view, r, u);
+  vec3 rr = vec3(view.z, 0.0, -view.x);
+  vec3 r = length(rr) < 1e-6 ? vec3(1.0, 0.0, 0.0) : normalize(rr);
+  vec3 u = cross(view, r);
   // 5 % margin: the sphere's perspective outline is a little larger than its radius.
   vec3 local = (r * position.x + u * position.y) * 2.1 * uRadius;
   vec4 mvPosition = viewMatrix * (m * vec4(uCentre + local, 1.0));
@@ -64,9 +42,8 @@ void main() {
     vFrame0 = c + 1.0; vFrame1 = c + vec2(0.0, 1.0); vFrame2 = c + vec2(1.0, 0.0);
     vWeights = vec3(f.x + f.y - 1.0, 1.0 - f.x, 1.0 - f.y);
   }
-  vUv0 = frameUv(vFrame0, eyeL, local);
-  vUv1 = frameUv(vFrame1, eyeL, local);
-  vUv2 = frameUv(vFrame2, eyeL, local);
+  vEye = eyeL / uRadius;
+  vLocal = local / uRadius;
   vRotX = rot[0]; vRotY = rot[1]; vRotZ = rot[2];
 #include <fog_vertex>
 }

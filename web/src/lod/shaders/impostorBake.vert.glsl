@@ -1,7 +1,10 @@
-// Impostor bake (impostor.ts): world-space normal, uv and tint of the LOD0 tree, per view.
+// Impostor bake (impostor.ts): world-space position and normal, uv and tint of the LOD0 tree, and
+// the view-space depth, per view.
 varying vec3 vN;
 varying vec2 vUv;
 varying vec3 vTint;
+varying float vViewZ;
+varying vec3 vWorld;
 void main() {
   mat4 m = modelMatrix;
 #ifdef USE_INSTANCING
@@ -16,5 +19,9 @@ void main() {
 #ifdef USE_COLOR
   vTint *= color;
 #endif
-  gl_Position = projectionMatrix * viewMatrix * m * vec4(position, 1.0);
+  vec4 world = m * vec4(position, 1.0);
+  vWorld = world.xyz;
+  vec4 view = viewMatrix * world;
+  vViewZ = view.z;
+  gl_Position = projectionMatrix * view;
 }
