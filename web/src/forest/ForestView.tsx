@@ -42,19 +42,36 @@ export function initialRecipe(info: ReadyInfo): { recipe: ForestRecipe; notices:
   return decodeRecipe(new URLSearchParams(INITIAL_SEARCH).get(FOREST_ENTRY), names, FOREST_PRESETS);
 }
 
-/** The parameters of each unique tree of `recipe`: its species' preset with its own seed. */
-export function uniqueParams(info: ReadyInfo, recipe: ForestRecipe): { params: Params; species: number }[] {
+/**
+ * The parameters of each unique tree of `recipe`: its species' preset with its own seed, in the
+ * editor's `season` when one is given (the forest is in the month the studio shows).
+ */
+export function uniqueParams(
+  info: ReadyInfo,
+  recipe: ForestRecipe,
+  season?: number,
+): { params: Params; species: number }[] {
   return uniqueTrees(recipe.count, recipe.species.length, recipe.seed).flatMap((tree) => {
     const preset = info.presets.find((p) => p.name === recipe.species[tree.species]);
     if (!preset) return [];
-    return [{ params: { ...applyPreset(info.registry, preset), seed: tree.seed }, species: tree.species }];
+    const params: Params = { ...applyPreset(info.registry, preset), seed: tree.seed };
+    if (season !== undefined) params.season = season;
+    return [{ params, species: tree.species }];
   });
 }
 
 /** Writes the recipe into the page's link (removed with null), leaving the other entries as they are. */
 function writeRecipe(recipe: ForestRecipe | null): void {
-  const search = withQueryEntry(window.location.search, FOREST_ENTRY, recipe ? encodeRecipe(recipe) : '');
-  window.history.replaceState(window.history.state, '', `${window.location.pathname}${search}${window.location.hash}`);
+  const search = withQueryEntry(
+    window.location.search,
+    FOREST_ENTRY,
+    recipe ? encodeRecipe(recipe) : '',
+  );
+  window.history.replaceState(
+    window.history.state,
+    '',
+    `${window.location.pathname}${search}${window.location.hash}`,
+  );
 }
 
 /**
@@ -70,18 +87,20 @@ function loadTrees(
 ): () => void {
   let cancelled = false;
   all.forEach(({ params, species }, id) => {
-    pool.run((client) => client.request(params)).then(
-      (lods) => {
-        if (cancelled) return;
-        scene.addVariety(lods, { id, species });
-        scene.setLoading(false);
-        on.shown(performance.now());
-      },
-      (e: unknown) => {
-        if (cancelled) return;
-        on.failed(e instanceof Error ? e.message : String(e));
-      },
-    );
+    pool
+      .run((client) => client.request(params))
+      .then(
+        (lods) => {
+          if (cancelled) return;
+          scene.addVariety(lods, { id, species });
+          scene.setLoading(false);
+          on.shown(performance.now());
+        },
+        (e: unknown) => {
+          if (cancelled) return;
+          on.failed(e instanceof Error ? e.message : String(e));
+        },
+      );
   });
   return () => {
     cancelled = true;
@@ -124,7 +143,7 @@ function installForestHook(
 }
 
 /** See the module docs. */
-export function ForestView({ info }: { info: ReadyInfo }) {
+export function ForestView({ info, season }: { info: ReadyInfo; season?: number }) {
   const containerRef = useRef<HTMLDivElement>(null);
   const sceneRef = useRef<ForestScene | null>(null);
   const [count, setCount] = useState(DEFAULT_TREES);
@@ -152,7 +171,7 @@ export function ForestView({ info }: { info: ReadyInfo }) {
       () => new LodClient(createModuleWorker, false, true),
       poolSize(navigator.hardwareConcurrency),
     );
-    const all = uniqueParams(info, recipe);
+    const all = uniqueParams(info, recipe, season);
     setTotal(all.length);
     const timing = { size: pool.size, openedAt: performance.now(), shownAt: [] as number[] };
     const stop = loadTrees(pool, all, scene, {
@@ -176,7 +195,7 @@ export function ForestView({ info }: { info: ReadyInfo }) {
       sceneRef.current = null;
       writeRecipe(null);
     };
-  }, [info]);
+  }, [info, season]);
 
   const onCount = (n: number) => {
     countRef.current = n;

@@ -70,8 +70,10 @@ export function speciesMap(seed: number, species: number): (x: number, z: number
   const n = Math.max(1, Math.floor(species));
   return (x, z) => {
     // Two octaves: patches, with ragged borders.
-    const v = (noise(x / PATCH_METRES, z / PATCH_METRES) * 2 +
-      noise((x * 4) / PATCH_METRES + 17, (z * 4) / PATCH_METRES + 31)) / 3;
+    const v =
+      (noise(x / PATCH_METRES, z / PATCH_METRES) * 2 +
+        noise((x * 4) / PATCH_METRES + 17, (z * 4) / PATCH_METRES + 31)) /
+      3;
     return Math.min(n - 1, Math.floor(v * n));
   };
 }
@@ -122,7 +124,9 @@ export function placeForest(n: number, trees: PlacedTree[], options: PlaceOption
   trees
     .map((t, index) => ({ t, index }))
     .sort((a, b) => a.t.id - b.t.id)
-    .forEach(({ t, index }) => bySpecies.set(t.species, [...(bySpecies.get(t.species) ?? []), index]));
+    .forEach(({ t, index }) =>
+      bySpecies.set(t.species, [...(bySpecies.get(t.species) ?? []), index]),
+    );
   const maxCrown = Math.max(0.1, ...trees.map((t) => t.crown)) * smax;
   const meanCrown =
     trees.length > 0 ? trees.reduce((a, t) => a + t.crown, 0) / trees.length : maxCrown;

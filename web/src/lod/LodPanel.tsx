@@ -45,6 +45,8 @@ export function LodPanel({
   const [state, setState] = useState<LodState | null>(null);
   // A forest link (`?forest=…`) opens the forest view at once.
   const [forest, setForest] = useState(openedWithForest);
+  // The forest is in the month the studio shows when it opens (Season).
+  const [forestSeason, setForestSeason] = useState<number | undefined>(undefined);
 
   useEffect(() => {
     const viewer = viewerRef.current;
@@ -80,7 +82,7 @@ export function LodPanel({
   const level = state?.level ?? 0;
   return (
     <>
-      {forest && info ? <ForestView info={info} /> : null}
+      {forest && info ? <ForestView info={info} season={forestSeason} /> : null}
       <div className="lod-panel" data-testid="lod-panel">
         <div className="lod-row">
           <span className="lod-title">LOD</span>
@@ -104,7 +106,11 @@ export function LodPanel({
             data-testid="forest-toggle"
             aria-pressed={forest}
             disabled={!info}
-            onClick={() => setForest((f) => !f)}
+            onClick={() => {
+              const season = paramsRef.current?.season;
+              setForestSeason(typeof season === 'number' ? season : undefined);
+              setForest((f) => !f);
+            }}
           >
             Forest
           </button>

@@ -118,7 +118,11 @@ export function viewBasis(d: Vec3): { right: Vec3; up: Vec3 } {
  * image plane through the centre, and at depth `h` (signed distance from that plane toward the
  * eye) it is at `uv0 + s·h`. Frame uv is `(p · right, p · up) / 2 + ½`.
  */
-export function frameRay(d: Vec3, eye: Vec3, w: Vec3): { uv0: [number, number]; s: [number, number] } {
+export function frameRay(
+  d: Vec3,
+  eye: Vec3,
+  w: Vec3,
+): { uv0: [number, number]; s: [number, number] } {
   const { right, up } = viewBasis(d);
   const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   const den = Math.min(dot(w, d), -1e-4);

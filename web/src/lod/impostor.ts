@@ -304,10 +304,7 @@ function sunDepthMap(
   renderer.clear(true, true, true);
   // The map's own pass samples no map (a texture may not be read while it is drawn into).
   renderer.render(scene, camera);
-  const matrix = new Matrix4().multiplyMatrices(
-    camera.projectionMatrix,
-    camera.matrixWorldInverse,
-  );
+  const matrix = new Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
   for (const m of materials) {
     m.uniforms.uSunDepth!.value = target.depthTexture;
     m.uniforms.uSunMatrix!.value = matrix;
