@@ -22,9 +22,10 @@ import {
   type Texture,
   type WebGLRenderer,
 } from 'three';
-import type { Edit, Params, TreeBuffers, VolumePrimitive } from 'sylva-trees/core';
+import type { Edit, OrganSetBuffers, Params, TreeBuffers, VolumePrimitive } from 'sylva-trees/core';
 import type { OverlayHost } from '../viewer/overlayHost';
 import { bakeImpostor, impostorGeometry, impostorMaterial, viewerLights } from './impostor';
+import { organBakeParts } from './organParts';
 import type { ImpostorAtlas } from './impostor';
 import { SUPERSEDED, type LodClient } from './lodClient';
 import {
@@ -84,6 +85,8 @@ export class LodController {
   private mode: LodMode = 'auto';
   private level = 0;
   private hash = '';
+  /** The tree's organ sets as the viewer last received them. */
+  private organs: OrganSetBuffers[] = [];
   private sphere = new Sphere(new Vector3(0, 4, 0), 5);
   private lods: LodBuffers | null = null;
   private levels: (Group | null)[] = [null, null, null, null];
@@ -219,6 +222,8 @@ export class LodController {
 
   private onTree(buffers: TreeBuffers): void {
     this.hash = buffers.meta.hash;
+    // The flowers, fruit, catkins and buds come with new placements only.
+    if (buffers.organs) this.organs = buffers.organs;
     this.base = findBaseObjects(this.host.scene, buffers, this.root, this.probe);
     // A drag's preview keeps the last full tree's sphere: sizing it loops over every leaf on
     // the main thread (a millisecond a step), and the full tree follows on release.
@@ -391,26 +396,32 @@ export class LodController {
     const leafMap = this.leafMap;
     const parts = [{ geometry: bark, color: BARK_COLOR, map: null }];
     const leaves = leafGeometry(level);
+    // The Season's parts are baked too: the impostor of a tree in fruit shows its fruit.
+    const organs = organBakeParts(this.organs);
     const out = bakeImpostor(
       renderer,
-      leaves
-        ? [
-            ...parts,
-            {
-              geometry: leaves,
-              instances: { matrices: level.leafMatrices, colors: level.leafColors },
-              color: '#ffffff',
-              map: leafMap,
-              doubleSided: true,
-            },
-          ]
-        : parts,
+      [
+        ...parts,
+        ...(leaves
+          ? [
+              {
+                geometry: leaves,
+                instances: { matrices: level.leafMatrices, colors: level.leafColors },
+                color: '#ffffff',
+                map: leafMap,
+                doubleSided: true,
+              },
+            ]
+          : []),
+        ...organs,
+      ],
       this.sphere,
       // The viewer draws shadows: the atlas keeps where the tree shadows itself.
       { frames: 8, cellPx: 160, sunDirection: viewerLights().sunDir },
     );
     bark.dispose();
     leaves?.dispose();
+    organs.forEach((o) => o.geometry.dispose());
     return out;
   }
 
