@@ -69,8 +69,8 @@ const PARTS = [
   ['cherry', 6.1, 'cherries', 0.4, 'below', 'Cherries in June'],
   ['apple', 9.2, 'apples', 0.7, 'below', 'Apples in September'],
   ['oak', 9.5, 'acorns', 0.3, 'below', 'Acorns in their cups, mid-September (Oak)'],
-  ['umbrella', 9.6, 'samara wings', 0.35, 'below', 'Samaras in September (maple leaf)'],
-  ['fir', 9.0, 'fir cones', 0.8, 'above', 'Fir cones standing on the upper branches in September'],
+  ['umbrella', 10.1, 'samara wings', 0.3, 'below', 'Ripe samaras in early October (maple leaf)'],
+  ['fir', 9.0, 'fir cones', 1.0, 'out', 'Fir cones standing on the upper branches in September'],
   ['weeping', 4.0, 'birch catkins', 0.3, 'below', 'Birch catkins shedding pollen in April'],
   [
     'quaking_aspen',

@@ -205,7 +205,7 @@ fn fruit(f: Fruit, kind: OrganKind) -> TreeMesh {
             lathe(&profile(0.065, 0.021, 11, 0.14, |t| math::pow(arch(0.2 + 0.8 * t), 0.7)), SIDES)
         }
         (Fruit::UprightCones, _) => lathe(
-            &profile(0.09, 0.022, 11, 0.1, |t| math::pow(arch(0.5 * t + 0.1), 0.5) * (1.0 - 0.4 * t * t * t)),
+            &profile(0.13, 0.03, 11, 0.1, |t| math::pow(arch(0.5 * t + 0.1), 0.5) * (1.0 - 0.4 * t * t * t)),
             SIDES,
         ),
         (Fruit::None, _) => TreeMesh::default(),
