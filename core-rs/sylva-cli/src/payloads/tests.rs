@@ -151,7 +151,7 @@ fn the_checker_reports_a_renamed_missing_or_mistyped_field() {
 #[test]
 fn the_unions_are_the_rust_enums_values() {
     assert_eq!(stages(), ["skeleton", "mesh", "foliage", "leaf", "viewer"]);
-    assert_eq!(materials(), ["bark", "leaves", "cut_face"]);
+    assert_eq!(materials(), ["bark", "leaves", "cut_face", "organ"]);
     assert_eq!(error_kinds(), ["invalid_param", "unknown_param", "budget", "input"]);
     // The registry's stages are the union's.
     let registry = serde_json::to_value(sylva_core::params::registry()).expect("the registry serialises");
