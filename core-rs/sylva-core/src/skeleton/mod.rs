@@ -9,6 +9,7 @@
 //! never changes the stems above it.
 
 mod envelope;
+mod life_record;
 mod stem;
 mod trace;
 mod trunk;
@@ -24,6 +25,7 @@ use crate::math::{pow, rad, unit_or, HwSqrt};
 use crate::params::{Crown, CrownShape, GrowthMode, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
+pub use life_record::LifeRecord;
 
 /// The stems of one tree, parents before children.
 #[derive(Clone, Debug)]
@@ -49,23 +51,6 @@ pub struct Skeleton {
     /// For a tree past its Mature Age: the stems at it and the life that followed
     /// ([`LifeRecord`]), so the growth animation can show any year between.
     pub life: Option<std::sync::Arc<LifeRecord>>,
-}
-
-/// What the years past the Mature Age started from and how they acted: kept on the
-/// skeleton ([`Skeleton::life`]) so the growth animation can show the tree in any year between
-/// (`LifeRecord::at`, in [`crate::life`]).
-#[derive(Clone, Debug)]
-pub struct LifeRecord {
-    /// The stems at the Mature Age, before any year of life.
-    pub mature: Skeleton,
-    /// Ring Width (m a year).
-    pub ring: f32,
-    /// Shedding Light and Shedding Delay.
-    pub shed: (f32, f32),
-    /// Droop (degrees a decade).
-    pub droop: f32,
-    /// The Mature Age and the Age.
-    pub years: (f32, f32),
 }
 
 /// Smallest stem length that is still built (m); shorter children are dropped.
