@@ -34,7 +34,7 @@
 //! monotonically with Age.
 
 use crate::edits::cut::reattach_children;
-use crate::edits::stems::remove;
+use crate::edits::stems::{remove, Children};
 use crate::math::{exp, ln, pow};
 use crate::skeleton::{Points, Skeleton, StemKind};
 
@@ -162,9 +162,10 @@ pub fn replay(skeleton: &mut Skeleton, age: f32, mature: f32) {
         skeleton.stems[i].tip_year = age;
     }
     // The kept children sit on their young parent's resampled curve exactly.
+    let children = Children::of_skeleton(skeleton);
     for i in 0..n {
         if !gone[i] {
-            reattach_children(skeleton, i, &gone);
+            reattach_children(skeleton, &children, i, &gone);
         }
     }
     remove(skeleton, &gone);

@@ -357,3 +357,30 @@ fn a_drag_of_the_leaf_shape_shows_a_smaller_texture_and_the_release_the_full_lea
     let cur = session.update(&p, Quality::Preview { budget_ms: 1e9 }, &NoClock, None).unwrap();
     assert!(!cur.leaf_preview && !cur.is_preview());
 }
+
+/// An Age drag reuses the stems as built at the Mature Age (replaying them only): every step,
+/// younger, older than the Mature Age and back, with and without a cut made at 30, gives the
+/// cold bytes.
+#[test]
+fn an_age_drag_gives_the_cold_bytes_at_every_step() {
+    use glam::Vec3;
+    use sylva_core::params::{Cut, Edit};
+    for (name, mut base) in bases() {
+        for cut in [false, true] {
+            if cut {
+                base.skeleton.edits = vec![Edit::Cut(Cut { at: Vec3::new(0.4, 3.0, 0.2), year: Some(30.0) })];
+            }
+            let mut session = Session::new();
+            for age in [40.0, 36.5, 31.0, 12.0, 31.0, 55.0, 70.0, 40.0] {
+                let mut p = base.clone();
+                p.set("age", age).unwrap();
+                let warm = session.update(&p, Quality::Full, &NoClock, None).map(|_| ()).map(|()| session.hash());
+                match (cold_hash(&p), warm) {
+                    (Ok(h), Ok(w)) => assert_eq!(w, Some(h), "{name} (cut {cut}) at Age {age}"),
+                    (Err(c), Err(w)) => assert_eq!(c, w.to_string(), "{name} (cut {cut}) at Age {age}"),
+                    (c, w) => panic!("{name} (cut {cut}) at Age {age}: cold {c:?}, incremental {w:?}"),
+                }
+            }
+        }
+    }
+}

@@ -10,7 +10,7 @@
 //! rigidly by the bend's rotation at its attachment point and moves with that point; base
 //! normals turn with their stems.
 
-use super::stems::carry_children;
+use super::stems::{carry_children, Children};
 use crate::error::SylvaError;
 use crate::math::pow;
 use crate::params::edits::bad;
@@ -55,7 +55,9 @@ pub fn bend(skeleton: &mut Skeleton, i: usize, a: f32, to: Vec3, index: usize) -
     stem.base_normal = (first * old.base_normal).normalize_or(old.base_normal);
     skeleton.stems[i] = stem;
     // Children ride along.
-    carry_children(skeleton, i, old.length, &|s| Quat::IDENTITY.slerp(q, weight(s, power)));
+    carry_children(skeleton, &Children::of_skeleton(skeleton), i, old.length, &|s| {
+        Quat::IDENTITY.slerp(q, weight(s, power))
+    });
     Ok(())
 }
 

@@ -9,7 +9,7 @@
 //!
 //! [`Stem::callus`]: crate::skeleton::Stem::callus
 
-use super::stems::{remove, subtree, transform};
+use super::stems::{remove, subtree, transform, Children};
 use crate::skeleton::{Points, Skeleton};
 use glam::Quat;
 
@@ -89,21 +89,24 @@ pub fn cut_by(skeleton: &mut Skeleton, i: usize, t: f32, years: f32, plan: &CutP
     stem.callus = callus(years, stem.radius_at(1.0));
     // The kept children sit on the resampled curve exactly (it differs from the old one by
     // rounding between the samples).
-    reattach_children(skeleton, i, &plan.gone);
+    reattach_children(skeleton, &Children::of_skeleton(skeleton), i, &plan.gone);
     remove(skeleton, &plan.gone);
 }
 
 /// Moves each kept child of stem `i` (with its subtree) so that its base lies on `i`'s curve at
-/// its offset.
-pub(crate) fn reattach_children(skeleton: &mut Skeleton, i: usize, gone: &[bool]) {
-    for c in i + 1..skeleton.stems.len() {
-        if skeleton.stems[c].parent != Some(i as u32) || gone.get(c) == Some(&true) {
+/// its offset. `children` is the skeleton's [`Children`] index.
+pub(crate) fn reattach_children(skeleton: &mut Skeleton, children: &Children, i: usize, gone: &[bool]) {
+    let mut moved = Vec::new();
+    for &c in children.of(i) {
+        let c = c as usize;
+        if gone.get(c) == Some(&true) {
             continue;
         }
         let (on, _) = skeleton.stems[i].point_at(skeleton.stems[c].offset);
         let base = skeleton.stems[c].base();
         if on != base {
-            transform(skeleton, &subtree(skeleton, c), Quat::IDENTITY, base, on);
+            children.subtree(c, &mut moved);
+            transform(skeleton, &moved, Quat::IDENTITY, base, on);
         }
     }
 }

@@ -17,7 +17,8 @@ use crate::rng::Rng;
 use crate::skeleton::{Points, Skeleton, Stem, StemKind};
 use glam::Vec3;
 pub use sca::node_budget_error;
-use sca::{Growth, GrowthConfig, Node, ROOT};
+pub(crate) use sca::Growth;
+use sca::{GrowthConfig, Node, ROOT};
 use volume::{Aabb, CrownVolume, Environment};
 
 /// The environment described by the parameters: crown (one copy per start point), the wall.

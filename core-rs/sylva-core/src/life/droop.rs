@@ -12,7 +12,7 @@
 //! along, each subtree turned rigidly with its attachment point.
 
 use crate::edits::bend::resampled;
-use crate::edits::stems::carry_children;
+use crate::edits::stems::{carry_children, Children};
 use crate::math::rad;
 use crate::skeleton::{Points, Skeleton, StemKind};
 use glam::{Quat, Vec3};
@@ -55,14 +55,15 @@ pub fn droop(skeleton: &mut Skeleton, degrees: f32) {
     let mut k: Vec<f32> = branches.iter().map(|&(_, k)| k).collect();
     k.sort_by(f32::total_cmp);
     let median = k[k.len() / 2].max(1e-8);
+    let children = Children::of_skeleton(skeleton);
     for &(i, slender) in &branches {
         let sag = rad((degrees * slender / median).min(MAX_DROOP));
-        sag_branch(skeleton, i, sag);
+        sag_branch(skeleton, &children, i, sag);
     }
 }
 
 /// Turns stem `i`'s segments down by [`turn`] and carries its children along.
-fn sag_branch(skeleton: &mut Skeleton, i: usize, sag: f32) {
+fn sag_branch(skeleton: &mut Skeleton, children: &Children, i: usize, sag: f32) {
     let old = resampled(&skeleton.stems[i]);
     let dir = (old.tip() - old.base()).normalize_or_zero();
     let across = Vec3::Y.cross(dir);
@@ -84,5 +85,5 @@ fn sag_branch(skeleton: &mut Skeleton, i: usize, sag: f32) {
     stem.points = points;
     stem.base_normal = (rotation(0.5 / segs as f32) * old.base_normal).normalize_or(old.base_normal);
     skeleton.stems[i] = stem;
-    carry_children(skeleton, i, old.length.max(1e-6), &rotation);
+    carry_children(skeleton, children, i, old.length.max(1e-6), &rotation);
 }

@@ -75,6 +75,9 @@ pub(super) struct EditCache {
     pub(super) resume: Resume,
     /// The parameters the stems were built with: the edit list reduced to its drawn crown.
     base: Option<SkeletonParams>,
+    /// The stems at the Mature Age for `base` without its Age ([`ageless`]), kept when the
+    /// edit list changes: an Age drag only replays them.
+    mature: Option<(SkeletonParams, Mature)>,
     /// The last edit list.
     edits: Vec<Edit>,
     /// Kept prefixes of `edits`, shortest first; the first is always the empty one (`edits: 0`).
@@ -104,24 +107,48 @@ fn continues(old: &Paint, new: &Paint) -> bool {
     brush(old) == brush(new) && new.points.len() >= old.points.len() && new.points[..old.points.len()] == old.points[..]
 }
 
+/// The stems as built at the Mature Age, before the Age brings them to their year: what an Age
+/// drag reuses (a Weber & Penn tree's dated stems, a grown tree's growth).
+enum Mature {
+    Parametric(Skeleton),
+    Grown(growth::Growth),
+}
+
 /// The stems as built from `p` (before any edit but the drawn crown), at its Age ([`crate::age`]),
-/// and a grown tree's markers.
-fn build_stems(p: &SkeletonParams, progress: Option<&mut dyn FnMut(f32)>) -> Result<(Skeleton, Vec<Vec3>), SylvaError> {
+/// and a grown tree's markers; `mature` is the tree before its Age, built when `None`.
+fn build_stems(
+    p: &SkeletonParams,
+    mature: &mut Option<Mature>,
+    progress: Option<&mut dyn FnMut(f32)>,
+) -> Result<(Skeleton, Vec<Vec3>), SylvaError> {
     let crown = edits::drawn_crown(&p.edits);
-    let (mut skeleton, markers) = match p.growth_mode {
-        GrowthMode::Parametric => (skeleton::build_with_crown(p, crown)?, Vec::new()),
-        GrowthMode::SpaceColonization => {
-            // Dated and brought to its Age by its annual flushes.
-            let grown = growth::grow_with_crown(p, crown, progress)?;
-            (growth::skeleton_by_years(p, &grown), grown.markers)
-        }
-    };
-    if p.growth_mode == GrowthMode::Parametric {
-        crate::age::date(&mut skeleton, p.maturity);
-        crate::age::replay(&mut skeleton, p.age, p.maturity);
+    if mature.is_none() {
+        *mature = Some(match p.growth_mode {
+            GrowthMode::Parametric => {
+                let mut skeleton = skeleton::build_with_crown(p, crown)?;
+                crate::age::date(&mut skeleton, p.maturity);
+                Mature::Parametric(skeleton)
+            }
+            GrowthMode::SpaceColonization => Mature::Grown(growth::grow_with_crown(p, crown, progress)?),
+        });
     }
+    let (mut skeleton, markers) = match mature.as_ref().expect("just built") {
+        Mature::Parametric(dated) => {
+            let mut skeleton = dated.clone();
+            skeleton.age = p.age;
+            crate::age::replay(&mut skeleton, p.age, p.maturity);
+            (skeleton, Vec::new())
+        }
+        // Dated and brought to its Age by its annual flushes.
+        Mature::Grown(grown) => (growth::skeleton_by_years(p, grown), grown.markers.clone()),
+    };
     crate::life::live(&mut skeleton, p);
     Ok((skeleton, markers))
+}
+
+/// `p` without its Age: the parameters of the stems as built at the Mature Age.
+fn ageless(p: &SkeletonParams) -> SkeletonParams {
+    SkeletonParams { age: 0.0, ..p.clone() }
 }
 
 impl EditCache {
@@ -129,6 +156,13 @@ impl EditCache {
     pub(super) fn clear(&mut self) {
         let resume = self.resume;
         *self = EditCache { resume, ..EditCache::default() };
+    }
+
+    /// Forgets everything but the stems at the Mature Age.
+    fn clear_edits(&mut self) {
+        let mature = self.mature.take();
+        self.clear();
+        self.mature = mature;
     }
 
     /// The skeleton stage for `p` (see the module doc). On an error the cache forgets the last
@@ -141,8 +175,15 @@ impl EditCache {
         let base = base_params(p);
         let rebuilt = self.base.as_ref() != Some(&base);
         if rebuilt {
-            self.clear();
-            let (skeleton, markers) = build_stems(p, progress)?;
+            self.clear_edits();
+            let key = ageless(&base);
+            let mut mature = match self.mature.take() {
+                Some((k, m)) if k == key => Some(m),
+                _ => None,
+            };
+            let built = build_stems(p, &mut mature, progress);
+            self.mature = mature.map(|m| (key, m));
+            let (skeleton, markers) = built?;
             self.base = Some(base);
             self.prefixes = vec![Prefix { edits: 0, skeleton, markers, reports: Vec::new() }];
         }
