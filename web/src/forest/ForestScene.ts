@@ -7,18 +7,12 @@
  * uploaded and `.count` set, so the number of draw calls is bounded by
  * `varieties × 7 + 1` (the ground) whatever N is.
  */
-import {
-  applyLeafCoverage,
-  impostorLights,
-  leafTexture,
-  SceneLights,
-  wrapInstances,
-} from 'sylva-trees/viewer';
+import { SceneLights, wrapInstances } from 'sylva-trees/viewer';
 import { fitToContainer } from '../viewer/cameraView';
-import type { Sphere, InstancedMesh } from 'three';
+import { isSoftwareRenderer, webglRendererName } from '../viewer/renderQuality';
+import type { InstancedMesh } from 'three';
 import {
   Color,
-  DoubleSide,
   DynamicDrawUsage,
   Fog,
   Frustum,
@@ -31,27 +25,10 @@ import {
   Scene,
   Vector3,
   WebGLRenderer,
-  type BufferGeometry,
-  type Material,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import {
-  bakeImpostor,
-  impostorGeometry,
-  impostorMaterial,
-  type ImpostorAtlas,
-} from '../lod/impostor';
-import {
-  BARK_COLOR,
-  barkGeometry,
-  cloudGeometry,
-  cloudMaterial,
-  clumpTexture,
-  bakedLeafGeometry,
-  treeBox,
-  treeSphere,
-} from '../lod/lodObjects';
-import { placeForest, type PlacedTree } from './ecology';
+import { buildVariety, type Variety } from './variety';
+import { placeForest } from './ecology';
 import { switchDistances } from '../lod/selection';
 import type { LodBuffers } from 'sylva-trees/worker';
 import {
@@ -74,18 +51,10 @@ export function drawCallBound(varieties: number): number {
 const SKY = '#dce6ec';
 const GROUND = '#8f9a6e';
 const FRAME_SAMPLES = 60;
-
-/** One variety's geometry, materials and impostor (shared by all its instances). */
-interface Variety {
-  sphere: Sphere;
-  /** The unique tree it is (`ecology.ts`): its index, species and crown radius (m). */
-  tree: PlacedTree;
-  /** Per level 0..3: the parts (geometry + material) drawn for each instance. */
-  parts: { geometry: BufferGeometry; material: Material }[][];
-  atlas: ImpostorAtlas;
-  disposables: { dispose(): void }[];
-  triangles: number[];
-}
+/** While trees arrive, the next frame waits this many times the last frame's time. */
+const ARRIVING_GAP = 2;
+/** Share of the pixel ratio a software renderer draws at while trees arrive. */
+const ARRIVING_RESOLUTION = 0.5;
 
 /** Numbers the overlay and the debug hook read. */
 export interface ForestStats {
@@ -94,7 +63,7 @@ export interface ForestStats {
   drawCalls: number;
   bound: number;
   triangles: number;
-  /** Median frame-to-frame time of the last frames (ms). */
+  /** Median time of the last frames drawn, each from its display frame to the next (ms). */
   frameMs: number;
   /** Median CPU time of LOD assignment + render (ms). */
   cpuMs: number;
@@ -149,7 +118,6 @@ export class ForestScene {
   private seed = 1;
   private species = 1;
   private frameId = 0;
-  private lastFrame = 0;
   private readonly frameTimes: number[] = [];
   private readonly cpuTimes: number[] = [];
   private readonly assignTimes: number[] = [];
@@ -161,12 +129,33 @@ export class ForestScene {
   private readonly resizeObserver: ResizeObserver;
   private disposed = false;
   private statsValue: ForestStats;
-  /** While varieties are still being added the loop draws nothing (the bakes get the GPU). */
+  /** Until the first tree is added the loop draws nothing. */
   private loading = true;
+  /**
+   * Whether the view changed since the last frame drawn: the forest is drawn on demand (the
+   * camera moved, trees were added or placed again, the canvas resized), not at every display
+   * frame. A software renderer shades a forest frame on the CPU (about 2 s on 2 cores), which
+   * starved the generation workers of the trees still to come.
+   */
+  private dirty = true;
+  /** When the last frame was drawn (its display frame's start), 0 once timed. */
+  private drawnAt = 0;
+  /** Start and duration of the last frame drawn (ms). */
+  private lastDraw = { at: 0, ms: 0 };
+  /** Whether more trees are on their way (`setArriving`). */
+  private arriving = false;
+  /** Whether the renderer shades on the CPU (renderQuality.ts). */
+  private readonly software = isSoftwareRenderer(webglRendererName() ?? '');
+  /** Trees received and not yet added (`enqueue`). */
+  private readonly arrivals: {
+    lods: LodBuffers;
+    tree: { id: number; species: number };
+    added: () => void;
+  }[] = [];
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new WebGLRenderer({ antialias: false });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 1.5));
+    this.renderer.setPixelRatio(this.pixelRatio());
     this.renderer.domElement.dataset.testid = 'forest-canvas';
     container.appendChild(this.renderer.domElement);
     this.scene.background = new Color(SKY);
@@ -182,6 +171,7 @@ export class ForestScene {
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.maxPolarAngle = Math.PI * 0.49;
     this.controls.enableDamping = false;
+    this.controls.addEventListener('change', this.invalidate);
     this.statsValue = this.emptyStats();
     this.resizeObserver = new ResizeObserver(() => this.resize());
     this.resizeObserver.observe(container);
@@ -190,75 +180,42 @@ export class ForestScene {
   }
 
   /**
-   * Adds unique tree `tree` (`id` and `species` as `uniqueTrees` made it) with its levels; bakes
-   * its impostor with this renderer and places the forest again with it.
+   * Queues unique tree `tree` (`id` and `species` as `uniqueTrees` made it) with its levels; it
+   * is added at the start of the next frame with every tree that arrived meanwhile (the forest
+   * placed again once for all of them), then `added` is called and the forest is drawn. Each
+   * addition bakes an impostor, which waits for the frame the GPU is still drawing: added one
+   * by one as they arrived, a software renderer drew a whole forest frame (2 s) per tree.
    */
-  addVariety(lods: LodBuffers, tree: { id: number; species: number }): void {
-    const sphere = treeSphere(lods);
-    const { min, max } = treeBox(lods);
-    const crown = Math.max(max.x - min.x, max.z - min.z) / 2;
-    const disposables: { dispose(): void }[] = [];
-    const own = <T extends { dispose(): void }>(x: T): T => {
-      disposables.push(x);
-      return x;
-    };
-    const map = lods.leafTexture ? own(leafTexture(lods.leafTexture)) : null;
-    const bark = own(new MeshStandardMaterial({ color: BARK_COLOR, roughness: 0.92 }));
-    const leaves = own(
-      new MeshStandardMaterial({
-        color: '#ffffff',
-        map,
-        vertexColors: true,
-        alphaTest: 0.5,
-        side: DoubleSide,
-        roughness: 0.7,
-      }),
-    );
-    applyLeafCoverage(leaves);
-    const parts: Variety['parts'] = [];
-    for (let l = 0; l < 3; l++) {
-      const level = lods.levels[l]!;
-      const list = [{ geometry: own(barkGeometry(level)), material: bark as Material }];
-      const merged = bakedLeafGeometry(level);
-      if (merged) list.push({ geometry: own(merged), material: leaves });
-      const cloud = cloudGeometry(level);
-      if (cloud) {
-        const texture = own(clumpTexture(lods.leafTexture, 7 + this.varieties.length));
-        list.push({ geometry: own(cloud), material: own(cloudMaterial(texture)) });
-      }
-      parts.push(list);
-    }
-    // The impostor is baked from LOD1 here (LOD0 in the tree viewer): at the distances where the
-    // forest shows impostors the two are indistinguishable, and the bake is 3× cheaper.
-    const source = parts[1]!.map((p) => ({
-      geometry: p.geometry,
-      color: p.material === bark ? BARK_COLOR : '#ffffff',
-      map: p.material === bark ? null : map,
-      vertexColors: p.material !== bark,
-      doubleSided: p.material !== bark,
-    }));
-    // Single-sampled: the forest's instanced impostors are alpha-tested, not blended by coverage.
-    const atlas = own(
-      bakeImpostor(this.renderer, source, sphere, { frames: 8, cellPx: 64, samples: 0 }),
-    );
-    // The scene's own lights (lighting.ts), as the near trees have them.
-    const imp = own(impostorMaterial(atlas, impostorLights()));
-    parts.push([{ geometry: own(impostorGeometry()), material: imp }]);
-    const t = lods.meta.levels.map((x) => x.triangles);
-    this.varieties.push({
-      sphere,
-      tree: { ...tree, crown },
-      parts,
-      atlas,
-      disposables,
-      triangles: [...t, 2],
-    });
-    this.rebuild();
+  enqueue(lods: LodBuffers, tree: { id: number; species: number }, added: () => void): void {
+    this.arrivals.push({ lods, tree, added });
   }
 
-  /** Starts drawing (call once every variety is added or has failed). */
-  setLoading(loading: boolean): void {
-    this.loading = loading;
+  /**
+   * Tells the scene whether more trees are on their way. Meanwhile frames are spaced out
+   * (`ARRIVING_GAP`) and a software renderer draws at `ARRIVING_RESOLUTION`: it shades each pixel
+   * on the CPU the generation workers need (a forest frame at 1000×700 took 1.7-2 s on 2 cores).
+   */
+  setArriving(arriving: boolean): void {
+    this.arriving = arriving;
+    this.renderer.setPixelRatio(this.pixelRatio());
+    this.resize();
+  }
+
+  /** The canvas's pixel ratio (see `setArriving`). */
+  private pixelRatio(): number {
+    const full = Math.min(window.devicePixelRatio, 1.5);
+    return this.software && this.arriving ? full * ARRIVING_RESOLUTION : full;
+  }
+
+  /** Adds the queued trees (see `enqueue`); starts drawing after the first. */
+  private addArrivals(): void {
+    if (this.arrivals.length === 0) return;
+    const batch = this.arrivals.splice(0);
+    for (const { lods, tree } of batch)
+      this.varieties.push(buildVariety(lods, tree, this.renderer));
+    this.rebuild();
+    this.loading = false;
+    for (const { added } of batch) added();
   }
 
   /** Number of varieties added. */
@@ -334,6 +291,7 @@ export class ForestScene {
 
   /** New layout and instanced meshes for the current count and varieties. */
   private rebuild(): void {
+    this.dirty = true;
     this.disposeInstances();
     const nv = this.varieties.length;
     if (nv === 0) return;
@@ -379,19 +337,33 @@ export class ForestScene {
 
   private resize(): void {
     fitToContainer(this.renderer, this.camera, this.container);
+    this.dirty = true;
   }
 
   private loop = (): void => {
     if (this.disposed) return;
     this.frameId = requestAnimationFrame(this.loop);
+    this.addArrivals();
     const now = performance.now();
-    if (this.loading) {
-      this.lastFrame = 0;
-      return;
+    // A frame's time: from its display frame to the next one the browser could start.
+    if (this.drawnAt > 0) {
+      push(this.frameTimes, now - this.drawnAt);
+      this.lastDraw = { at: this.drawnAt, ms: now - this.drawnAt };
+      this.statsValue = { ...this.statsValue, frameMs: median(this.frameTimes) };
     }
-    if (this.lastFrame > 0) push(this.frameTimes, now - this.lastFrame);
-    this.lastFrame = now;
+    this.drawnAt = 0;
+    if (this.loading || !this.dirty) return;
+    // While trees are arriving, the GPU (the CPU, in software) is left to the bakes and the
+    // generation workers two thirds of the time.
+    if (this.arriving && now - this.lastDraw.at < ARRIVING_GAP * this.lastDraw.ms) return;
+    this.dirty = false;
+    this.drawnAt = now;
     this.renderFrame();
+  };
+
+  /** Asks for a frame (see `dirty`). */
+  private readonly invalidate = (): void => {
+    this.dirty = true;
   };
 
   /** Assigns levels, uploads the written ranges and draws. */

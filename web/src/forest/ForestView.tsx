@@ -86,21 +86,26 @@ function loadTrees(
   on: { shown: (at: number) => void; failed: (message: string) => void },
 ): () => void {
   let cancelled = false;
-  all.forEach(({ params, species }, id) => {
+  scene.setArriving(all.length > 0);
+  const runs = all.map(({ params, species }, id) =>
     pool
       .run((client) => client.request(params))
       .then(
         (lods) => {
           if (cancelled) return;
-          scene.addVariety(lods, { id, species });
-          scene.setLoading(false);
-          on.shown(performance.now());
+          scene.enqueue(lods, { id, species }, () => {
+            if (!cancelled) on.shown(performance.now());
+          });
         },
         (e: unknown) => {
           if (cancelled) return;
           on.failed(e instanceof Error ? e.message : String(e));
         },
-      );
+      ),
+  );
+  // Every tree in (or failed): frames at full pace and resolution again.
+  void Promise.all(runs).then(() => {
+    if (!cancelled) scene.setArriving(false);
   });
   return () => {
     cancelled = true;

@@ -317,8 +317,8 @@ export class LodController {
       group.add(leaves);
     }
     const cloud = cloudGeometry(level);
-    if (cloud) {
-      const map = this.own(clumpTexture(lods.leafTexture));
+    if (cloud && lods.clump) {
+      const map = this.own(clumpTexture(lods.clump));
       const cloudMesh = new Mesh(cloud, this.own(cloudMaterial(map)));
       this.owned.push(cloud);
       cloudMesh.castShadow = true;

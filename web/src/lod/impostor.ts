@@ -130,19 +130,19 @@ export interface ImpostorAtlas {
 }
 
 function bakeMaterial(part: BakePart, radius: number): ShaderMaterial {
-  return new ShaderMaterial({
+  const material = new ShaderMaterial({
     vertexShader: bakeVertex,
     fragmentShader: bakeFragment,
     uniforms: {
-      uColor: { value: new Color(part.color) },
-      uMap: { value: part.map },
-      uUseMap: { value: part.map ? 1 : 0 },
-      uRadius: { value: radius },
-      uLeaf: { value: part.doubleSided ? 1 : 0 },
+      uColor: { value: new Color() },
+      uMap: { value: null },
+      uUseMap: { value: 0 },
+      uRadius: { value: 0 },
+      uLeaf: { value: 0 },
       uSunDepth: { value: null },
       uSunMatrix: { value: new Matrix4() },
       uSunTexel: { value: 1 / SUN_MAP_PX },
-      uSunBias: { value: radius * 0.004 },
+      uSunBias: { value: 0 },
       uSunDepthBias: { value: 0.002 },
       uUseSun: { value: 0 },
       uSunDir: { value: new Vector3(0, 1, 0) },
@@ -150,6 +150,61 @@ function bakeMaterial(part: BakePart, radius: number): ShaderMaterial {
     glslVersion: GLSL3,
     vertexColors: part.vertexColors ?? false,
     side: part.doubleSided ? DoubleSide : FrontSide,
+  });
+  dressBakeMaterial(material, part, radius);
+  return material;
+}
+
+/** Points a bake material at `part` and a tree of `radius` (no sun). */
+function dressBakeMaterial(material: ShaderMaterial, part: BakePart, radius: number): void {
+  const u = material.uniforms;
+  (u.uColor!.value as Color).set(part.color);
+  u.uMap!.value = part.map;
+  u.uUseMap!.value = part.map ? 1 : 0;
+  u.uRadius!.value = radius;
+  u.uLeaf!.value = part.doubleSided ? 1 : 0;
+  u.uSunDepth!.value = null;
+  (u.uSunMatrix!.value as Matrix4).identity();
+  u.uSunBias!.value = radius * 0.004;
+  u.uSunDepthBias!.value = 0.002;
+  u.uUseSun!.value = 0;
+  u.uSunDir!.value = new Vector3(0, 1, 0);
+}
+
+/**
+ * Bake materials kept per renderer and used again by its later bakes: three.js releases a
+ * program when its last material is disposed, and compiling the bake's programs again for every
+ * tree took about 0.3 s of each forest tree's bake in software WebGL. Per kind of part (vertex
+ * colours, sides), the i-th part of that kind in a bake gets the i-th material.
+ */
+const keptBakeMaterials = new WeakMap<WebGLRenderer, Map<string, ShaderMaterial[]>>();
+
+/** The bake materials of `parts` for `renderer` (see `keptBakeMaterials`). */
+function bakeMaterials(
+  renderer: WebGLRenderer,
+  parts: BakePart[],
+  radius: number,
+): ShaderMaterial[] {
+  let kept = keptBakeMaterials.get(renderer);
+  if (!kept) {
+    kept = new Map();
+    keptBakeMaterials.set(renderer, kept);
+  }
+  const used = new Map<string, number>();
+  return parts.map((part) => {
+    const key = `${part.vertexColors ? 1 : 0}${part.doubleSided ? 1 : 0}`;
+    const i = used.get(key) ?? 0;
+    used.set(key, i + 1);
+    const list = kept.get(key) ?? [];
+    kept.set(key, list);
+    const material = list[i];
+    if (material) {
+      dressBakeMaterial(material, part, radius);
+      return material;
+    }
+    const fresh = bakeMaterial(part, radius);
+    list.push(fresh);
+    return fresh;
   });
 }
 
@@ -169,11 +224,10 @@ export function bakeImpostor(
   const size = frames * cellPx;
   const r = Math.max(sphere.radius, 1e-3);
   const scene = new Scene();
-  const materials: ShaderMaterial[] = [];
+  const materials = bakeMaterials(renderer, parts, r);
   const meshes: Mesh[] = [];
-  for (const part of parts) {
-    const material = bakeMaterial(part, r);
-    materials.push(material);
+  for (const [k, part] of parts.entries()) {
+    const material = materials[k]!;
     let mesh: Mesh;
     if (part.instances) {
       mesh = wrapInstances(part.geometry, material, part.instances.matrices, part.instances.colors);
@@ -242,7 +296,11 @@ export function bakeImpostor(
     renderer.setClearColor(previousClear, previousAlpha);
     renderer.autoClear = previousAutoClear;
     renderer.shadowMap.autoUpdate = previousShadows;
-    for (const m of materials) m.dispose();
+    // The materials stay for the next bake (keptBakeMaterials), holding no texture of this one.
+    for (const m of materials) {
+      m.uniforms.uMap!.value = null;
+      m.uniforms.uSunDepth!.value = null;
+    }
     for (const mesh of meshes) if (mesh instanceof InstancedMesh) mesh.dispose();
     sun?.dispose();
   }

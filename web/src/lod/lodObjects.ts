@@ -1,7 +1,7 @@
 /**
  * three.js objects for one level of detail: bark tubes, instanced leaves, and the billboard
- * cloud (LOD2) as textured quads. The cloud texture is a "leaf clump" painted in the browser from
- * the tree's own leaf texture (a few dozen leaves scattered in a disc), tinted per quad with the
+ * cloud (LOD2) as textured quads. The cloud texture is a "leaf clump" rasterised in the worker from
+ * the tree's own leaf texture (`clumpAtlas`: leaves scattered in a disc), tinted per quad with the
  * cluster's mean leaf colour, and lit like the leaves (the same translucency), so LOD2 keeps
  * LOD0's colour: its transparent texels carry the clump's mean colour, not black, so the mipmaps
  * a distant cloud samples do not darken toward the leaves' edges.
@@ -19,7 +19,7 @@ import {
   type Material,
   type Texture,
 } from 'three';
-import type { LeafTextureBuffers, MeshGroup } from 'sylva-trees/core';
+import type { MeshGroup } from 'sylva-trees/core';
 import {
   attachBarkAttributes,
   LEAF_TRANSLUCENCY,
@@ -27,8 +27,13 @@ import {
   srgbTexture,
   wrapInstances,
 } from 'sylva-trees/viewer';
-import { mulberry32 } from '../forest/layout';
-import { type LodBuffers, type LodLevelBuffers, QUAD_FLOATS } from 'sylva-trees/worker';
+import {
+  type ClumpBuffers,
+  densityCell,
+  type LodBuffers,
+  type LodLevelBuffers,
+  QUAD_FLOATS,
+} from 'sylva-trees/worker';
 
 /** Bark colour of the viewer (TreeViewer's flat bark). */
 export const BARK_COLOR = '#5b3d26';
@@ -152,34 +157,6 @@ const CLOUD_DENSITY_GAIN = 2;
  */
 const CLOUD_GROW = 1.3;
 
-/**
- * Leaf densities of the clump atlas's cells: the share of the disc its leaves cover (sparse crowns
- * let the sky through a cloud as they do through the leaves).
- */
-export const CELL_DENSITY = [0.1, 0.25, 0.5, 1] as const;
-
-/** Cell of the clump atlas (0..3) for a cloud quad's leaf density: the nearest `CELL_DENSITY`. */
-export function densityCell(density: number): number {
-  let best = 0;
-  for (let k = 1; k < CELL_DENSITY.length; k++) {
-    if (
-      Math.abs(Math.log(density / CELL_DENSITY[k]!)) <
-      Math.abs(Math.log(density / CELL_DENSITY[best]!))
-    )
-      best = k;
-  }
-  return best;
-}
-
-/**
- * Leaves drawn in a clump cell so that they cover about its density of the disc: random leaves
- * cover `1 − exp(−n a / A)`, so `n ∝ −ln(1 − 0.9 d)`, `MAX_CLUMP_LEAVES` at density 1.
- */
-export function clumpLeaves(cell: number): number {
-  const d = CELL_DENSITY[cell] ?? 1;
-  return Math.max(2, Math.round((MAX_CLUMP_LEAVES * Math.log(1 - 0.9 * d)) / Math.log(0.1)));
-}
-
 /** A geometry of positions, normals, uvs and vertex colours, indexed, with its bounds. */
 function coloredGeometry(
   positions: Float32Array,
@@ -198,109 +175,9 @@ function coloredGeometry(
   return g;
 }
 
-/**
- * A leaf-clump texture for the billboard cloud: a 2×2 atlas whose cells hold `clumpLeaves(cell)`
- * copies of the leaf texture (or green ellipses for a tree without
- * one) scattered over a disc, denser toward the centre, seeded (see `densityCell`).
- */
-export function clumpTexture(leaf: LeafTextureBuffers | null, seed = 7, size = 512): Texture {
-  const canvas = document.createElement('canvas');
-  canvas.width = size;
-  canvas.height = size;
-  const ctx = canvas.getContext('2d');
-  if (!ctx) throw new Error('no 2D canvas for the billboard-cloud texture');
-  let sprite: HTMLCanvasElement | null = null;
-  if (leaf) {
-    sprite = document.createElement('canvas');
-    sprite.width = leaf.width;
-    sprite.height = leaf.height;
-    const sctx = sprite.getContext('2d');
-    if (sctx) {
-      const image = sctx.createImageData(leaf.width, leaf.height);
-      image.data.set(leaf.rgba);
-      sctx.putImageData(image, 0, 0);
-    } else {
-      sprite = null;
-    }
-  }
-  const half = size / 2;
-  for (let cell = 0; cell < 4; cell++) {
-    const rand = mulberry32(seed + cell);
-    const ox = (cell % 2) * half;
-    // Canvas rows run top-down; texture v bottom-up (bleedAndFlip): cell row 0 is the bottom half.
-    const oy = (1 - Math.floor(cell / 2)) * half;
-    const count = clumpLeaves(cell);
-    for (let i = 0; i < count; i++) drawLeaf(ctx, sprite, rand, ox, oy, half);
-  }
-  const image = ctx.getImageData(0, 0, size, size);
-  return srgbTexture(bleedAndFlip(image.data, size, size), size, size);
-}
-
-/**
- * A canvas image (rows top-down, transparent texels black) as texture rows bottom-up whose
- * (almost) transparent texels carry the mean colour of the opaque ones: mipmaps then average
- * leaf colour with leaf colour instead of with black.
- */
-export function bleedAndFlip(rgba: Uint8ClampedArray, width: number, height: number): Uint8Array {
-  let [r, g, b, n] = [0, 0, 0, 0];
-  for (let i = 0; i < rgba.length; i += 4) {
-    if (rgba[i + 3]! >= 128) {
-      r += rgba[i]!;
-      g += rgba[i + 1]!;
-      b += rgba[i + 2]!;
-      n++;
-    }
-  }
-  const sum = [r, g, b];
-  const mean = sum.map((v) => (n > 0 ? Math.round(v / n) : 0));
-  const out = new Uint8Array(rgba.length);
-  const row = width * 4;
-  for (let y = 0; y < height; y++) {
-    const src = (height - 1 - y) * row;
-    out.set(rgba.subarray(src, src + row), y * row);
-    for (let i = y * row; i < (y + 1) * row; i += 4) {
-      if (out[i + 3]! < 8) {
-        out[i] = mean[0]!;
-        out[i + 1] = mean[1]!;
-        out[i + 2] = mean[2]!;
-      }
-    }
-  }
-  return out;
-}
-
-/** Leaves in the densest clump cell. */
-const MAX_CLUMP_LEAVES = 360;
-
-function drawLeaf(
-  ctx: CanvasRenderingContext2D,
-  sprite: HTMLCanvasElement | null,
-  rand: () => number,
-  ox: number,
-  oy: number,
-  size: number,
-): void {
-  {
-    const r = Math.sqrt(rand()) * size * 0.4;
-    const a = rand() * Math.PI * 2;
-    const x = ox + size / 2 + Math.cos(a) * r;
-    const y = oy + size / 2 + Math.sin(a) * r;
-    const s = size * (0.06 + 0.03 * rand());
-    ctx.save();
-    ctx.translate(x, y);
-    ctx.rotate(rand() * Math.PI * 2);
-    if (sprite) {
-      const aspect = sprite.width / sprite.height;
-      ctx.drawImage(sprite, (-s * aspect) / 2, -s / 2, s * aspect, s);
-    } else {
-      const g = 110 + Math.floor(rand() * 60);
-      ctx.fillStyle = `rgb(${Math.floor(g * 0.45)}, ${g}, ${Math.floor(g * 0.3)})`;
-      ctx.beginPath();
-      ctx.ellipse(0, 0, s * 0.22, s * 0.5, 0, 0, Math.PI * 2);
-      ctx.fill();
-    }
-    ctx.restore();
-  }
+/** The billboard cloud's clump atlas (made in the worker, `LodBuffers.clump`) as a texture. */
+export function clumpTexture(clump: ClumpBuffers): Texture {
+  return srgbTexture(clump.rgba, clump.size, clump.size);
 }
 
 /**

@@ -4,6 +4,7 @@
  * leaf mesh per leaf.
  */
 import { describe, expect, it } from 'vitest';
+import { CLUMP_SIZE, clumpAtlas } from './clump';
 import { lodsResponse } from './lodHandler';
 import type { LodWasmApi } from './types';
 import type { WasmApi } from '../core/types';
@@ -102,5 +103,16 @@ describe('baked leaves from the LOD worker', () => {
       undefined,
       undefined,
     ]);
+  });
+
+  it("sends the clouds' clump atlas, made from the tree's leaf and seeded by its seed", () => {
+    const [a, transfer] = lodsResponse(wasm, { type: 'lods', id: 3, params: PARAMS });
+    const clump = a.lods.clump;
+    expect(a.lods.levels[2]!.cloud.length).toBeGreaterThan(0);
+    expect(clump?.size).toBe(CLUMP_SIZE);
+    expect(clump?.rgba).toEqual(clumpAtlas(a.lods.leafTexture, 7 + PARAMS.seed));
+    expect(transfer).toContain(clump?.rgba.buffer);
+    const [b] = lodsResponse(wasm, { type: 'lods', id: 4, params: { ...PARAMS, seed: 4 } });
+    expect(b.lods.clump?.rgba).not.toEqual(clump?.rgba);
   });
 });

@@ -12,6 +12,10 @@ import type {
   LodWasmApi,
   WasmLods,
 } from './types';
+import { CLUMP_SIZE, clumpAtlas } from './clump';
+
+/** Seed of the clump atlas of a tree of seed 0. */
+const CLUMP_SEED = 7;
 
 /** Level `level`'s leaves baked by the core (`GeneratedLods.baked_leaves`), or none. */
 function bakedLeaves(lods: WasmLods, level: number): BakedLeafBuffers | undefined {
@@ -79,13 +83,18 @@ export function lodsResponse(
       size && rgba.length === size[0] * size[1] * 4
         ? { width: size[0], height: size[1], rgba }
         : null;
-    const buffers: LodBuffers = { meta, levels, leafTexture };
+    // The clouds' clump atlas, seeded by the tree's seed (a forest's trees differ).
+    const clump = levels.some((l) => l.cloud.length > 0)
+      ? { size: CLUMP_SIZE, rgba: clumpAtlas(leafTexture, CLUMP_SEED + (request.params.seed ?? 0)) }
+      : null;
+    const buffers: LodBuffers = { meta, levels, leafTexture, clump };
     const transfer: Transferable[] = levels.flatMap(({ bakedLeaves: baked, ...arrays }) => {
       const views: ArrayBufferView[] = Object.values(arrays);
       if (baked) views.push(baked.positions, baked.normals, baked.uvs, baked.indices, baked.colors);
       return views.map((a) => a.buffer as ArrayBuffer);
     });
     if (leafTexture) transfer.push(leafTexture.rgba.buffer as ArrayBuffer);
+    if (clump) transfer.push(clump.rgba.buffer as ArrayBuffer);
     return [{ type: 'lods', id: request.id, lods: buffers }, transfer];
   } finally {
     lods.free();

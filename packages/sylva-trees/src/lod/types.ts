@@ -40,11 +40,22 @@ export interface BakedLeafBuffers {
   colors: Float32Array;
 }
 
+/**
+ * The billboard cloud's leaf-clump atlas (`clumpAtlas`): `size`² RGBA bytes, rows bottom-up,
+ * sRGB, a 2×2 grid of cells by leaf density (`CELL_DENSITY`).
+ */
+export interface ClumpBuffers {
+  size: number;
+  rgba: Uint8Array;
+}
+
 /** A tree and its reduced levels, LOD0 first. */
 export interface LodBuffers {
   meta: LodMeta;
   levels: LodLevelBuffers[];
   leafTexture: LeafTextureBuffers | null;
+  /** The clump atlas the levels' billboard clouds are drawn with (null: no level has a cloud). */
+  clump: ClumpBuffers | null;
 }
 
 /** Floats per billboard-cloud quad. */

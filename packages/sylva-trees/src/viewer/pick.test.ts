@@ -20,19 +20,9 @@ import {
   type Intersection,
 } from 'three';
 import { pickBoxes, PICK_RUN } from '../core/pickBoxes';
+import { mulberry32 as rng } from '../core/random';
 import { pickBark } from './barkPick';
 import { wrapInstances } from './instances';
-
-/** A seeded generator (mulberry32). */
-function rng(seed: number): () => number {
-  let a = seed;
-  return () => {
-    a = (a + 0x6d2b79f5) | 0;
-    let t = Math.imul(a ^ (a >>> 15), 1 | a);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** A soup of `n` small triangles in a 10 m box, in index order along x (like stems). */
 function soup(n: number, seed: number): BufferGeometry {

@@ -27,4 +27,5 @@ export { loadWasmHere } from '../runtime/inProcess';
 export { poolSize, WorkerPool, type PoolMember } from '../runtime/pool';
 export { ExportClient } from '../export/exportClient';
 export type { ExportFormat, ExportResponse, LeafExport } from '../export/exportProtocol';
-export { QUAD_FLOATS, type LodBuffers, type LodLevelBuffers } from '../lod/types';
+export { QUAD_FLOATS, type ClumpBuffers, type LodBuffers, type LodLevelBuffers } from '../lod/types';
+export { CELL_DENSITY, clumpLeaves, densityCell } from '../lod/clump';
