@@ -4,10 +4,11 @@
  * export client of before (the real core, in process); a crashed pool worker rejects its job and
  * is restarted.
  */
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
 import { inProcessFactory } from 'sylva-trees/testing';
 import {
+  EXPORT_TIME_LIMIT_MS,
   ExportClient,
   exportRequest,
   type ExportResponse,
@@ -204,5 +205,30 @@ describe('GenerationPool', () => {
     workers[1]!.emit({ type: 'fatal', message: 'out of memory' });
     await expect(next).rejects.toThrow('the generation worker crashed: out of memory');
     pool.dispose();
+  });
+
+  it('stops an export past its time limit (not a level-of-detail job) and restarts the worker', async () => {
+    vi.useFakeTimers();
+    try {
+      const { factory, workers, ready } = fakeWorkers();
+      const pool = new GenerationPool(factory, 1);
+      const baking = pool.lods({ seed: 1 });
+      ready();
+      vi.advanceTimersByTime(EXPORT_TIME_LIMIT_MS * 2);
+      workers[0]!.emit({ type: 'lods', id: 1, lods: { levels: [] } as unknown as LodBuffers });
+      await expect(baking).resolves.toBeTruthy();
+      const exporting = pool.export({ seed: 1 }, [], 'obj');
+      vi.advanceTimersByTime(EXPORT_TIME_LIMIT_MS);
+      await expect(exporting).rejects.toThrow('The export took longer than 60 s.');
+      expect(workers).toHaveLength(1);
+      const next = pool.lods({ seed: 2 });
+      expect(workers).toHaveLength(2);
+      ready();
+      expect(workers[1]!.posted).toEqual([{ type: 'lods', id: 3, params: { seed: 2 } }]);
+      pool.dispose();
+      await expect(next).rejects.toThrow('disposed');
+    } finally {
+      vi.useRealTimers();
+    }
   });
 });
