@@ -11,8 +11,8 @@
 //     drawn after each drag and each release (no frames are drawn between the timed steps);
 //   - age: a 20-step drag of Age on the default tree, toward younger trees (the growth replay);
 //   - paint and cut: the hand-edit tools (bench-edits.mjs);
-//   - forest_unique: 16 unique trees with their LODs from the forest's worker pool, click to the
-//     last tree shown (bench-forest.mjs).
+//   - forest_unique: 16 unique trees with their LODs from the studio's generation pool, click to
+//     the last tree shown (bench-forest.mjs).
 // Exports `benchBrowser()`; run directly it prints the result.
 import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';

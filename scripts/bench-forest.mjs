@@ -1,5 +1,5 @@
 // Browser bench `forest_unique`: the default forest (16 unique trees with their levels of detail
-// and impostors, generated in the forest's worker pool), timed in the page from the click on
+// and impostors, generated in the studio's generation pool), timed in the page from the click on
 // Forest to the last tree shown (added to the scene, then the next frame drawn), in a fresh page
 // per run; the median over runs.
 import { openDefaultTree } from './bench-page.mjs';

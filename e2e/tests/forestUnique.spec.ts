@@ -1,6 +1,6 @@
 /**
  * A forest link opens the forest view with its recipe: 16 unique trees (each its own species and
- * seed), generated in the forest's worker pool, all shown; the link keeps the recipe, and a
+ * seed), generated in the studio's generation pool, all shown; the link keeps the recipe, and a
  * hostile recipe falls back with a notice.
  */
 import { expect, test, type Page } from '@playwright/test';

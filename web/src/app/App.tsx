@@ -23,6 +23,7 @@ import { useGenerator, type Generator } from './useGenerator';
 import { useGrowthEditor, volumesFromUrl } from './useGrowthEditor';
 import { editsFromUrl, useHandEdits } from './useHandEdits';
 import { HandEditPanel } from '../ui/HandEditPanel';
+import { useGenerationPool } from '../pool/useGenerationPool';
 
 /** The whole application. */
 export function App() {
@@ -36,6 +37,8 @@ export function App() {
   // The growth volumes (`vol=`) and hand edits (`e=`) of the share link, sent with every request.
   const [volumesInUrl] = useState(volumesFromUrl);
   const [editsInUrl] = useState(editsFromUrl);
+  // The workers of the independent jobs (LOD bakes, exports, the forest's trees).
+  const pool = useGenerationPool();
   const registry = useMemo(() => info?.registry ?? [], [info]);
   const presets = useMemo(() => info?.presets ?? [], [info]);
 
@@ -99,6 +102,7 @@ export function App() {
           volumesRef={editor.volumesRef}
           editsRef={editor.editsRef}
           info={info}
+          pool={pool}
         />
         {/* Stats, toolbar and wind in one row that wraps on a narrow stage: never on top of each other. */}
         <div className="stage-top">
@@ -111,6 +115,8 @@ export function App() {
               viewerRef={viewerRef}
               lodRef={lodRef}
               version={info.version}
+              exportFormats={info.exportFormats ?? []}
+              exporter={pool}
               volumesRef={editor.volumesRef}
               editsRef={editor.editsRef}
               onLoadParams={(next) => editor.change({ params: next, key: null, frame: true })}

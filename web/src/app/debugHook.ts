@@ -3,6 +3,7 @@ import type { LeafPullCheck } from '../viewer/leafPullCheck';
 import type { OrganDebug } from '../viewer/TreeViewer';
 import type { ForestDebug } from '../forest/ForestScene';
 import type { LodMode, LodState } from '../lod/LodController';
+import type { PoolState } from '../pool/generationPool';
 import type { WindSettings } from 'sylva-trees/viewer';
 
 /** A tree the viewer applied (the debug hook's log; benchmarks time answers with it). */
@@ -68,6 +69,8 @@ export interface SylvaDebugHook {
   setCameraDistance(distance: number): void;
   /** LOD mode: 'auto' or a forced level 0..3. */
   setLodMode(mode: LodMode): void;
+  /** The generation pool (LOD bakes, exports, the forest's trees): workers started, jobs. */
+  pool(): PoolState;
   /** Forest view (while open): draw calls and their bound, trees, frame time, trees per level. */
   forest(): ForestDebug;
   /** Forest view: sets the number of trees. */

@@ -5,13 +5,13 @@
  * the impostor, each with a line saying when to choose it), "Copy embed code" and a link to the
  * docs page.
  */
-import { useCallback, useEffect, useRef, useState, type RefObject } from 'react';
+import { useRef, type RefObject } from 'react';
 import type { Edit, Params, ParamSpec, VolumePrimitive } from 'sylva-trees/core';
-import { createModuleWorker } from '../createWorker';
 import { useDismiss } from '../ui/useDismiss';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { LodController } from '../lod/LodController';
-import { ExportClient, type ExportFormat } from 'sylva-trees/worker';
+import type { ExportFormat } from 'sylva-trees/worker';
+import type { Exporter } from '../pool/generationPool';
 import { MESH_EXPORTS, runMeshExport, saveExported, type MeshExport } from './meshExport';
 import { presetFileName } from './presetFile';
 import {
@@ -34,6 +34,10 @@ interface Props {
   lodRef: RefObject<LodController | null>;
   /** The core's version (the impostor GLB's `asset.generator`). */
   version: string;
+  /** The formats the core can export (the generator's `ready` message; every worker runs the same core). */
+  exportFormats: readonly ExportFormat[];
+  /** Runs the mesh exports: the app's generation pool, never the editor's worker. */
+  exporter: Exporter;
   /** The growth volume primitives sent with every request. */
   volumesRef: RefObject<VolumePrimitive[]>;
   /** The hand edits: an export is the edited tree. */
@@ -45,11 +49,11 @@ interface Props {
 /** A mesh download of the menu, disabled (with the reason) while the core lacks its format. */
 function MeshExportButton(props: {
   item: MeshExport;
-  formats: ExportFormat[] | 'checking' | null;
+  formats: readonly ExportFormat[];
   onExport: () => void;
 }) {
   const { item, formats } = props;
-  const available = Array.isArray(formats) && formats.includes(item.format);
+  const available = formats.includes(item.format);
   return (
     <button
       type="button"
@@ -57,11 +61,7 @@ function MeshExportButton(props: {
       data-testid={item.testId}
       disabled={!available}
       title={
-        available
-          ? undefined
-          : formats === 'checking'
-            ? 'Checking the core…'
-            : 'This build of the Sylva core has no exporter for this format yet'
+        available ? undefined : 'This build of the Sylva core has no exporter for this format yet'
       }
       onClick={props.onExport}
     >
@@ -78,30 +78,13 @@ export function Toolbar(props: Props) {
   const { registry, params, presetName, viewerRef, lodRef, volumesRef, editsRef } = props;
   const menuRef = useRef<HTMLDetailsElement>(null);
   const fileRef = useRef<HTMLInputElement>(null);
-  const clientRef = useRef<ExportClient | null>(null);
-  const [formats, setFormats] = useState<ExportFormat[] | 'checking' | null>(null);
   const [status, setStatus] = useToolbarStatus();
-
-  useEffect(() => () => clientRef.current?.dispose(), []);
-
-  const client = useCallback((): ExportClient => {
-    clientRef.current ??= new ExportClient(createModuleWorker);
-    return clientRef.current;
-  }, []);
 
   const closeMenu = () => {
     if (menuRef.current) menuRef.current.open = false;
   };
 
   const baseName = presetFileName(params, presetName).replace(/\.json$/, '');
-
-  const onToggle = () => {
-    if (!menuRef.current?.open || formats !== null) return;
-    setFormats('checking');
-    client()
-      .formats()
-      .then(setFormats, () => setFormats([]));
-  };
 
   // Escape or a press outside closes the menu.
   useDismiss(menuRef);
@@ -128,7 +111,7 @@ export function Toolbar(props: Props) {
       lod: lodRef.current,
       generator: `Sylva ${props.version}`,
     };
-    runMeshExport(client(), item, source)
+    runMeshExport(props.exporter, item, source)
       .then((response) => saveExported(response, item.format, setStatus))
       .catch((error: unknown) => {
         const message = error instanceof Error ? error.message : String(error);
@@ -138,7 +121,7 @@ export function Toolbar(props: Props) {
 
   return (
     <div className="toolbar" data-testid="toolbar">
-      <details className="toolbar-menu" ref={menuRef} onToggle={onToggle}>
+      <details className="toolbar-menu" ref={menuRef}>
         <summary data-testid="export-menu">Export</summary>
         <div className="toolbar-items" role="group" aria-label="Export">
           <button type="button" data-testid="export-png" onClick={screenshot}>
@@ -161,7 +144,7 @@ export function Toolbar(props: Props) {
             <MeshExportButton
               key={item.testId}
               item={item}
-              formats={formats}
+              formats={props.exportFormats}
               onExport={() => exportMesh(item)}
             />
           ))}

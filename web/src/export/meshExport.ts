@@ -1,12 +1,14 @@
 /**
  * The mesh downloads of the Export menu (docs/formats.md says which to choose for which tool):
- * what each item asks the export worker for, and one export run: the LOD zip first takes the
- * impostor from the LOD view (`lod/impostorExport.ts`), then the worker zips it with the levels.
+ * what each item asks for, and one export run in the app's generation pool (a pool worker, never
+ * the editor's): the LOD zip first takes the impostor from the LOD view (`lod/impostorExport.ts`),
+ * then the worker zips it with the levels.
  */
 import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
-import type { ExportClient, ExportFormat, ExportResponse, LeafExport } from 'sylva-trees/worker';
+import type { ExportFormat, ExportResponse, LeafExport } from 'sylva-trees/worker';
 import { impostorFile } from '../lod/impostorExport';
 import type { LodController } from '../lod/LodController';
+import type { Exporter } from '../pool/generationPool';
 import { downloadBlob } from './download';
 import type { Status } from './toolbarParts';
 
@@ -114,7 +116,7 @@ export interface ExportSource {
 
 /** Runs one export of the menu (the LOD zip with the impostor of the tree on screen). */
 export async function runMeshExport(
-  client: ExportClient,
+  client: Exporter,
   { format, leaves, strict }: MeshExport,
   source: ExportSource,
 ): Promise<ExportResponse> {

@@ -4,16 +4,16 @@
  * per level). The forest is K unique trees (16 by default, up to 64), each its own species and
  * seed, as the recipe in the link says (`recipe.ts`: count, seed, species; `ecology.ts` picks
  * each tree's species from the species map and places them). They are generated with their
- * levels of detail in a pool of generation workers of the forest's own (one per core, at most 4:
- * `WorkerPool`), apart from the editor's worker, and each appears as it finishes.
+ * levels of detail in the app's generation pool (`pool/generationPool.ts`: one worker per core,
+ * at most 4), apart from the editor's worker, and each appears as it finishes.
  */
 import { useEffect, useRef, useState } from 'react';
 import { applyPreset, type Params } from 'sylva-trees/core';
-import { poolSize, WorkerPool, type ReadyInfo } from 'sylva-trees/worker';
-import { createModuleWorker } from '../createWorker';
+import type { ReadyInfo } from 'sylva-trees/worker';
 import { installDebugHook } from '../app/debugHook';
 import { withQueryEntry } from '../app/queryEntry';
-import { LodClient } from '../lod/lodClient';
+import type { GenerationPool } from '../pool/generationPool';
+import type { AppPool } from '../pool/useGenerationPool';
 import { uniqueTrees } from './ecology';
 import { ForestScene, type ForestStats } from './ForestScene';
 import { decodeRecipe, encodeRecipe, type ForestRecipe } from './recipe';
@@ -75,33 +75,33 @@ function writeRecipe(recipe: ForestRecipe | null): void {
 }
 
 /**
- * Generates every unique tree in the pool (as many at once as it has workers) and adds each to
- * `scene` as it comes, so trees appear as they finish. Returns a function that ignores what is
- * still to come.
+ * Generates every unique tree in the pool (as many at once as it has workers, with the leaves
+ * baked in the worker: the forest draws them as one mesh) and adds each to `scene` as it comes,
+ * so trees appear as they finish. Returns a function that takes the trees still waiting out of
+ * the pool's queue and ignores the few being generated (they finish in their workers).
  */
 function loadTrees(
-  pool: WorkerPool<LodClient>,
+  pool: GenerationPool,
   all: { params: Params; species: number }[],
   scene: ForestScene,
   on: { shown: (at: number) => void; failed: (message: string) => void },
 ): () => void {
   let cancelled = false;
   scene.setArriving(all.length > 0);
+  const waiting = new AbortController();
   const runs = all.map(({ params, species }, id) =>
-    pool
-      .run((client) => client.request(params))
-      .then(
-        (lods) => {
-          if (cancelled) return;
-          scene.enqueue(lods, { id, species }, () => {
-            if (!cancelled) on.shown(performance.now());
-          });
-        },
-        (e: unknown) => {
-          if (cancelled) return;
-          on.failed(e instanceof Error ? e.message : String(e));
-        },
-      ),
+    pool.lods(params, undefined, undefined, { bakeLeaves: true, signal: waiting.signal }).then(
+      (lods) => {
+        if (cancelled) return;
+        scene.enqueue(lods, { id, species }, () => {
+          if (!cancelled) on.shown(performance.now());
+        });
+      },
+      (e: unknown) => {
+        if (cancelled) return;
+        on.failed(e instanceof Error ? e.message : String(e));
+      },
+    ),
   );
   // Every tree in (or failed): frames at full pace and resolution again.
   void Promise.all(runs).then(() => {
@@ -109,6 +109,7 @@ function loadTrees(
   });
   return () => {
     cancelled = true;
+    waiting.abort();
   };
 }
 
@@ -148,7 +149,16 @@ function installForestHook(
 }
 
 /** See the module docs. */
-export function ForestView({ info, season }: { info: ReadyInfo; season?: number }) {
+export function ForestView({
+  info,
+  season,
+  pool,
+}: {
+  info: ReadyInfo;
+  season?: number;
+  /** The app's generation pool (shared with the LOD panel and the exports). */
+  pool: AppPool;
+}) {
   const containerRef = useRef<HTMLDivElement>(null);
   const sceneRef = useRef<ForestScene | null>(null);
   const [count, setCount] = useState(DEFAULT_TREES);
@@ -170,16 +180,11 @@ export function ForestView({ info, season }: { info: ReadyInfo; season?: number 
     const { recipe } = initialRecipe(info);
     scene.setCount(countRef.current, recipe.seed, recipe.species.length);
     writeRecipe(recipe);
-    // A pool of its own (one worker per core, at most 4): the editor's worker stays free.
-    // Queued, with the leaves baked in the worker (the forest draws them as one mesh).
-    const pool = new WorkerPool(
-      () => new LodClient(createModuleWorker, false, true),
-      poolSize(navigator.hardwareConcurrency),
-    );
+    const generation = pool.get();
     const all = uniqueParams(info, recipe, season);
     setTotal(all.length);
-    const timing = { size: pool.size, openedAt: performance.now(), shownAt: [] as number[] };
-    const stop = loadTrees(pool, all, scene, {
+    const timing = { size: generation.size, openedAt: performance.now(), shownAt: [] as number[] };
+    const stop = loadTrees(generation, all, scene, {
       shown: (at) => {
         timing.shownAt.push(at);
         setLoaded(scene.varietyCount);
@@ -195,12 +200,11 @@ export function ForestView({ info, season }: { info: ReadyInfo; season?: number 
       stop();
       uninstall();
       window.clearInterval(timer);
-      pool.dispose();
       scene.dispose();
       sceneRef.current = null;
       writeRecipe(null);
     };
-  }, [info, season]);
+  }, [info, season, pool]);
 
   const onCount = (n: number) => {
     countRef.current = n;

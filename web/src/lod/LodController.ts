@@ -1,9 +1,10 @@
 /**
  * Levels of detail in the app viewer, as an overlay on the TreeViewer (through its
  * `overlayHost()`, so the viewer needs no LOD code): LOD0 is the viewer's own tree; LOD1, LOD2 and
- * the impostor are built here from a `lods` request for the same parameters (a second worker) and
- * swapped in by screen size (Auto, with hysteresis) or forced. The impostor is baked from LOD0 the
- * first time it is needed. Everything here is dropped when a new tree arrives and rebuilt for it.
+ * the impostor are built here from a `lods` request for the same parameters (in the app's
+ * generation pool, `lodClient.ts`) and swapped in by screen size (Auto, with hysteresis) or
+ * forced. The impostor is baked from LOD0 the first time it is needed. Everything here is dropped
+ * when a new tree arrives and rebuilt for it.
  */
 import { applyLeafCoverage, LEAF_INSTANCED_MATERIAL_KEY, leafTexture } from 'sylva-trees/viewer';
 import {
@@ -75,8 +76,8 @@ const LEVEL_COUNT = 4;
 
 /**
  * The levels are built this long after the last new tree (ms) unless a coarser level is wanted
- * sooner: while a slider is dragged the second worker stays idle instead of regenerating every
- * intermediate tree next to the viewer's own worker.
+ * sooner: while a slider is dragged the pool stays idle instead of regenerating every intermediate
+ * tree next to the viewer's own worker.
  */
 export const LOD_IDLE_MS = 3000;
 
@@ -239,7 +240,7 @@ export class LodController {
     this.idleTimer = setTimeout(() => this.requestLods(), LOD_IDLE_MS);
   }
 
-  /** Asks the LOD worker for the current tree's levels (once per tree). */
+  /** Asks the pool for the current tree's levels (once per tree). */
   private requestLods(): void {
     if (this.idleTimer !== null) clearTimeout(this.idleTimer);
     this.idleTimer = null;

@@ -6,10 +6,10 @@
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { installDebugHook } from '../app/debugHook';
 import type { Edit, Params, VolumePrimitive } from 'sylva-trees/core';
-import { createModuleWorker } from '../createWorker';
 import { ForestView, openedWithForest } from '../forest/ForestView';
 import type { TreeViewer } from '../viewer/TreeViewer';
 import type { ReadyInfo } from 'sylva-trees/worker';
+import type { AppPool } from '../pool/useGenerationPool';
 import { LodClient } from './lodClient';
 import { LodController, type LodMode, type LodState } from './LodController';
 import { LEVEL_NAMES } from './selection';
@@ -32,6 +32,7 @@ export function LodPanel({
   volumesRef,
   editsRef,
   info,
+  pool,
 }: {
   viewerRef: RefObject<TreeViewer | null>;
   /** Set to the controller while the panel is mounted (the LOD export takes its impostor). */
@@ -40,6 +41,8 @@ export function LodPanel({
   volumesRef: RefObject<VolumePrimitive[]>;
   editsRef: RefObject<Edit[]>;
   info: ReadyInfo | null;
+  /** The app's generation pool: the levels and the forest's trees are made there. */
+  pool: AppPool;
 }) {
   const controllerRef = useRef<LodController | null>(null);
   const [state, setState] = useState<LodState | null>(null);
@@ -51,7 +54,7 @@ export function LodPanel({
   useEffect(() => {
     const viewer = viewerRef.current;
     if (!viewer) return;
-    const client = new LodClient(createModuleWorker);
+    const client = new LodClient(pool.get());
     const controller = new LodController(
       viewer.overlayHost(),
       client,
@@ -76,13 +79,13 @@ export function LodPanel({
       controllerRef.current = null;
       if (lodRef.current === controller) lodRef.current = null;
     };
-  }, [viewerRef, lodRef, paramsRef, volumesRef, editsRef]);
+  }, [viewerRef, lodRef, paramsRef, volumesRef, editsRef, pool]);
 
   const mode = state?.mode ?? 'auto';
   const level = state?.level ?? 0;
   return (
     <>
-      {forest && info ? <ForestView info={info} season={forestSeason} /> : null}
+      {forest && info ? <ForestView info={info} season={forestSeason} pool={pool} /> : null}
       <div className="lod-panel" data-testid="lod-panel">
         <div className="lod-row">
           <span className="lod-title">LOD</span>

@@ -29,6 +29,59 @@ export class ExportError extends Error {
   }
 }
 
+/** What an export is asked with besides the tree's params, volumes and format. */
+export interface ExportOptions {
+  leaves?: LeafExport;
+  strict?: boolean;
+  name?: string;
+  edits?: readonly Edit[];
+  /** `lods`: the impostor GLB to store in the ZIP with the levels. */
+  impostor?: Uint8Array;
+}
+
+/**
+ * The worker message of export `id` (every client of the export handler writes it here, so an
+ * export carries the same inputs whichever worker runs it).
+ */
+export function exportRequest(
+  id: number,
+  params: Params,
+  volumes: VolumePrimitive[],
+  format: ExportFormat,
+  options: ExportOptions = {},
+): ExportRequest {
+  return {
+    type: 'export',
+    id,
+    params,
+    format,
+    ...(volumes.length > 0 ? { volumes } : {}),
+    ...(options.edits?.length ? { edits: [...options.edits] } : {}),
+    ...(options.leaves ? { leaves: options.leaves } : {}),
+    ...(options.strict ? { strict: true } : {}),
+    ...(options.name ? { name: options.name } : {}),
+    ...(options.impostor ? { impostor: options.impostor } : {}),
+  };
+}
+
+/** Message of an export dropped before it was answered. */
+export const EXPORT_CANCELLED = 'The export was cancelled.';
+
+/** The error of an export lost in a crash of its worker (`message`: the crash's). */
+export function exporterCrashed(message: string): ExportError {
+  return new ExportError(`The exporter crashed: ${message}`);
+}
+
+/** The error of an export stopped at [`EXPORT_TIME_LIMIT_MS`]. */
+export function exportTimedOut(): ExportError {
+  return new ExportError(`The export took longer than ${EXPORT_TIME_LIMIT_MS / 1000} s.`);
+}
+
+/** The error of an export in a format the core lacks. */
+export function unsupportedFormat(format: ExportFormat): ExportError {
+  return new ExportError(`This Sylva core cannot export ${format.toUpperCase()} yet.`);
+}
+
 /** Owns the export worker (through [`WorkerClient`]: exports run one after the other). */
 export class ExportClient {
   private readonly client: WorkerClient<Pending, WorkerRequest, WorkerResponse>;
@@ -59,18 +112,15 @@ export class ExportClient {
           this.settleReady = null;
         },
         crashed: (message, lost, starting) => {
-          const error = new ExportError(`The exporter crashed: ${message}`);
+          const error = exporterCrashed(message);
           lost?.reject(error);
           // A worker that never started: the next call starts a fresh one.
           this.settleReady?.reject(error);
           this.settleReady = null;
           if (starting) this.ready = null;
         },
-        timedOut: (lost) =>
-          lost.reject(
-            new ExportError(`The export took longer than ${EXPORT_TIME_LIMIT_MS / 1000} s.`),
-          ),
-        dropped: (job) => job.reject(new ExportError('The export was cancelled.')),
+        timedOut: (lost) => lost.reject(exportTimedOut()),
+        dropped: (job) => job.reject(new ExportError(EXPORT_CANCELLED)),
       },
       { eager: false, policy: 'queue', timeLimitMs: EXPORT_TIME_LIMIT_MS },
     );
@@ -97,40 +147,19 @@ export class ExportClient {
     params: Params,
     volumes: VolumePrimitive[],
     format: ExportFormat,
-    options: {
-      leaves?: LeafExport;
-      strict?: boolean;
-      name?: string;
-      edits?: readonly Edit[];
-      /** `lods`: the impostor GLB to store in the ZIP with the levels. */
-      impostor?: Uint8Array;
-    } = {},
+    options: ExportOptions = {},
   ): Promise<ExportResponse> {
     const formats = await this.formats();
-    if (!formats.includes(format)) {
-      throw new ExportError(`This Sylva core cannot export ${format.toUpperCase()} yet.`);
-    }
-    const id = this.nextId++;
+    if (!formats.includes(format)) throw unsupportedFormat(format);
+    const request = exportRequest(this.nextId++, params, volumes, format, options);
     return new Promise<ExportResponse>((resolve, reject) => {
-      const request: ExportRequest = {
-        type: 'export',
-        id,
-        params,
-        format,
-        ...(volumes.length > 0 ? { volumes } : {}),
-        ...(options.edits?.length ? { edits: [...options.edits] } : {}),
-        ...(options.leaves ? { leaves: options.leaves } : {}),
-        ...(options.strict ? { strict: true } : {}),
-        ...(options.name ? { name: options.name } : {}),
-        ...(options.impostor ? { impostor: options.impostor } : {}),
-      };
       this.client.submit({ request, resolve, reject });
     });
   }
 
   /** Stops the worker; pending exports fail. */
   dispose(): void {
-    this.settleReady?.reject(new ExportError('The export was cancelled.'));
+    this.settleReady?.reject(new ExportError(EXPORT_CANCELLED));
     this.settleReady = null;
     this.client.dispose();
   }

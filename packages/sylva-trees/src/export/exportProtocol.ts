@@ -1,7 +1,8 @@
 /**
- * Worker messages of the mesh export (GLB, OBJ + MTL). The app asks a separate export worker,
- * never the interactive one: an export regenerates the current params and returns the files,
- * as transferable bytes or (GLB) as a Blob made in the worker straight from the core's memory.
+ * Worker messages of the mesh export (GLB, OBJ + MTL). The app asks a worker of its generation
+ * pool (`SylvaTree` its own export worker), never the interactive one: an export regenerates the
+ * current params and returns the files, as transferable bytes or (GLB) as a Blob made in the
+ * worker straight from the core's memory.
  */
 import type { Edit } from '../core/edits';
 import type { Params, VolumePrimitive } from '../core/types';

@@ -14,7 +14,7 @@ interface Fake {
   fail(message: string): void;
 }
 
-function setup(options: ClientOptions = {}) {
+function setup(options: ClientOptions = {}, limitMs?: (job: number) => number | undefined) {
   const workers: Fake[] = [];
   const factory: WorkerFactory<Req, Res> = (onMessage, onError, start) => {
     const fake: Fake = {
@@ -48,6 +48,7 @@ function setup(options: ClientOptions = {}) {
       timedOut: (lost, limitMs) => log.timeouts.push([lost, limitMs]),
       dropped: (job, reason) => log.dropped.push([job, reason]),
       busy: (busy) => log.busy.push(busy),
+      ...(limitMs ? { limitMs } : {}),
     },
     options,
   );
@@ -152,6 +153,23 @@ describe('WorkerClient', () => {
       [1, 1_000],
       [2, 50],
     ]);
+  });
+
+  it('a per-request limit (the hook) replaces the client-wide one', () => {
+    // Odd jobs (exports) have a limit, even ones (levels of detail) none.
+    const { client, current, log } = setup({ timeLimitMs: 10 }, (job) =>
+      job % 2 === 1 ? 100 : undefined,
+    );
+    current().emit({ type: 'ready' });
+    client.submit(2);
+    vi.advanceTimersByTime(10_000);
+    expect(log.timeouts).toEqual([]);
+    current().emit({ type: 'done', id: 2 });
+    client.submit(3);
+    vi.advanceTimersByTime(99);
+    expect(log.timeouts).toEqual([]);
+    vi.advanceTimersByTime(1);
+    expect(log.timeouts).toEqual([[3, 100]]);
   });
 
   it('a request sent first goes before the waiting ones', () => {

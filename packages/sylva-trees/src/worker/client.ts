@@ -11,7 +11,8 @@
  *   the worker and reports the request it held (never sent again: no resend loop); a worker
  *   that was ready is recreated, one that crashed while starting is not (it would crash again):
  *   what waited is dropped and the next request tries a fresh worker.
- * - **Time limit** (optional): a request that runs too long stops the worker, which is recreated.
+ * - **Time limit** (optional, for every request or per request): a request that runs too long
+ *   stops the worker, which is recreated.
  * - **Dispose**: the worker is terminated and every request not answered is dropped (`dropped`,
  *   where promise-based clients reject).
  */
@@ -58,6 +59,11 @@ export interface ClientHooks<Job, Req, Res> {
    * worker is recreated after this call.
    */
   crashed(message: string, lost: Job | null, starting: boolean): void;
+  /**
+   * The time limit of `job` (ms; undefined: none), read when it is sent; when absent, the
+   * client's `timeLimitMs` applies to every job.
+   */
+  limitMs?(job: Job): number | undefined;
   /** `lost` ran longer than `limitMs`: the worker was stopped (and is recreated after this). */
   timedOut?(lost: Job, limitMs: number): void;
   /** A job that will never be sent or answered. */
@@ -292,7 +298,7 @@ export class WorkerClient<Job, Req, Res extends WorkerMessage> {
       if (next === this.first) this.first = null;
       if (next !== null) {
         this.current = next;
-        const limit = this.timeLimitMs;
+        const limit = this.hooks.limitMs ? this.hooks.limitMs(next) : this.timeLimitMs;
         if (limit !== undefined) {
           this.inFlightLimitMs = limit;
           this.deadline = setTimeout(() => this.timedOut(), limit);

@@ -24,8 +24,30 @@ export { DEBUG_WORKER_NAME } from './debugName';
 export { startGeneratorWorker } from '../runtime/startWorker';
 export { adaptWorker, type EarlyMessages } from '../runtime/workerHandle';
 export { loadWasmHere } from '../runtime/inProcess';
-export { poolSize, WorkerPool, type PoolMember } from '../runtime/pool';
-export { ExportClient } from '../export/exportClient';
-export type { ExportFormat, ExportResponse, LeafExport } from '../export/exportProtocol';
+export {
+  LatestLane,
+  POOL_JOB_CANCELLED,
+  poolSize,
+  WorkerPool,
+  type PoolMember,
+  type PoolRunOptions,
+} from '../runtime/pool';
+export {
+  EXPORT_CANCELLED,
+  EXPORT_TIME_LIMIT_MS,
+  ExportClient,
+  ExportError,
+  exporterCrashed,
+  exportRequest,
+  exportTimedOut,
+  unsupportedFormat,
+  type ExportOptions,
+} from '../export/exportClient';
+export type {
+  ExportFormat,
+  ExportRequest,
+  ExportResponse,
+  LeafExport,
+} from '../export/exportProtocol';
 export { QUAD_FLOATS, type ClumpBuffers, type LodBuffers, type LodLevelBuffers } from '../lod/types';
 export { CELL_DENSITY, clumpLeaves, densityCell } from '../lod/clump';

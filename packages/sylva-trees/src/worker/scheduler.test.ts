@@ -46,6 +46,21 @@ describe('GenerationScheduler', () => {
     expect(current().posted).toEqual([{ type: 'generate', id: id2, params: { seed: 2 } }]);
   });
 
+  it('hands on the export formats of the ready message (export workers run the same core)', () => {
+    const { current, log } = setup();
+    current().emit({
+      type: 'ready',
+      registry: [],
+      presets: [],
+      version: 'test',
+      exportFormats: ['glb', 'obj'],
+      leafPresets: [],
+    });
+    expect(log.ready).toEqual([
+      [{ registry: [], presets: [], version: 'test', exportFormats: ['glb', 'obj'] }, 0],
+    ]);
+  });
+
   it('latest wins: 3 rapid requests post only the first and the last', () => {
     const { scheduler, current, log } = setup();
     current().ready();

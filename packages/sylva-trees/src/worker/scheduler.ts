@@ -130,8 +130,10 @@ export class GenerationScheduler {
         ends: (response, slot) => endsSlot(response, slot),
         receive: (response, answered) => this.receive(response, answered),
         ready: (response, restarts) => {
-          const { registry, presets, version } = response as ReadyResponse;
-          this.callbacks.onReady({ registry, presets, version }, restarts);
+          const { registry, presets, version, exportFormats } = response as ReadyResponse;
+          // The export formats: an app's export workers run the same core (web: the pool).
+          const info = { registry, presets, version, ...(exportFormats ? { exportFormats } : {}) };
+          this.callbacks.onReady(info, restarts);
         },
         crashed: (message, _lost, starting) =>
           this.callbacks.onError(
