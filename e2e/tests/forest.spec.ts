@@ -102,3 +102,19 @@ test('a forest of 1,000 then 5,000 trees keeps draw calls under the bound', asyn
   await expect(page.getByTestId('forest-view')).toHaveCount(0);
   expect(errors).toEqual([]);
 });
+
+test("the forest view lies over the editor's hand tools", async ({ page }) => {
+  // Opened from the LOD panel, the forest once left the Shape tools over its stats.
+  const errors = watchErrors(page);
+  await page.goto('/?debug=1&v=1&levels=2');
+  await waitForTree(page);
+  await page.getByTestId('forest-toggle').click();
+  await expect(page.getByTestId('forest-view')).toBeVisible();
+  const onTop = await page.evaluate(() => {
+    const r = document.querySelector('[data-testid=tool-paint]')!.getBoundingClientRect();
+    const top = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+    return top?.closest('[data-testid]')?.getAttribute('data-testid') ?? null;
+  });
+  expect(onTop, 'what is drawn where the Paint button is').not.toBe('tool-paint');
+  expect(errors).toEqual([]);
+});
