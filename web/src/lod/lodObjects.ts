@@ -75,7 +75,7 @@ export function leafMesh(level: LodLevelBuffers, material: Material): InstancedM
 
 /**
  * A level's leaves as one geometry (what the forest instances per tree, since three.js cannot
- * instance an instanced mesh): the buffers the LOD worker baked with the core's exporter
+ * instance an instanced mesh): the buffers the pool worker baked with the core's exporter
  * (`LodClient` with `bakeLeaves`), wrapped as they are, the tint as a vertex colour; null when
  * the level has none.
  */
