@@ -76,7 +76,7 @@ export function leafMesh(level: LodLevelBuffers, material: Material): InstancedM
 /**
  * A level's leaves as one geometry (what the forest instances per tree, since three.js cannot
  * instance an instanced mesh): the buffers the pool worker baked with the core's exporter
- * (`LodClient` with `bakeLeaves`), wrapped as they are, the tint as a vertex colour; null when
+ * (a pool `lods` job with `bakeLeaves`), wrapped as they are, the tint as a vertex colour; null when
  * the level has none.
  */
 export function bakedLeafGeometry(level: LodLevelBuffers): BufferGeometry | null {
