@@ -132,7 +132,8 @@ export class WorkerPool<M extends PoolMember> {
   /** Rejects the waiting jobs and disposes of every member made (its running job rejects as its dispose says). */
   dispose(): void {
     this.disposed = true;
-    for (const entry of this.queue.splice(0)) entry.reject(new Error('the worker pool was disposed'));
+    for (const entry of this.queue.splice(0))
+      entry.reject(new Error('the worker pool was disposed'));
     for (const m of this.members) m?.dispose();
     this.members.fill(null);
   }

@@ -49,5 +49,10 @@ export type {
   ExportResponse,
   LeafExport,
 } from '../export/exportProtocol';
-export { QUAD_FLOATS, type ClumpBuffers, type LodBuffers, type LodLevelBuffers } from '../lod/types';
+export {
+  QUAD_FLOATS,
+  type ClumpBuffers,
+  type LodBuffers,
+  type LodLevelBuffers,
+} from '../lod/types';
 export { CELL_DENSITY, clumpLeaves, densityCell } from '../lod/clump';
