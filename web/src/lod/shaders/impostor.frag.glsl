@@ -128,7 +128,14 @@ void main() {
   float forward = pow(max(dot(normalize(rot * w), uSunDir), 0.0), 3.0);
   vec3 through = uSunColor * uLeafTranslucency * back * (0.35 + 0.65 * forward);
   vec3 lit = albedo * (irradiance * RECIPROCAL_PI + leaf * (uLeafEmissive + through));
-  gl_FragColor = vec4(lit, uCoverage > 0.5 ? c.a : 1.0);
+  // With coverage: up close, where a texel spans several pixels, the filtered coverage ramps over
+  // that many pixels and the sky showed through a wide rim (10% brighter than LOD0 at a screen
+  // size of 0.9); the ramp is narrowed to about one pixel about the alpha test. Far off
+  // (a texel under a pixel) the coverage blends as baked.
+  float texelsPerPixel = length(fwidth(a0 * uFrames * uCellPx));
+  float sharpen = max(1.0, 1.0 / max(texelsPerPixel, 1e-3));
+  float alpha = clamp((c.a - uAlphaTest) * sharpen + uAlphaTest, 0.0, 1.0);
+  gl_FragColor = vec4(lit, uCoverage > 0.5 ? alpha : 1.0);
 #include <tonemapping_fragment>
 #include <colorspace_fragment>
 #include <fog_fragment>
