@@ -14,7 +14,8 @@
  *   so the forest fills in as its trees arrive, and the layout of a given set of trees does not
  *   depend on the order they arrived in.
  */
-import { mulberry32, type ForestLayout } from './layout';
+import { mulberry32 } from 'sylva-trees/core';
+import type { ForestLayout } from './layout';
 
 /** Two neighbouring crowns may overlap by this much of their radii's sum (they interlock). */
 export const CROWN_SHARE = 0.7;

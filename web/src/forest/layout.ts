@@ -10,6 +10,7 @@
  *   frame; the renderer uploads `counts[b] × 16` floats of bucket `b` and draws `counts[b]`
  *   instances, so the number of draws depends on varieties × levels only, never on N.
  */
+import { mulberry32 } from 'sylva-trees/core';
 
 /** Levels per tree in the forest: LOD0, LOD1, LOD2 and the impostor. */
 export const FOREST_LEVELS = 4;
@@ -45,18 +46,6 @@ export interface ForestLayout {
   minSpacing: number;
   /** Trees per variety. */
   perVariety: Int32Array;
-}
-
-/** mulberry32: a small, fast, seeded 32-bit generator returning floats in [0, 1). */
-export function mulberry32(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 /** Places `n` trees (see the module docs). */

@@ -18,6 +18,7 @@ export {
   snapToStep,
 } from './params';
 export { parsePresets, parseRegistry } from './parse';
+export { mulberry32 } from './random';
 export { MAX_VOLUMES, newVolume, normalizeVolume } from './volumes';
 export {
   DEFAULT_BRUSH,

@@ -1,4 +1,4 @@
-/** A small seeded generator for the package's own randomness (not part of its public surface). */
+/** A small seeded generator: the package's own randomness (the clump atlas) and the forest's. */
 
 /** mulberry32: a small, fast, seeded 32-bit generator returning floats in [0, 1). */
 export function mulberry32(seed: number): () => number {
