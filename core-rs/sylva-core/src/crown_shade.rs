@@ -9,7 +9,6 @@
 //! are darker than the outer shell; the bark uses the same field ([`crate::mesh::shade`]).
 //! Deterministic: plain arithmetic and the portable `math::exp`, in a fixed order.
 
-use crate::math::HwSqrt;
 use glam::Vec3;
 
 /// Brightness of a leaf (or bark) that sees no sky at all.
@@ -65,7 +64,7 @@ impl CrownLight {
             .chunks_exact(16)
             .map(|m| {
                 let (x, y) = (Vec3::new(m[0], m[1], m[2]), Vec3::new(m[4], m[5], m[6]));
-                (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length_hw())
+                (Vec3::new(m[12], m[13], m[14]) + 0.5 * y, 0.5 * x.cross(y).length())
             })
             .collect();
         CrownLight::from_area(&leaves)

@@ -91,46 +91,43 @@ pub fn unit_or(v: glam::Vec3, fallback: impl FnOnce() -> glam::Vec3) -> glam::Ve
     }
 }
 
-/// Lengths and unit vectors through the square-root instruction. glam is built with `libm` (for
-/// portable trigonometry), so its `length` and `normalize` take their square root in
-/// `libm::sqrtf`, a software loop in wasm. These are glam's arithmetic with `f32::sqrt`: the same
-/// values (an IEEE square root is exact everywhere) at instruction speed, for the hot loops.
-pub trait HwSqrt: Copy {
-    /// glam's `length()`.
-    fn length_hw(self) -> f32;
-    /// glam's `normalize()`.
-    fn normalize_hw(self) -> Self;
-}
-
-impl HwSqrt for glam::Vec3 {
-    #[inline]
-    fn length_hw(self) -> f32 {
-        self.length_squared().sqrt()
-    }
-    #[inline]
-    fn normalize_hw(self) -> Self {
-        self * (1.0 / self.length_hw())
-    }
-}
-
-impl HwSqrt for glam::Quat {
-    #[inline]
-    fn length_hw(self) -> f32 {
-        glam::Vec4::from(self).length_squared().sqrt()
-    }
-    #[inline]
-    fn normalize_hw(self) -> Self {
-        glam::Quat::from_vec4(glam::Vec4::from(self) * (1.0 / self.length_hw()))
-    }
-}
-
-/// glam's `v.normalize_or(fallback)` through [`HwSqrt`].
+/// glam's `Quat::from_rotation_x`, its sine and cosine from libm (glam is built without its
+/// `libm` feature, so its own would take them from the platform: glibc natively).
 #[inline]
-pub fn normalize_or_hw(v: glam::Vec3, fallback: glam::Vec3) -> glam::Vec3 {
-    let rcp = 1.0 / v.length_hw();
-    if rcp.is_finite() && rcp > 0.0 {
-        v * rcp
-    } else {
-        fallback
+pub fn quat_rotation_x(angle: f32) -> glam::Quat {
+    let (s, c) = libm::sincosf(angle * 0.5);
+    glam::Quat::from_xyzw(s, 0.0, 0.0, c)
+}
+
+/// glam's `Quat::from_rotation_y` through libm ([`quat_rotation_x`]).
+#[inline]
+pub fn quat_rotation_y(angle: f32) -> glam::Quat {
+    let (s, c) = libm::sincosf(angle * 0.5);
+    glam::Quat::from_xyzw(0.0, s, 0.0, c)
+}
+
+/// glam's `Quat::from_axis_angle` (`axis` of unit length) through libm ([`quat_rotation_x`]).
+#[inline]
+pub fn quat_axis_angle(axis: glam::Vec3, angle: f32) -> glam::Quat {
+    let (s, c) = libm::sincosf(angle * 0.5);
+    let v = axis * s;
+    glam::Quat::from_xyzw(v.x, v.y, v.z, c)
+}
+
+/// glam's `from.slerp(to, s)` (both of unit length) with libm's sine: the shorter arc, a
+/// normalised linear blend when they are almost the same rotation. The angle is glam's own
+/// approximation of the arc cosine (`Quat::angle_between`, exact at half of it), no platform
+/// function.
+pub fn slerp(from: glam::Quat, mut to: glam::Quat, s: f32) -> glam::Quat {
+    let mut dot = from.dot(to);
+    if dot < 0.0 {
+        to = -to;
+        dot = -dot;
     }
+    if dot > 1.0 - f32::EPSILON {
+        return (from * (1.0 - s) + to * s).normalize();
+    }
+    let theta = from.angle_between(to) * 0.5;
+    let (scale1, scale2) = (libm::sinf(theta * (1.0 - s)), libm::sinf(theta * s));
+    ((from * scale1) + (to * scale2)) * (1.0 / libm::sinf(theta))
 }

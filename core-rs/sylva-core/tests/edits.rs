@@ -6,7 +6,7 @@
 mod common;
 
 use common::{assert_mesh_invariants, edge_uses};
-use glam::{Quat, Vec3};
+use glam::Vec3;
 use sylva_core::clock::NoClock;
 use sylva_core::edits::cut::FOOTPRINT;
 use sylva_core::edits::resolve;
@@ -120,7 +120,7 @@ fn a_bend_moves_the_point_keeps_the_length_and_carries_the_children() {
     // A reachable target: the point turned 15° about the base, across the branch.
     let chord = at - base;
     let axis = chord.cross(Vec3::Y).normalize();
-    let to = base + Quat::from_axis_angle(axis, 15f32.to_radians()) * chord;
+    let to = base + sylva_core::math::quat_axis_angle(axis, 15f32.to_radians()) * chord;
     let g = generate(&with_edits(vec![Edit::Bend(Bend { at, to })])).unwrap();
     assert!(g.edits[0].resolved);
     assert_eq!(g.skeleton.stems.len(), sk.stems.len());

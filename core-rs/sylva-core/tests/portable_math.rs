@@ -1,11 +1,11 @@
 //! Standing rule 5 as a test: outside test modules, the core never calls the platform's float
 //! functions (`x.sin()`, `x.powf(y)`, ...), which differ between glibc and wasm in the last bit.
-//! Everything transcendental goes through `sylva_core::math` (libm), so buffers stay
-//! byte-identical on every target.
+//! Everything transcendental goes through `sylva_core::math` (libm), glam's rotations included,
+//! so buffers stay byte-identical on every target.
 
 use std::path::Path;
 
-const FORBIDDEN: [&str; 20] = [
+const FORBIDDEN: [&str; 27] = [
     ".powf(",
     ".powi(",
     ".sin(",
@@ -26,6 +26,14 @@ const FORBIDDEN: [&str; 20] = [
     ".hypot(",
     ".cbrt(",
     ".sin_cos(",
+    // glam's rotations take their sines from the platform (glam is built without libm).
+    "from_rotation_x(",
+    "from_rotation_y(",
+    "from_rotation_z(",
+    "from_axis_angle(",
+    "from_scaled_axis(",
+    ".slerp(",
+    "from_euler(",
 ];
 
 fn visit(dir: &Path, hits: &mut Vec<String>) {
@@ -102,27 +110,44 @@ fn plain_max_min_and_round_give_the_std_values() {
     }
 }
 
-#[test]
-fn hardware_square_roots_give_glams_values() {
-    // `HwSqrt` and `normalize_or_hw` redo glam's length and normalisation with the square-root
-    // instruction: bit for bit glam's results (which go through libm's software square root).
+/// Rotations of `sylva_core::math` at 20,000 pseudo-random angles, axes and blends: a hash of
+/// their bits.
+fn rotations_hash() -> u64 {
     use glam::{Quat, Vec3};
-    use sylva_core::math::{normalize_or_hw, HwSqrt};
+    use sylva_core::math;
     let mut x = 0x9e37_79b9u32;
     let mut next = || {
         x ^= x << 13;
         x ^= x >> 17;
         x ^= x << 5;
-        (x as f32 / u32::MAX as f32 - 0.5) * 10f32.powi((x % 9) as i32 - 4)
+        (x as f32 / u32::MAX as f32 - 0.5) * 10f32.powi((x % 5) as i32 - 2)
     };
-    let bits = |v: Vec3| v.to_array().map(f32::to_bits);
-    for _ in 0..50_000 {
-        let v = Vec3::new(next(), next(), next());
-        assert_eq!(v.length_hw().to_bits(), v.length().to_bits(), "{v}");
-        assert_eq!(bits(v.normalize_hw()), bits(v.normalize()), "{v}");
-        assert_eq!(bits(normalize_or_hw(v, Vec3::Y)), bits(v.normalize_or(Vec3::Y)), "{v}");
-        let q = Quat::from_xyzw(next(), next(), next(), next());
-        assert_eq!(q.normalize_hw().to_array().map(f32::to_bits), q.normalize().to_array().map(f32::to_bits));
+    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    let mut eat = |q: Quat| {
+        for v in q.to_array() {
+            h = (h ^ u64::from(v.to_bits())).wrapping_mul(0x0100_0000_01b3);
+        }
+    };
+    for _ in 0..20_000 {
+        let a = next();
+        let axis = Vec3::new(next(), next(), next()).normalize_or(Vec3::X);
+        let (rx, ry, ra) = (math::quat_rotation_x(a), math::quat_rotation_y(a), math::quat_axis_angle(axis, a));
+        let t = next().abs().fract();
+        let (from, to) = (Quat::IDENTITY, (ra * rx).normalize());
+        let (s1, s2) = (math::slerp(from, to, t), math::slerp(rx, -ry, t));
+        for q in [rx, ry, ra, s1, s2] {
+            eat(q);
+        }
     }
-    assert_eq!(normalize_or_hw(Vec3::ZERO, Vec3::Y), Vec3::Y);
+    h
+}
+
+#[test]
+fn rotations_keep_the_values_glam_gave_with_libm() {
+    // glam is built without its `libm` feature (its square roots and roundings are then the
+    // instructions, in wasm too), so its rotations would take their sines from the platform.
+    // `math`'s rotations are glam's formulas with libm's sines: this hash pins them to the
+    // values glam gave when it was built with libm (measured then, when each of them was also
+    // compared with glam's own bit for bit).
+    assert_eq!(rotations_hash(), 0xf521_3c3b_5564_1de0);
 }

@@ -12,7 +12,7 @@
 
 use super::stems::{carry_children, Children};
 use crate::error::SylvaError;
-use crate::math::pow;
+use crate::math::{self, pow};
 use crate::params::edits::bad;
 use crate::skeleton::{Points, Skeleton, Stem};
 use glam::{Quat, Vec3};
@@ -51,12 +51,12 @@ pub fn bend(skeleton: &mut Skeleton, i: usize, a: f32, to: Vec3, index: usize) -
     let segs = old.points.len() - 1;
     let mut stem = old.clone();
     stem.points = bent(&old, q, &|s| weight(s, power));
-    let first = Quat::IDENTITY.slerp(q, weight(0.5 / segs as f32, power));
+    let first = math::slerp(Quat::IDENTITY, q, weight(0.5 / segs as f32, power));
     stem.base_normal = (first * old.base_normal).normalize_or(old.base_normal);
     skeleton.stems[i] = stem;
     // Children ride along.
     carry_children(skeleton, &Children::of_skeleton(skeleton), i, old.length, &|s| {
-        Quat::IDENTITY.slerp(q, weight(s, power))
+        math::slerp(Quat::IDENTITY, q, weight(s, power))
     });
     Ok(())
 }
@@ -69,7 +69,7 @@ fn bent(old: &Stem, q: Quat, weight: &dyn Fn(f32) -> f32) -> Points {
     out.push(p);
     for k in 0..segs {
         let w = weight((k as f32 + 0.5) / segs as f32);
-        p += Quat::IDENTITY.slerp(q, w) * (old.points[k + 1] - old.points[k]);
+        p += math::slerp(Quat::IDENTITY, q, w) * (old.points[k + 1] - old.points[k]);
         out.push(p);
     }
     out

@@ -94,7 +94,7 @@ mod tests {
     #[test]
     fn decompose_recovers_the_matrix() {
         // Rotation of 0.7 rad about a tilted axis, scales (0.3, 0.5, 0.5), translation.
-        let q = Quat::from_axis_angle(Vec3::new(1.0, 2.0, 0.5).normalize(), 0.7);
+        let q = crate::math::quat_axis_angle(Vec3::new(1.0, 2.0, 0.5).normalize(), 0.7);
         let m = glam::Mat4::from_scale_rotation_translation(Vec3::new(0.3, 0.5, 0.5), q, Vec3::new(1.0, 2.0, 3.0));
         let (t, r, s) = decompose(&m.to_cols_array());
         let back = glam::Mat4::from_scale_rotation_translation(Vec3::from(s), Quat::from_array(r), Vec3::from(t));
@@ -123,7 +123,7 @@ mod tests {
         for i in 0..20_000 {
             let mut r = || rng.next_f32() * 2.0 - 1.0;
             let axis = Vec3::new(r(), r(), r()).normalize_or(Vec3::Y);
-            let q = Quat::from_axis_angle(axis, r() * 3.2);
+            let q = crate::math::quat_axis_angle(axis, r() * 3.2);
             let s = Vec3::new(if i % 3 == 0 { -0.3 } else { 0.3 } + r() * 0.1, 0.5 + r() * 0.2, 0.4);
             let m = glam::Mat4::from_scale_rotation_translation(s, q, Vec3::new(r(), r(), r())).to_cols_array();
             assert_eq!(decompose_rotation(&m).map(f32::to_bits), glam_rotation(&m).map(f32::to_bits), "{m:?}");

@@ -8,7 +8,7 @@
 //! leaf's arithmetic is the same operations in the same order as one at a time, so the bytes are
 //! the same.
 
-use crate::math::{self, normalize_or_hw};
+use crate::math;
 use glam::Vec3;
 
 /// Leaves per batch.
@@ -55,7 +55,7 @@ pub(super) fn twig_dirs(frames: &[(Vec3, Vec3, Vec3)], per_site: usize, dirs: &m
     for (f, d) in frames.iter().zip(dirs.chunks_exact_mut(3)) {
         let (dir, side) = (f.1, f.2);
         // glam's `normalize_or_zero` with the hardware square root: the same value.
-        let axis = normalize_or_hw(dir.cross(side), Vec3::ZERO);
+        let axis = dir.cross(side).normalize_or(Vec3::ZERO);
         d.copy_from_slice(&[dir, rotate_sc(dir, axis, sc), rotate_sc(dir, axis, sc_neg)]);
     }
 }

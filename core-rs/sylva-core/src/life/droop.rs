@@ -13,9 +13,9 @@
 
 use crate::edits::bend::resampled;
 use crate::edits::stems::{carry_children, Children};
-use crate::math::rad;
+use crate::math::{self, rad};
 use crate::skeleton::{Points, Skeleton, StemKind};
-use glam::{Quat, Vec3};
+use glam::Vec3;
 
 /// Largest sag of a branch's tip (degrees).
 pub const MAX_DROOP: f32 = 60.0;
@@ -73,7 +73,7 @@ fn sag_branch(skeleton: &mut Skeleton, children: &Children, i: usize, sag: f32) 
     // Turning about `up × dir` by a positive angle takes `dir` downward.
     let axis = across.normalize();
     let segs = old.points.len() - 1;
-    let rotation = |s: f32| Quat::from_axis_angle(axis, turn(s, sag));
+    let rotation = |s: f32| math::quat_axis_angle(axis, turn(s, sag));
     let mut points = Points::with_capacity(segs + 1);
     let mut p = old.points[0];
     points.push(p);

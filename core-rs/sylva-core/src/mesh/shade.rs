@@ -14,7 +14,6 @@
 use super::holes::Hole;
 use super::TreeMesh;
 use crate::crown_shade::CrownLight;
-use crate::math::HwSqrt;
 use glam::Vec3;
 
 /// Light left at the bottom of a cavity.
@@ -29,7 +28,7 @@ pub fn cavity_light(hole: &Hole, stem_radius: f32, p: Vec3) -> f32 {
     if below <= 0.0 {
         return 1.0;
     }
-    let lateral = (rel + hole.normal * below).length_hw();
+    let lateral = (rel + hole.normal * below).length();
     if lateral > 1.6 * hole.radius {
         return 1.0;
     }

@@ -27,7 +27,7 @@
 
 use super::stem::{sides_for, Base, StemMesh, StemWind};
 use super::{MeshBuilder, WIND_STRIDE};
-use crate::math::{acos, cos, rad, sin, unit_or, HwSqrt, TAU};
+use crate::math::{acos, cos, rad, sin, unit_or, TAU};
 use crate::params::{GrowthMode, MeshParams, TwigDetail};
 use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
@@ -71,7 +71,7 @@ impl Span {
         let (mid, _) = stem.sample(0.5);
         let p1 = 2.0 * mid - 0.5 * (p0 + p2);
         let (r0, r2) = (stem.radius_at(0.0), stem.radius_at(1.0).max(0.0));
-        let r1 = middle_radius((p1 - p0).length_hw(), (p2 - p1).length_hw(), r0, r2);
+        let r1 = middle_radius((p1 - p0).length(), (p2 - p1).length(), r0, r2);
         Span { p: [p0, p1, p2], r: [r0, r1, r2] }
     }
 
@@ -128,13 +128,13 @@ pub fn mask(skeleton: &Skeleton) -> Vec<bool> {
 fn faithful(stem: &Stem) -> bool {
     let span = Span::fit(stem);
     let (_, _, theta) = span.legs();
-    let chord = (span.p[2] - span.p[0]).length_hw();
-    let (l0, l1) = ((span.p[1] - span.p[0]).length_hw(), (span.p[2] - span.p[1]).length_hw());
+    let chord = (span.p[2] - span.p[0]).length();
+    let (l0, l1) = ((span.p[1] - span.p[0]).length(), (span.p[2] - span.p[1]).length());
     let tol = 0.5 * stem.radius_at(0.0);
     theta <= rad(90.0)
         && l0 >= 0.1 * chord
         && l1 >= 0.1 * chord
-        && [0.25f32, 0.75].iter().all(|&t| (stem.point(t) - span.point(t)).length_hw() <= tol)
+        && [0.25f32, 0.75].iter().all(|&t| (stem.point(t) - span.point(t)).length() <= tol)
 }
 
 /// Ring parameters (Bezier `u`, 0..1) of a twig appended to `out`; returns its number of sides.
@@ -173,7 +173,7 @@ pub(crate) fn sweep(
     let b0 = d0.cross(n0);
     let axis = d0.cross(d1);
     let (ns, bs) = if axis.length_squared() > 1e-12 {
-        let a = axis.normalize_hw();
+        let a = axis.normalize();
         let h = 0.5 * theta;
         ([n0, turn(n0, a, h), turn(n0, a, theta)], [b0, turn(b0, a, h), turn(b0, a, theta)])
     } else {
@@ -210,7 +210,7 @@ pub(crate) fn sweep(
             (nn, bb, dn, db, rho) = (nn * s, bb * s, dn * s, db * s, floor);
         }
         if let Some((pc, pr)) = prev {
-            v += (c - pc).length_hw() / (TAU * (0.5 * (rho + pr)).max(0.25 * span.r[0]));
+            v += (c - pc).length() / (TAU * (0.5 * (rho + pr)).max(0.25 * span.r[0]));
         }
         let block = k * stride;
         let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
@@ -239,7 +239,7 @@ pub(crate) fn sweep(
     }
     // Tip: a short cone to an apex at the curve's end (a little beyond it if the tip is blunt).
     let apex_pos = span.p[2] + d1 * (0.5 * span.r[2]).max(0.05 * last_rho);
-    let v_apex = v + (apex_pos - last_c).length_hw() / (TAU * last_rho.max(1e-6));
+    let v_apex = v + (apex_pos - last_c).length() / (TAU * last_rho.max(1e-6));
     let apex_slot = rings * stride;
     pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
     nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&d1.to_array());

@@ -21,7 +21,7 @@ use trunk::{add_roots, guide_curve};
 
 use crate::edits::crown::DrawnCrown;
 use crate::error::SylvaError;
-use crate::math::{pow, rad, unit_or, HwSqrt};
+use crate::math::{self, pow, rad, unit_or};
 use crate::params::{Crown, CrownShape, GrowthMode, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
@@ -360,8 +360,7 @@ impl Builder<'_> {
             // Parent frame at the attachment point: its +Y along `dir`, +X transported from the base.
             let x = unit_or(stem.base_normal - dir * stem.base_normal.dot(dir), || dir.any_orthonormal_vector());
             let parent_frame = Quat::from_mat3(&glam::Mat3::from_cols(x, dir, x.cross(dir)));
-            let frame =
-                (parent_frame * Quat::from_rotation_y(rad(rot)) * Quat::from_rotation_x(rad(down))).normalize_hw();
+            let frame = (parent_frame * math::quat_rotation_y(rad(rot)) * math::quat_rotation_x(rad(down))).normalize();
             self.grow(StemStart {
                 level: child,
                 parent: Some(index),

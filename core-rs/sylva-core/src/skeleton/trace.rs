@@ -6,7 +6,7 @@
 //! and split correction.
 
 use super::StemStart;
-use crate::math::{acos, rad, HwSqrt, PI, TAU};
+use crate::math::{self, acos, rad, PI, TAU};
 use crate::params::{LevelParams, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
@@ -72,7 +72,7 @@ impl Tracer<'_> {
     /// |CurveV|.
     fn helix(&mut self, i: usize) {
         let turn = TAU * i as f32 / self.segs as f32;
-        self.frame = self.s.frame * Quat::from_rotation_y(turn) * Quat::from_rotation_x(rad(-self.lp.curve_v));
+        self.frame = self.s.frame * math::quat_rotation_y(turn) * math::quat_rotation_x(rad(-self.lp.curve_v));
     }
 
     /// Bends segment `i` by Curve (or Curve then CurveBack over the two halves) plus a random
@@ -87,7 +87,7 @@ impl Tracer<'_> {
             2.0 * lp.curve_back / segs as f32
         };
         let bend = bend + rng.var(lp.curve_v) / segs as f32 + self.correction;
-        self.frame = (self.frame * Quat::from_rotation_x(rad(bend))).normalize_hw();
+        self.frame = (self.frame * math::quat_rotation_x(rad(bend))).normalize();
         if self.s.level >= 2 && self.p.attraction_up != 0.0 {
             self.frame = attract_up(self.frame, self.p.attraction_up, segs);
         }
@@ -131,7 +131,7 @@ impl Tracer<'_> {
             // W&P spread clones about the tree's vertical axis (not the stem's own axis, which
             // would leave a clone on top of its original when the angle is 0).
             let clone_frame =
-                (Quat::from_rotation_y(rad(spread)) * self.frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
+                (math::quat_rotation_y(rad(spread)) * self.frame * math::quat_rotation_x(rad(angle))).normalize();
             clones.push(StemStart {
                 level: self.s.level,
                 parent: None,
@@ -146,7 +146,7 @@ impl Tracer<'_> {
                 rng: rng.split(),
             });
         }
-        self.frame = (self.frame * Quat::from_rotation_x(rad(angle))).normalize_hw();
+        self.frame = (self.frame * math::quat_rotation_x(rad(angle))).normalize();
         self.correction -= angle / remaining;
     }
 }
@@ -172,5 +172,5 @@ fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
         return frame;
     }
     let turn = (attraction * declination / segs as f32).clamp(-0.9 * (PI - declination), 0.9 * declination);
-    (Quat::from_axis_angle(axis.normalize_hw(), turn) * frame).normalize_hw()
+    (math::quat_axis_angle(axis.normalize(), turn) * frame).normalize()
 }

@@ -4,7 +4,7 @@
 //! ([`weld`]: the parent gets extra rings across each footprint, the child starts at its junction
 //! ring).
 
-use crate::math::{normalize_or_hw, rad, HwSqrt};
+use crate::math::rad;
 use crate::mesh::stem::drop_close;
 use crate::mesh::weld;
 use crate::skeleton::Stem;
@@ -27,7 +27,7 @@ pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
     let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
-    let dir = |i: usize| normalize_or_hw(pts[i + 1] - pts[i], Vec3::Y);
+    let dir = |i: usize| (pts[i + 1] - pts[i]).normalize_or(Vec3::Y);
     let per_ring = rad(12.0) / (stem.radius / 0.02).sqrt().clamp(0.25, 1.0);
     let mut turn_in = 0.0f32;
     let mut d = dir(0);
@@ -38,7 +38,7 @@ pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
         // Turn angle from the chord between unit directions, c = 2 sin(θ/2): θ ≈ c (1 + c²/24),
         // within 0.5% up to 90°, which is all a ring count needs (and no acos per joint).
         let turn_out = next.map_or(0.0, |n| {
-            let c = (n - d).length_hw();
+            let c = (n - d).length();
             c * (1.0 + c * c / 24.0)
         });
         let k = ((quality * turn_in.max(turn_out) / per_ring).ceil() as usize).clamp(1, 8);

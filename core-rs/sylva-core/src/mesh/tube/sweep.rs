@@ -7,7 +7,7 @@
 //! wind constants the sweep records, and the index pass writing each stem's quads (skipping
 //! claimed ones) and fans.
 
-use crate::math::{cos, sin, unit_or, HwSqrt, TAU};
+use crate::math::{cos, sin, unit_or, TAU};
 use crate::mesh::stem::{Base, Frame, StemMesh, StemWind};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{cut_face, MeshBuilder, VertexBlock, WIND_STRIDE};
@@ -206,7 +206,7 @@ fn sweep_with(
     let (tip, tip_tan) = seg.1.eval(1.0);
     let end_r = stem.radius_at(1.0);
     let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
-    let v_apex = v + (apex_pos - last_center).length_hw() / (TAU * last_radius.max(1e-6));
+    let v_apex = v + (apex_pos - last_center).length() / (TAU * last_radius.max(1e-6));
     let apex_slot = rings * stride;
     block.write(apex_slot, apex_pos, tip_tan, [0.5, v_apex]);
     block.wind[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));

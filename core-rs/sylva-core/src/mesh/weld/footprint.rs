@@ -5,7 +5,7 @@
 //! ([`Meeting::walk`]), else a search of every quad of a window around the estimate.
 
 use super::{asin, REACH};
-use crate::math::{atan2, unit_or, HwSqrt, TAU};
+use crate::math::{atan2, unit_or, TAU};
 use crate::mesh::junction::Join;
 use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_STIFFNESS, WIND_STRIDE};
@@ -192,7 +192,7 @@ impl<'a> Meeting<'a> {
         let phi = atan2(w.dot(f.tangent.cross(f.normal)), w.dot(f.normal));
         let r_mid = j.parent_stem.radius_at(pts[(ra + rb) / 2]).max(1e-6);
         let rc = j.child_stem.radius_at(jn.t_start).max(1e-6);
-        let beta = asin((jn.foot / r_mid).min(0.9)).max(atan2(jn.foot + 0.25 * rc, w.length_hw()));
+        let beta = asin((jn.foot / r_mid).min(0.9)).max(atan2(jn.foot + 0.25 * rc, w.length()));
         let sides = pm.sides as i32;
         let dcol = TAU / sides as f32;
         let ja = ((phi - beta) / dcol).floor() as i32;

@@ -13,7 +13,7 @@
 
 use super::footprint::{self, claim_index, free, Cell, FootPoint, Meeting, Rect, Scratch};
 use super::zip::zip_hole;
-use crate::math::{unit_or, HwSqrt, TAU};
+use crate::math::{unit_or, TAU};
 use crate::mesh::junction::{well_wound, Join};
 use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_STRIDE};
@@ -85,7 +85,7 @@ impl Collar {
             let FootPoint { pos: p0, normal: n0, .. } = sc.foot[m];
             let p3 = out.vertex_at(j.child.first + m as u32).0;
             let chord = p3 - p0;
-            let len = chord.length_hw();
+            let len = chord.length();
             let t0 = unit_or(chord - n0 * chord.dot(n0), || jf.tangent);
             let (b1, b2) = (p0 + t0 * (0.4 * len), p3 - jf.tangent * (0.4 * len));
             for li in 0..loops {
