@@ -105,12 +105,12 @@ async function brightness(
   );
 }
 
-/** Allowed |level / LOD0 − 1| per level (index 1..3: LOD1, LOD2, impostor). */
+/** Allowed |level / LOD0 − 1| per level (index 1..3: LOD1, LOD2, impostor): 5% each. */
 const TOLERANCE = [
   0, 0.05,
-  // Target 5% (issue #33); reached 0.934 at the middle distance (0.988 up close): the cards'
-  // up-leaning normals, one per card, shade flatter than LOD0's leaves at that size.
-  0.07,
+  // 0.971 at the middle distance, 1.028 up close with the cloud's tint gain (lodObjects.ts
+  // CLOUD_TINT_GAIN); 0.934 / 0.988 without it.
+  0.05,
   // 1.012 at the middle distance, 0.960 up close since the impostor narrows its coverage's ramp
   // to a pixel when magnified (before: 1.098 up close, the sky through a wide rim).
   0.05,
@@ -118,7 +118,7 @@ const TOLERANCE = [
 
 test.use({ viewport: { width: 900, height: 560 } });
 
-test('every level keeps LOD0 brightness (LOD1 and the impostor within 5%, LOD2 7%), at a middle distance and up close', async ({
+test('every level keeps LOD0 brightness within 5%, at a middle distance and up close', async ({
   page,
 }) => {
   test.setTimeout(300_000);
