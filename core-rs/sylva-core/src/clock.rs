@@ -5,6 +5,12 @@
 pub trait Clock {
     /// Milliseconds since an arbitrary origin.
     fn now_ms(&self) -> f64;
+
+    /// This clock, if it may be read from other threads too (stages that run side by side time
+    /// themselves with it); `None`: the stages run one after the other.
+    fn shared(&self) -> Option<&(dyn Clock + Sync)> {
+        None
+    }
 }
 
 /// No clock: every stage takes 0 ms. The default on wasm when no clock is passed.
@@ -12,6 +18,9 @@ pub struct NoClock;
 impl Clock for NoClock {
     fn now_ms(&self) -> f64 {
         0.0
+    }
+    fn shared(&self) -> Option<&(dyn Clock + Sync)> {
+        Some(self)
     }
 }
 
@@ -30,6 +39,9 @@ impl Default for StdClock {
 impl Clock for StdClock {
     fn now_ms(&self) -> f64 {
         self.0.elapsed().as_secs_f64() * 1000.0
+    }
+    fn shared(&self) -> Option<&(dyn Clock + Sync)> {
+        Some(self)
     }
 }
 

@@ -47,7 +47,7 @@ mod edit_cache;
 mod stages;
 use edit_cache::EditCache;
 pub use edit_cache::Resume;
-use stages::{full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
+use stages::{bark_and_placements, full_bark, preview_bark, preview_leaf_params, Fresh, LeafMesh};
 
 /// Mesh Quality factor of a preview bark (never below the parameter's minimum).
 pub const PREVIEW_QUALITY: f32 = 0.5;
@@ -119,6 +119,16 @@ pub struct StageTimes {
     pub mesh: f64,
     /// Leaf placements plus the leaf (the `foliage` figure of [`Stats`]).
     pub foliage: f64,
+    /// Of `mesh` and `foliage`, the milliseconds the bark and the leaf placement ran side by
+    /// side (natively, when both ran); the update took `skeleton + mesh + foliage - overlap`.
+    pub overlap: f64,
+}
+
+impl StageTimes {
+    /// Milliseconds of the whole update (the stages' sum less their overlap).
+    pub fn total(&self) -> f64 {
+        self.skeleton + self.mesh + self.foliage - self.overlap
+    }
 }
 
 /// The current tree of a session.
@@ -175,7 +185,7 @@ impl Current {
         );
         let t = self.times;
         meta.stage_ms = [("skeleton", t.skeleton), ("mesh", t.mesh), ("foliage", t.foliage)].into_iter().collect();
-        meta.total_ms = t.skeleton + t.mesh + t.foliage;
+        meta.total_ms = t.total();
         meta.preview = Some(self.is_preview());
         meta.bark_type = self.params.mesh.bark_type as u8;
         meta.from = Some(self.from);
@@ -281,34 +291,26 @@ impl Session {
         // The bark is swept again when its inputs changed, or when the bark shown is a preview
         // and a full answer is wanted.
         let bark_stale = from <= Stage::Mesh || prev.is_some_and(|c| c.bark.preview && !want_preview);
-        let bark = match (bark_stale, want_preview) {
-            (false, _) => None,
-            (true, true) => Some(preview_bark(&skel.skeleton, &p.mesh)?),
-            (true, false) => Some(full_bark(&skel.skeleton, &p.mesh)?),
-        };
-        let t2 = clock.now_ms();
-        times.mesh = t2 - t1;
-        if bark.as_ref().is_some_and(|b| !b.preview) {
-            self.last_full_mesh_ms = Some(times.mesh);
-        }
-
+        let sweep =
+            || if want_preview { preview_bark(&skel.skeleton, &p.mesh) } else { full_bark(&skel.skeleton, &p.mesh) };
         // Placed again when their inputs changed, or when their tints were lit by the previous
-        // leaves (a drag) and a full answer is wanted.
+        // leaves (a drag) and a full answer is wanted. A drag's placement is a preview: every
+        // other leaf site (or fewer, for a dense crown), lit by the previous field.
         let over = |last: Option<f64>| quality.over_half_budget(last);
         let by_previous = over(self.last_place_ms).then(|| prev.and_then(|c| c.light.as_ref())).flatten();
         let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.leaves_preview && by_previous.is_none());
-        let placements = if place_stale {
-            let t = clock.now_ms();
-            // A drag's placement is a preview: every other leaf site (or fewer, for a dense
-            // crown), lit by the previous field.
-            let placed = foliage::place_lit_by(&skel.skeleton, &p.foliage, by_previous, by_previous.is_some())?;
-            if by_previous.is_none() {
-                self.last_place_ms = Some(clock.now_ms() - t);
-            }
-            Some(placed)
-        } else {
-            None
-        };
+        let place = || foliage::place_lit_by(&skel.skeleton, &p.foliage, by_previous, by_previous.is_some());
+        let sides = bark_and_placements(clock, bark_stale.then_some(sweep), place_stale.then_some(place))?;
+        let t2 = clock.now_ms();
+        times.mesh = sides.mesh_ms;
+        times.overlap = sides.overlap_ms;
+        let (bark, placements) = (sides.bark, sides.placements);
+        if bark.as_ref().is_some_and(|b| !b.preview) {
+            self.last_full_mesh_ms = Some(times.mesh);
+        }
+        if placements.is_some() && by_previous.is_none() {
+            self.last_place_ms = Some(sides.place_ms);
+        }
         let leaves_preview = match placements {
             Some(_) => by_previous.is_some(),
             None => prev.is_some_and(|c| c.leaves_preview),
@@ -343,7 +345,7 @@ impl Session {
             Some(shade)
         };
         let shade_stale = !b.preview && shade.is_none() && (stale || (bark.is_none() && placements.is_some()));
-        times.foliage = clock.now_ms() - t2;
+        times.foliage = sides.place_ms + (clock.now_ms() - t2);
 
         let changes = match prev {
             None => Changes { skeleton: true, bark: true, placements: true, leaf_mesh: true, leaf: true, shade: true },
@@ -439,7 +441,7 @@ impl Session {
             holes: c.bark.holes.len(),
             welds: c.bark.welds,
             stage_ms: vec![("skeleton", t.skeleton), ("mesh", t.mesh), ("foliage", t.foliage), ("hash", hash_ms)],
-            total_ms: t.skeleton + t.mesh + t.foliage + hash_ms,
+            total_ms: t.total() + hash_ms,
         };
         Some(Generated {
             mesh: c.bark.mesh,

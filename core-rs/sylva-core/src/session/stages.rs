@@ -1,8 +1,10 @@
 //! The stages of a [`super::Session`] update: the full and the preview bark, the
-//! preview leaf's parameters, and [`Fresh`], what one update ran, assembled into the next
+//! preview leaf's parameters, the bark and the leaf placement side by side
+//! ([`bark_and_placements`]), and [`Fresh`], what one update ran, assembled into the next
 //! [`Current`].
 
 use super::{Bark, Changes, Current, SkeletonOut, StageTimes, PREVIEW_QUALITY};
+use crate::clock::Clock;
 use crate::crown_shade::CrownLight;
 use crate::error::SylvaError;
 use crate::foliage::Foliage;
@@ -99,4 +101,62 @@ pub(super) fn preview_bark(skeleton: &Skeleton, p: &MeshParams) -> Result<Bark, 
     let mut bark = full_bark(skeleton, &q)?;
     bark.preview = true;
     Ok(bark)
+}
+
+/// Leaf placements and the crown's light field ([`crate::foliage::place_lit_by`]).
+pub(super) type Placements = (Foliage, Option<CrownLight>);
+
+/// What [`bark_and_placements`] gives: each result with its milliseconds, and how long the two
+/// ran side by side.
+pub(super) struct Sides {
+    pub(super) bark: Option<Bark>,
+    pub(super) mesh_ms: f64,
+    pub(super) placements: Option<Placements>,
+    pub(super) place_ms: f64,
+    /// Of `mesh_ms` and `place_ms`, the milliseconds they overlapped (0 when run in order).
+    pub(super) overlap_ms: f64,
+}
+
+/// The bark (`bark`) and the leaf placements (`place`), each left out when `None`. Both read
+/// only the skeleton and their own parameters, and each draws from its own random stream, so
+/// they run side by side when both are wanted, natively on a second thread
+/// ([`crate::par::join`]) if the clock can be read from it; in order otherwise (wasm, one
+/// thread, `sylva batch`). The same results either way; on two failures, the bark's error.
+pub(super) fn bark_and_placements(
+    clock: &dyn Clock,
+    bark: Option<impl FnOnce() -> Result<Bark, SylvaError> + Send>,
+    place: Option<impl FnOnce() -> Result<Placements, SylvaError> + Send>,
+) -> Result<Sides, SylvaError> {
+    let threads = if bark.is_some() && place.is_some() { crate::par::threads() } else { 1 };
+    let (bark, place) = match clock.shared().filter(|_| threads > 1) {
+        Some(c) => {
+            let t0 = c.now_ms();
+            let (b, p) = crate::par::join(threads, || timed(c, bark), || timed(c, place));
+            let wall = c.now_ms() - t0;
+            let overlap = (b.1 + p.1 - wall).max(0.0);
+            return Ok(Sides {
+                bark: b.0.transpose()?,
+                mesh_ms: b.1,
+                placements: p.0.transpose()?,
+                place_ms: p.1,
+                overlap_ms: overlap,
+            });
+        }
+        None => (timed(clock, bark), timed(clock, place)),
+    };
+    Ok(Sides {
+        bark: bark.0.transpose()?,
+        mesh_ms: bark.1,
+        placements: place.0.transpose()?,
+        place_ms: place.1,
+        overlap_ms: 0.0,
+    })
+}
+
+/// `f()` if given, and its milliseconds (0 when not).
+fn timed<R>(clock: &(impl Clock + ?Sized), f: Option<impl FnOnce() -> R>) -> (Option<R>, f64) {
+    let Some(f) = f else { return (None, 0.0) };
+    let t = clock.now_ms();
+    let r = f();
+    (Some(r), clock.now_ms() - t)
 }
