@@ -128,29 +128,21 @@ pub(super) fn bark_and_placements(
     place: Option<impl FnOnce() -> Result<Placements, SylvaError> + Send>,
 ) -> Result<Sides, SylvaError> {
     let threads = if bark.is_some() && place.is_some() { crate::par::threads() } else { 1 };
-    let (bark, place) = match clock.shared().filter(|_| threads > 1) {
+    let (b, p, overlap_ms) = match clock.shared().filter(|_| threads > 1) {
         Some(c) => {
             let t0 = c.now_ms();
             let (b, p) = crate::par::join(threads, || timed(c, bark), || timed(c, place));
-            let wall = c.now_ms() - t0;
-            let overlap = (b.1 + p.1 - wall).max(0.0);
-            return Ok(Sides {
-                bark: b.0.transpose()?,
-                mesh_ms: b.1,
-                placements: p.0.transpose()?,
-                place_ms: p.1,
-                overlap_ms: overlap,
-            });
+            let overlap = (b.1 + p.1 - (c.now_ms() - t0)).max(0.0);
+            (b, p, overlap)
         }
-        None => (timed(clock, bark), timed(clock, place)),
+        None => {
+            let b = timed(clock, bark);
+            // In order, a failed bark places no leaves.
+            let p = if matches!(b.0, Some(Err(_))) { (None, 0.0) } else { timed(clock, place) };
+            (b, p, 0.0)
+        }
     };
-    Ok(Sides {
-        bark: bark.0.transpose()?,
-        mesh_ms: bark.1,
-        placements: place.0.transpose()?,
-        place_ms: place.1,
-        overlap_ms: 0.0,
-    })
+    Ok(Sides { bark: b.0.transpose()?, mesh_ms: b.1, placements: p.0.transpose()?, place_ms: p.1, overlap_ms })
 }
 
 /// `f()` if given, and its milliseconds (0 when not).
