@@ -5,12 +5,16 @@
 //   a worker thread per run (its memory is freed with the worker). The compiled module is shared,
 //   so V8's compilation is not part of the figure. Reported in µs per bark vertex, with the
 //   milliseconds per stage.
+// - `wasm_threads` in each `cold` record: the same in the threaded module (scripts/wasm-threads.sh)
+//   with one helper worker started first, as a cross-origin isolated page runs it: a fresh
+//   instance per run, and `repeated`, the same tree generated again in that instance.
 // - `batch`: `sylva batch` of 100 default trees with seeds 1 to 100 on every core (generation and
 //   hash, no files), in trees per second.
 // This file is also the worker's entry point.
 import { execFileSync } from 'node:child_process';
 import { Worker, isMainThread, parentPort, workerData } from 'node:worker_threads';
 import { median } from './bench-stats.mjs';
+import { runThreaded, threadedModule } from './wasm-threads-node.mjs';
 
 if (!isMainThread && workerData?.coldTree) {
   const w = await import(workerData.glue);
@@ -50,6 +54,7 @@ function summary(metas, vertices) {
 
 /** The `cold` record of each case (`{ name, values, args }`): native and wasm, `runs` each. */
 export async function benchCold(sylva, module, glue, cases, runs) {
+  const threaded = threadedModule();
   const out = [];
   for (const c of cases) {
     const native = [];
@@ -60,13 +65,22 @@ export async function benchCold(sylva, module, glue, cases, runs) {
     const wasm = [];
     for (let i = 0; i < runs; i++)
       wasm.push(await coldWasmOnce(module, glue, JSON.stringify(c.values)));
+    const fresh = [];
+    const repeated = [];
+    for (let i = 0; i < runs; i++) {
+      const json = JSON.stringify(c.values);
+      const { metas } = await runThreaded(threaded, { kind: 'generate', jsons: [json, json] });
+      fresh.push(metas[0]);
+      repeated.push(metas[1]);
+    }
     const vertices = wasm[0].vertices;
     out.push({
       preset: c.name,
       vertices,
       native: summary(native, vertices),
       wasm: summary(wasm, vertices),
-      same_hash: native.every((n) => n.hash === wasm[0].hash),
+      wasm_threads: { ...summary(fresh, vertices), repeated: summary(repeated, vertices) },
+      same_hash: [...native, ...fresh, ...repeated].every((n) => n.hash === wasm[0].hash),
     });
   }
   return out;

@@ -213,12 +213,14 @@ if (!asJson) {
   const mv = (x) => (x / 1e6).toFixed(1).padStart(7);
   console.log(
     'Cold path (a whole generation, nothing kept from an earlier tree; medians of 3; µs per bark vertex, ms):\n' +
-      'preset            vertices | native µs/v      ms | wasm µs/v      ms',
+      'preset            vertices | native µs/v      ms | wasm µs/v      ms | 2 threads µs/v      ms  repeated ms',
   );
   for (const c of cold) {
     console.log(
       `${c.preset.padEnd(16)} ${String(c.vertices).padStart(9)} |${c.native.us_per_vertex.toFixed(3).padStart(11)}${c.native.median_ms.toFixed(1).padStart(8)} |` +
-        `${c.wasm.us_per_vertex.toFixed(3).padStart(10)}${c.wasm.median_ms.toFixed(1).padStart(8)}` +
+        `${c.wasm.us_per_vertex.toFixed(3).padStart(10)}${c.wasm.median_ms.toFixed(1).padStart(8)} |` +
+        `${c.wasm_threads.us_per_vertex.toFixed(3).padStart(15)}${c.wasm_threads.median_ms.toFixed(1).padStart(8)}` +
+        `${c.wasm_threads.repeated.median_ms.toFixed(1).padStart(13)}` +
         (c.same_hash ? '' : '  HASH MISMATCH'),
     );
   }

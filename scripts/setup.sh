@@ -56,6 +56,11 @@ if [ ! -f "$OUT/sylva_wasm_bg.wasm" ] || [ "$WASM" -nt "$OUT/sylva_wasm_bg.wasm"
   wasm-bindgen --target web --out-dir "$OUT" "$WASM"
 fi
 
+# 4b. The same module built with threads (atomics, a shared memory; a pinned nightly compiles it),
+#     in packages/sylva-trees/src/wasm-threads: the worker loads it where the page is
+#     cross-origin isolated, and starts a helper worker on its memory.
+bash scripts/wasm-threads.sh packages/sylva-trees/src/wasm-threads
+
 # 5. For tests: the same module with the `debug-hooks` feature (`debug_panic`, for the tests of
 #    the worker's crash recovery) in its own target directory and folder, which only the app's
 #    debug build (`npm run build:debug -w web`, web/dist-debug) loads. cargo is a no-op when
@@ -71,6 +76,8 @@ if [ "$WANT_TEST" = 1 ]; then
     step "wasm-bindgen -> $DEBUG_OUT"
     wasm-bindgen --target web --out-dir "$DEBUG_OUT" "$DEBUG_WASM"
   fi
+  # And the threaded module with them (`debug_panic_on_helper`: a helper thread's panic).
+  bash scripts/wasm-threads.sh packages/sylva-trees/src/wasm-threads-debug debug-hooks
 fi
 
 # 6. For tests: Chromium from the system (Playwright's own browser download is never used).

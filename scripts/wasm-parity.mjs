@@ -1,10 +1,13 @@
 // Standing rule 5: the wasm build (run in Node) must give byte-identical buffers to the native
-// build. Compares the content hash of every preset and a spread of seeds with `sylva generate`.
+// build. Compares the content hash of every preset and a spread of seeds with `sylva generate`,
+// for the single-threaded module and for the threaded one with a helper thread
+// (scripts/wasm-threads-node.mjs), which must also have handed work to its helper.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { nativeCli } from './native-cli.mjs';
+import { runThreaded, threadedModule } from './wasm-threads-node.mjs';
 
 const wasm = await import(
   new URL('../packages/sylva-trees/src/wasm/sylva_wasm.js', import.meta.url)
@@ -130,20 +133,34 @@ for (const [name, extra, list] of editCases) {
   if (extra.shape) args.push('--set', `shape=${extra.shape}`);
   cases.push({ name, values, args });
 }
+const threaded = await runThreaded(threadedModule(), {
+  kind: 'generate',
+  jsons: cases.map((c) => JSON.stringify(c.values)),
+});
 let passed = 0;
 let failed = 0;
-for (const c of cases) {
+for (const [i, c] of cases.entries()) {
   const tree = wasm.generate(JSON.stringify(c.values));
   const w = JSON.parse(tree.meta_json()).hash;
   tree.free();
   const n = native(c.args).hash;
-  if (w === n) {
+  const t = threaded.metas[i].hash;
+  if (w === n && t === n) {
     passed++;
     console.log(`ok   ${c.name}: ${w}`);
   } else {
     failed++;
-    console.log(`FAIL ${c.name}: wasm ${w} != native ${n}`);
+    console.log(`FAIL ${c.name}: wasm ${w}, threaded wasm ${t}, native ${n}`);
   }
 }
-console.log(`${passed} passed, ${failed} failed`);
+// Every case needs the bark and the leaves: each hands its placement to the helper.
+if (threaded.threads !== 2 || threaded.helperJobs < cases.length) {
+  failed++;
+  console.log(
+    `FAIL the threaded module ran on ${threaded.threads} threads, its helper ${threaded.helperJobs} jobs for ${cases.length} trees`,
+  );
+}
+console.log(
+  `${passed} passed, ${failed} failed (threaded: its helper ran ${threaded.helperJobs} jobs)`,
+);
 process.exit(failed ? 1 : 0);

@@ -74,16 +74,35 @@ function debugBuild(): Plugin {
         return `${PACKAGE_SRC}worker/debug.ts`;
       }
       if (source === '../wasm/sylva_wasm.js') return `${debugWasm}sylva_wasm.js`;
+      if (source === '../wasm-threads/sylva_wasm.js') {
+        return `${PACKAGE_SRC}wasm-threads-debug/sylva_wasm.js`;
+      }
       return null;
     },
     transform(code, id) {
       if (!active || !/runtime[\\/]urls\.ts$/.test(id)) return null;
       const wasm = "'../wasm/sylva_wasm_bg.wasm'";
+      const threads = "'../wasm-threads/sylva_wasm_bg.wasm'";
       if (!code.includes(wasm)) this.error(`${id} has no ${wasm}`);
-      return { code: code.replace(wasm, "'../wasm-debug/sylva_wasm_bg.wasm'"), map: null };
+      if (!code.includes(threads)) this.error(`${id} has no ${threads}`);
+      const out = code
+        .replace(wasm, "'../wasm-debug/sylva_wasm_bg.wasm'")
+        .replace(threads, "'../wasm-threads-debug/sylva_wasm_bg.wasm'");
+      return { code: out, map: null };
     },
   };
 }
+
+/**
+ * Cross-origin isolation for the dev server and `vite preview`: with these two headers a page may
+ * share memory with its workers, so the generator worker runs the core built with threads and a
+ * helper worker (docs/hosting.md; a static host without them gets the single-threaded core).
+ * Every resource the app loads is its own, so `require-corp` blocks nothing.
+ */
+const ISOLATION_HEADERS = {
+  'Cross-Origin-Opener-Policy': 'same-origin',
+  'Cross-Origin-Embedder-Policy': 'require-corp',
+};
 
 const page = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
@@ -126,8 +145,8 @@ export default defineConfig({
       },
     },
   },
-  server: { port: 5173 },
-  preview: { port: 4317, host: '127.0.0.1' },
+  server: { port: 5173, headers: ISOLATION_HEADERS },
+  preview: { port: 4317, host: '127.0.0.1', headers: ISOLATION_HEADERS },
   test: {
     include: ['src/**/*.test.ts'],
     environment: 'node',

@@ -2,7 +2,8 @@
  * The `sylva-trees` package: a Vite library build (ES modules, `three` external) of the entries
  * that package.json `exports` names, `index.js` (the API), `core.js`, `url.js`, `viewer.js` and
  * `worker-client.js` (the subpaths `sylva-trees/core` … `sylva-trees/worker`) and `worker.js`
- * (the generator worker, `sylva-trees/worker-script`), next to the core's `sylva_wasm_bg.wasm`.
+ * (the generator worker, `sylva-trees/worker-script`) and `helper.js` (the helper worker of the
+ * threaded core), next to the core's `sylva_wasm_bg.wasm` and `sylva_wasm_threads_bg.wasm`.
  * All of them and their shared chunks sit in `dist/` itself, for the URLs below are written
  * relative to the module that holds them. Vite's library mode would inline the wasm (base64) and the worker (a
  * blob URL) and hide both behind expressions no other bundler can follow; instead the source's
@@ -22,6 +23,9 @@ import { defineConfig } from 'vitest/config';
 const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 const WASM_DIR = here('./src/wasm');
 const WASM_FILE = 'sylva_wasm_bg.wasm';
+/** The core built with threads (worker/threads.ts), from src/wasm-threads. */
+const THREADS_WASM_DIR = here('./src/wasm-threads');
+const THREADS_WASM_FILE = 'sylva_wasm_threads_bg.wasm';
 
 /** Source `new URL(...)` of a packaged file → the file's name in `dist/`. */
 const PACKAGED_URLS: { module: RegExp; source: RegExp; file: string }[] = [
@@ -35,11 +39,26 @@ const PACKAGED_URLS: { module: RegExp; source: RegExp; file: string }[] = [
     source: /new URL\('\.\.\/wasm\/sylva_wasm_bg\.wasm', import\.meta\.url\)/,
     file: `./${WASM_FILE}`,
   },
-  // The glue's own default (unused: the package always passes the URL) must not be inlined.
+  {
+    module: /src[\\/]runtime[\\/]urls\.ts$/,
+    source: /new URL\('\.\.\/wasm-threads\/sylva_wasm_bg\.wasm', import\.meta\.url\)/,
+    file: `./${THREADS_WASM_FILE}`,
+  },
+  {
+    module: /src[\\/]worker[\\/]threads\.ts$/,
+    source: /new URL\('\.\/helper\.ts', import\.meta\.url\)/,
+    file: './helper.js',
+  },
+  // The glues' own defaults (unused: the package always passes the module) must not be inlined.
   {
     module: /src[\\/]wasm[\\/]sylva_wasm\.js$/,
     source: /new URL\('sylva_wasm_bg\.wasm', import\.meta\.url\)/,
     file: `./${WASM_FILE}`,
+  },
+  {
+    module: /src[\\/]wasm-threads[\\/]sylva_wasm\.js$/,
+    source: /new URL\('sylva_wasm_bg\.wasm', import\.meta\.url\)/,
+    file: `./${THREADS_WASM_FILE}`,
   },
 ];
 const MARKER = /__SYLVA_PACKAGED_URL__\("([^"]+)"\)/g;
@@ -68,6 +87,11 @@ function packagedUrls(): Plugin {
         type: 'asset',
         fileName: WASM_FILE,
         source: readFileSync(`${WASM_DIR}/${WASM_FILE}`),
+      });
+      this.emitFile({
+        type: 'asset',
+        fileName: THREADS_WASM_FILE,
+        source: readFileSync(`${THREADS_WASM_DIR}/${WASM_FILE}`),
       });
     },
   };
@@ -113,6 +137,7 @@ export default defineConfig({
         viewer: here('./src/viewer/index.ts'),
         'worker-client': here('./src/worker/index.ts'),
         worker: here('./src/worker/worker.ts'),
+        helper: here('./src/worker/helper.ts'),
       },
       formats: ['es'],
     },

@@ -4,18 +4,30 @@
 //! Jobs must write disjoint outputs and compute nothing across jobs, so what they produce does
 //! not depend on how many threads run them or in which order: the bytes are the same with one
 //! thread as with eight, and the same as in wasm, which runs every job in order on the calling
-//! thread (a plain `wasm32-unknown-unknown` module has no threads).
+//! thread (a plain `wasm32-unknown-unknown` module has no threads). A wasm module built with
+//! atomics uses the helper threads its host started (`par/helpers.rs`); the bytes stay the same.
+
+#[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
+pub mod helpers;
+
+/// Whether this build runs jobs on threads it starts itself (`std::thread`): native builds.
+const SPAWNS: bool = !cfg!(target_arch = "wasm32");
 
 /// The most threads [`threads()`] offers.
 pub const MAX_THREADS: usize = 8;
 
 /// Threads worth using on this machine: its available parallelism (at most [`MAX_THREADS`]);
-/// 1 in wasm.
-/// 1 in wasm, and inside [`serial`].
+/// in wasm, 1 plus the helper threads the host started (none without atomics); 1 inside
+/// [`serial`].
 pub fn threads() -> usize {
-    if cfg!(target_arch = "wasm32") || SERIAL.with(std::cell::Cell::get) {
+    if SERIAL.with(std::cell::Cell::get) {
         return 1;
     }
+    #[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
+    return (1 + helpers::helpers()).min(MAX_THREADS);
+    #[cfg(all(target_arch = "wasm32", not(target_feature = "atomics")))]
+    return 1;
+    #[cfg(not(target_arch = "wasm32"))]
     std::thread::available_parallelism().map_or(1, |n| n.get()).min(MAX_THREADS)
 }
 
@@ -35,12 +47,12 @@ pub fn serial<R>(f: impl FnOnce() -> R) -> R {
 }
 
 /// Runs `work` on every job, on up to `threads` threads: each thread takes the next job of the
-/// list until none is left, so jobs given largest first balance best. One thread (or wasm)
-/// runs them in order on the calling thread. A panicking job panics the caller once all
+/// list until none is left, so jobs given largest first balance best. One thread (or wasm
+/// without helper threads) runs them in order on the calling thread. A panicking job panics the caller once all
 /// threads have stopped.
 pub fn run<J: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) + Sync) {
     let threads = threads.min(jobs.len());
-    if threads <= 1 || cfg!(target_arch = "wasm32") {
+    if threads <= 1 {
         jobs.into_iter().for_each(work);
         return;
     }
@@ -52,6 +64,10 @@ pub fn run<J: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) + Sync) {
             work(job);
         }
     };
+    if !SPAWNS {
+        spread(threads, &drain);
+        return;
+    }
     std::thread::scope(|s| {
         let helpers: Vec<_> = (1..threads).map(|_| s.spawn(drain)).collect();
         drain();
@@ -75,11 +91,26 @@ pub fn ranges(n: usize, parts: usize) -> Vec<std::ops::Range<usize>> {
     (0..parts).map(|p| n * p / parts..n * (p + 1) / parts).filter(|r| !r.is_empty()).collect()
 }
 
-/// `(a(), b())`, run side by side when `threads` > 1 (and not in wasm).
+/// `drain` on `threads` threads at once, through [`join`] (the helpers of a wasm module).
+fn spread(threads: usize, drain: &(impl Fn() + Sync)) {
+    if threads <= 1 {
+        drain();
+    } else {
+        join(2, drain, || spread(threads - 1, drain));
+    }
+}
+
+/// `(a(), b())`, run side by side when `threads` > 1 (in wasm, on a helper thread if one was
+/// started; in order without).
 pub fn join<A: Send, B: Send>(threads: usize, a: impl FnOnce() -> A + Send, b: impl FnOnce() -> B + Send) -> (A, B) {
-    if threads <= 1 || cfg!(target_arch = "wasm32") {
+    if threads <= 1 {
         return (a(), b());
     }
+    #[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
+    return helpers::join(a, b);
+    #[cfg(all(target_arch = "wasm32", not(target_feature = "atomics")))]
+    return (a(), b());
+    #[cfg(not(target_arch = "wasm32"))]
     std::thread::scope(|s| {
         let b = s.spawn(b);
         let a = a();

@@ -29,16 +29,50 @@ impl Clock for PerfClock {
     fn now_ms(&self) -> f64 {
         performance_now()
     }
+    /// Readable from any thread: in the module built with atomics a helper reads its own
+    /// worker's `performance.now()`, whose origin differs, so only durations are taken on it
+    /// (the core never compares readings of two threads).
+    fn shared(&self) -> Option<&(dyn Clock + Sync)> {
+        Some(self)
+    }
 }
 
-/// Runs when the module is instantiated: installs the panic hook.
+/// The body of a helper thread, in the module built with atomics: the host calls it once in a
+/// worker that instantiated this module on the generating instance's shared memory; it runs
+/// the jobs the core hands out (`sylva_core::par::helpers`) and never returns.
+#[cfg(target_feature = "atomics")]
+#[wasm_bindgen(js_name = helperLoop)]
+pub fn helper_loop() {
+    sylva_core::par::helpers::helper_loop();
+}
+
+/// Jobs the helper threads ran since the module started (the module built with atomics).
+#[cfg(target_feature = "atomics")]
+#[wasm_bindgen(js_name = helperJobs)]
+pub fn helper_jobs() -> f64 {
+    sylva_core::par::helpers::helper_jobs() as f64
+}
+
+/// The threads a generation uses: 1, plus the helper threads started (the module built with
+/// atomics; none in the single-threaded one).
+#[wasm_bindgen]
+pub fn threads() -> usize {
+    sylva_core::par::threads()
+}
+
+/// Runs when the module is instantiated: installs the panic hook. It keeps the first panic's
+/// message (a helper thread's, when the thread waiting for it panics in turn) and, in the
+/// module built with atomics, wakes the threads waiting for a helper's job
+/// (`sylva_core::par::helpers::poison`).
 #[wasm_bindgen(start)]
 pub fn start() {
     std::panic::set_hook(Box::new(|info| {
         let msg = info.to_string();
         if let Ok(mut slot) = LAST_PANIC.lock() {
-            *slot = Some(msg);
+            slot.get_or_insert(msg);
         }
+        #[cfg(target_feature = "atomics")]
+        sylva_core::par::helpers::poison();
     }));
 }
 
@@ -54,6 +88,30 @@ pub fn take_panic() -> Option<String> {
 #[wasm_bindgen]
 pub fn debug_panic() {
     panic!("debug_panic: deliberate panic requested by a test");
+}
+
+/// Panics on a helper thread while the calling thread waits for it (the module built with
+/// atomics, with a helper started; otherwise it panics on the calling thread). Only with the
+/// `debug-hooks` feature.
+#[cfg(feature = "debug-hooks")]
+#[wasm_bindgen]
+pub fn debug_panic_on_helper() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    let taken = AtomicBool::new(false);
+    let t0 = performance_now();
+    sylva_core::par::join(
+        2,
+        // Wait (at most 5 s) for the helper to take the other closure, so that it panics there.
+        || {
+            while !taken.load(Ordering::Acquire) && performance_now() - t0 < 5000.0 {
+                std::hint::spin_loop();
+            }
+        },
+        || {
+            taken.store(true, Ordering::Release);
+            panic!("debug_panic_on_helper: deliberate panic requested by a test");
+        },
+    );
 }
 
 /// Version of the core.

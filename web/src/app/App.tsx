@@ -138,7 +138,7 @@ export function App() {
         registry={registry}
         presets={presets}
         params={info ? params : null}
-        version={info?.version ?? null}
+        core={info ? { version: info.version, threads: info.threads ?? 1 } : null}
         activePreset={activePreset}
         editor={editor}
         growth={growth}

@@ -23,7 +23,8 @@ interface Props {
   presets: readonly Preset[];
   /** Null while the generator loads: the tabs and an empty panel keep their place. */
   params: Params | null;
-  version: string | null;
+  /** The core's version and the threads a generation uses (`ReadyInfo`); null while it loads. */
+  core: { version: string; threads: number } | null;
   activePreset: Preset['name'] | null;
   editor: Editor;
   growth: GrowthEditor;
@@ -34,7 +35,7 @@ export function SidePanel({
   registry,
   presets,
   params,
-  version,
+  core,
   activePreset,
   editor,
   growth,
@@ -57,7 +58,7 @@ export function SidePanel({
     },
     [change, paramsRef],
   );
-  const loaded = params !== null && version !== null;
+  const loaded = params !== null && core !== null;
   return (
     <>
       {/* The tabs and the panel take their place from the start: the stage (and the canvas)
@@ -92,7 +93,8 @@ export function SidePanel({
           presets={presets}
           params={params}
           activePreset={activePreset}
-          version={version}
+          version={core.version}
+          threads={core.threads}
           canUndo={editor.canUndo}
           canRedo={editor.canRedo}
           onChange={onChange}

@@ -10,6 +10,8 @@ interface Props {
   params: Params;
   activePreset: Preset['name'] | null;
   version: string;
+  /** Threads a generation uses (2: the threaded core in a cross-origin isolated page). */
+  threads: number;
   onChange: (id: ParamSpec['id'], value: number, interactive?: boolean) => void;
   onPreset: (name: string) => void;
   onRandomize: () => void;
@@ -48,8 +50,16 @@ export function ParamPanel(props: Props) {
     <aside className="panel" aria-label="Tree parameters">
       <header className="panel-header">
         <h1>Sylva</h1>
-        <span className="version" title="Core version">
+        <span
+          className="version"
+          title={
+            props.threads > 1
+              ? `Core version; generating on ${props.threads} threads (the page is cross-origin isolated)`
+              : 'Core version; generating on one thread'
+          }
+        >
           core {props.version}
+          {props.threads > 1 ? ` · ${props.threads} threads` : ''}
         </span>
       </header>
 

@@ -220,6 +220,8 @@ struct LeafJob<'a> {
     petiole: f32,
     count: usize,
     stale: bool,
+    /// Milliseconds the leaf took when the placement made it ahead (it is cached by then).
+    made_ahead_ms: Option<f64>,
 }
 
 impl Session {
@@ -299,7 +301,24 @@ impl Session {
         let over = |last: Option<f64>| quality.over_half_budget(last);
         let by_previous = over(self.last_place_ms).then(|| prev.and_then(|c| c.light.as_ref())).flatten();
         let place_stale = from <= Stage::Foliage || prev.is_some_and(|c| c.leaves_preview && by_previous.is_none());
-        let place = || foliage::place_lit_by(&skel.skeleton, &p.foliage, by_previous, by_previous.is_some());
+        // A new leaf shape the leaf stage will want in full (a first tree, a preset) is made
+        // (and cached) right after the placement, on the placement's thread: beside the bark
+        // when both run side by side. The same leaf either way (a pure function of its
+        // parameters); none for a leafless placement.
+        let leaf_key = foliage::LeafKey::of(&p.leaf, p.foliage.leaf_petiole);
+        let warm_leaf = !over(self.last_leaf_ms)
+            && prev.is_none_or(|c| foliage::LeafKey::of(&c.params.leaf, c.params.foliage.leaf_petiole) != leaf_key);
+        let (shared, made_ahead) = (clock.shared(), std::sync::Mutex::new(None));
+        let place = || {
+            let placed = foliage::place_lit_by(&skel.skeleton, &p.foliage, by_previous, by_previous.is_some());
+            if let Some(c) = shared.filter(|_| warm_leaf && placed.as_ref().is_ok_and(|(f, _)| f.count() > 0)) {
+                let t = c.now_ms();
+                // An error here is the leaf stage's to report, when it asks again.
+                let _ = foliage::cached_leaf(&p.leaf, p.foliage.leaf_petiole);
+                *made_ahead.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(c.now_ms() - t);
+            }
+            placed
+        };
         let sides = bark_and_placements(clock, bark_stale.then_some(sweep), place_stale.then_some(place))?;
         let t2 = clock.now_ms();
         times.mesh = sides.mesh_ms;
@@ -325,6 +344,7 @@ impl Session {
             petiole: p.foliage.leaf_petiole,
             count: placed.count(),
             stale: from <= Stage::Leaf || placements.is_some(),
+            made_ahead_ms: made_ahead.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner),
         };
         let (leaf, leaf_preview) = self.dress(prev, &job, quality, clock)?;
         // The bark's occlusion reads the bark, its holes and the leaves: again when any changed.
@@ -403,7 +423,7 @@ impl Session {
         let t = clock.now_ms();
         let dressed = foliage::leaf_mesh(job.count, job.params, job.petiole)?;
         if shape_changed || was_preview {
-            self.last_leaf_ms = Some(clock.now_ms() - t);
+            self.last_leaf_ms = Some(clock.now_ms() - t + job.made_ahead_ms.unwrap_or(0.0));
         }
         Ok((Some(dressed), false))
     }

@@ -8,6 +8,7 @@ import { createHandler } from '../worker/handler';
 import type { WorkerResponse } from '../worker/protocol';
 import { ExportClient } from './exportClient';
 import {
+  blobPart,
   exportFiles,
   exportFormatsOf,
   fileStem,
@@ -80,6 +81,18 @@ function glbJson(bytes: Uint8Array): Record<string, unknown> {
   const text = new TextDecoder().decode(bytes.subarray(20, 20 + view.getUint32(12, true)));
   return JSON.parse(text) as Record<string, unknown>;
 }
+
+describe('blobPart', () => {
+  it('copies a view of a shared memory (the threaded core), and only then', () => {
+    const shared = new Uint8Array(new SharedArrayBuffer(16)).map((_, i) => i);
+    const view = new Uint8Array(shared.buffer, 4, 8);
+    const part = blobPart(view);
+    expect(part.buffer).toBeInstanceOf(ArrayBuffer);
+    expect([...part]).toEqual([4, 5, 6, 7, 8, 9, 10, 11]);
+    const plain = new Uint8Array(8);
+    expect(blobPart(plain)).toBe(plain);
+  });
+});
 
 describe('export feature check', () => {
   it('lists only the exporters the GeneratedTree class has', () => {

@@ -55,14 +55,21 @@ interface YearsApi {
 }
 
 /**
+ * `view` as a Blob part: itself, or a copy when it lies in a shared memory (the threaded core's),
+ * which a Blob refuses ("The provided ArrayBufferView value must not be shared").
+ */
+export function blobPart(view: Uint8Array): Uint8Array<ArrayBuffer> {
+  return view.buffer instanceof ArrayBuffer ? (view as Uint8Array<ArrayBuffer>) : view.slice();
+}
+
+/**
  * A GLB left in the core's memory, read into a Blob at once (before the module could grow its
  * memory), then freed.
  */
 function coreBlob(glb: CoreFile, mime: string): Blob {
   try {
-    return new Blob([new Uint8Array(glb.memory().buffer, glb.ptr(), glb.byte_length())], {
-      type: mime,
-    });
+    const view = new Uint8Array(glb.memory().buffer, glb.ptr(), glb.byte_length());
+    return new Blob([blobPart(view)], { type: mime });
   } finally {
     glb.free();
   }

@@ -9,3 +9,8 @@
 export function wasmUrl(): URL {
   return new URL('../wasm/sylva_wasm_bg.wasm', import.meta.url);
 }
+
+/** The core's wasm file built with threads (`worker/threads.ts`). */
+export function threadsWasmUrl(): URL {
+  return new URL('../wasm-threads/sylva_wasm_bg.wasm', import.meta.url);
+}

@@ -56,6 +56,11 @@ export interface ReadyResponse {
   leafPresets?: LeafPreset[];
   /** Mesh formats the core can export (absent: none). */
   exportFormats?: ExportFormat[];
+  /**
+   * Threads a generation uses: 2 with the threaded core and its helper worker (a cross-origin
+   * isolated page), 1 otherwise (absent: 1).
+   */
+  threads?: number;
 }
 
 /**

@@ -57,8 +57,17 @@ describe('GenerationScheduler', () => {
       leafPresets: [],
     });
     expect(log.ready).toEqual([
-      [{ registry: [], presets: [], version: 'test', exportFormats: ['glb', 'obj'] }, 0],
+      [
+        { registry: [], presets: [], version: 'test', threads: 1, exportFormats: ['glb', 'obj'] },
+        0,
+      ],
     ]);
+  });
+
+  it('hands on the threads of the ready message (2: the threaded core and its helper)', () => {
+    const { current, log } = setup();
+    current().emit({ type: 'ready', registry: [], presets: [], version: 'test', threads: 2 });
+    expect(log.ready).toEqual([[{ registry: [], presets: [], version: 'test', threads: 2 }, 0]]);
   });
 
   it('latest wins: 3 rapid requests post only the first and the last', () => {

@@ -130,9 +130,15 @@ export class GenerationScheduler {
         ends: (response, slot) => endsSlot(response, slot),
         receive: (response, answered) => this.receive(response, answered),
         ready: (response, restarts) => {
-          const { registry, presets, version, exportFormats } = response as ReadyResponse;
+          const { registry, presets, version, exportFormats, threads } = response as ReadyResponse;
           // The export formats: an app's export workers run the same core (web: the pool).
-          const info = { registry, presets, version, ...(exportFormats ? { exportFormats } : {}) };
+          const info = {
+            registry,
+            presets,
+            version,
+            threads: threads ?? 1,
+            ...(exportFormats ? { exportFormats } : {}),
+          };
           this.callbacks.onReady(info, restarts);
         },
         crashed: (message, _lost, starting) =>

@@ -6,6 +6,8 @@ import { debugHooks } from './debugHooks';
 import { createHandler, readyMessage, type HandlerPost } from './handler';
 import type { WorkerRequest, WorkerResponse } from './protocol';
 import { wasmUrl } from '../runtime/urls';
+import type { WasmApi } from '../core/types';
+import { loadThreaded } from './threads';
 
 /** The parts of the dedicated-worker global scope this file uses. */
 interface WorkerScope {
@@ -20,13 +22,28 @@ const post: HandlerPost = (message, transfer) => scope.postMessage(message, tran
 // The test hooks: only in the app's debug build, and only for a worker started as a debug one.
 const debug = scope.name === DEBUG_WORKER_NAME ? (debugHooks ?? undefined) : undefined;
 
-const handlerPromise = init({ module_or_path: wasmUrl() })
-  .then(() => {
+/**
+ * The core: the threaded one with its helper where the page is cross-origin isolated
+ * (`threads.ts`), else (or if it fails to load) the single-threaded one.
+ */
+async function loadCore(): Promise<{ api: WasmApi; threads: Promise<number> | number }> {
+  try {
+    const threaded = await loadThreaded();
+    if (threaded) return threaded;
+  } catch (thrown) {
+    console.warn('sylva: the threaded core did not load; generating on one thread', thrown);
+  }
+  await init({ module_or_path: wasmUrl() });
+  return { api: wasm, threads: 1 };
+}
+
+const handlerPromise = loadCore()
+  .then(async ({ api, threads }) => {
     // The default tree is generated before anyone asks (while the page loads three.js and
     // React): the module's code is compiled and warm, and a first request for the default tree
-    // (a new visitor's) only copies the arrays out.
-    const handle = createHandler(wasm, post, { prime: {}, debug });
-    post(readyMessage(wasm), []);
+    // (a new visitor's) only copies the arrays out. The helper starts meanwhile.
+    const handle = createHandler(api, post, { prime: {}, debug });
+    post({ ...readyMessage(api), threads: await threads }, []);
     return handle;
   })
   .catch((thrown: unknown) => {
