@@ -49,8 +49,12 @@ test('the app runs under its Content-Security-Policy without a single violation'
   await page.getByTestId('preset-picker').selectOption('cypress');
   const cypress = await waitForNewTree(page, first);
   await page.locator('input[type="checkbox"][data-param-id="show_preview"]').check();
+  // The page is cross-origin isolated: the core runs on two threads, and the panic happens on
+  // its helper thread while the worker waits for it; the worker reports the helper's message.
+  await expect(page.locator('.panel-header .version')).toHaveText(/· 2 threads$/);
   await page.evaluate(() => window.__sylva?.panic?.());
   await expect(page.getByTestId('error-generator')).toHaveAttribute('data-kind', 'panic');
+  await expect(page.getByTestId('error-generator')).toContainText('debug_panic_on_helper');
   await page.getByTestId('reset').click();
   await waitForNewTree(page, cypress);
   await expectTreeOnCanvas(page);

@@ -41,17 +41,28 @@ export function busyWait(ms: number, now: () => number): void {
   }
 }
 
-/** The core built with the `debug-hooks` feature: the production API and `debug_panic`. */
+/**
+ * The core built with the `debug-hooks` feature: the production API and `debug_panic`; the
+ * threaded one also `debug_panic_on_helper` and `threads`.
+ */
 interface DebugWasm extends WasmApi {
   debug_panic?: () => void;
+  debug_panic_on_helper?: () => void;
+  threads?: () => number;
 }
 
 /**
- * Makes the wasm core panic; throws its trap (the caller reports it as fatal). A core without
- * the hook (the shipped one) throws an error saying so, which is fatal as well.
+ * Makes the wasm core panic; throws its trap (the caller reports it as fatal). The threaded
+ * core with its helper started panics on the helper, while this worker waits for it (the
+ * recovery must not hang). A core without the hook (the shipped one) throws an error saying
+ * so, which is fatal as well.
  */
 export function panicOnPurpose(wasm: WasmApi): never {
   const core = wasm as DebugWasm;
+  if (typeof core.debug_panic_on_helper === 'function' && (core.threads?.() ?? 1) > 1) {
+    core.debug_panic_on_helper();
+    throw new Error('debug_panic_on_helper() returned without panicking');
+  }
   if (typeof core.debug_panic !== 'function') {
     throw new Error('this core has no debug_panic (built without the debug-hooks feature)');
   }

@@ -25,6 +25,12 @@ scope.onmessage = (event) => {
     return;
   }
   scope.postMessage({ type: 'started' });
-  // Returns only by a trap (never otherwise).
-  glue.helperLoop();
+  try {
+    glue.helperLoop();
+  } catch (thrown) {
+    // Only a trap ends the loop: a panic in a job, which the generation worker reports (with
+    // the panic's message) as its own crash, and is restarted with a new helper. Nothing more
+    // to say here, and nothing uncaught.
+    scope.postMessage({ type: 'trapped', message: String(thrown) });
+  }
 };

@@ -40,8 +40,12 @@ export interface Threaded {
   threads: Promise<number>;
 }
 
-/** The helper's first message: up (about to enter its loop), or why it could not start. */
-export type HelperMessage = { type: 'started' } | { type: 'failed'; message: string };
+/**
+ * The helper's messages: up (about to enter its loop), or why it could not start; then, only
+ * if a job panicked, that its loop ended by a trap.
+ */
+export type HelperMessage =
+  { type: 'started' } | { type: 'failed'; message: string } | { type: 'trapped'; message: string };
 
 /**
  * Loads the threaded core and starts its helper; `null` where memory cannot be shared. Throws
@@ -62,7 +66,11 @@ export async function loadThreaded(): Promise<Threaded | null> {
       if (event.data.type === 'failed') console.warn('sylva: the helper worker failed', event.data);
       resolve(event.data.type === 'started' ? 2 : 1);
     };
-    helper.onerror = () => resolve(1);
+    helper.onerror = (event) => {
+      // A helper that fails to load: the core runs on this thread alone.
+      event.preventDefault();
+      resolve(1);
+    };
   });
   helper.postMessage({ module, memory });
   return { api: glue as unknown as WasmApi, helper, threads };
