@@ -29,7 +29,7 @@ use crate::skeleton::{Skeleton, Stem, StemKind};
 use glam::Vec3;
 use plan::Plan;
 use std::ops::Range;
-use sweep::{circle, emit, sweep, sweep_trunk, TrunkProfile};
+use sweep::{circle, emit, index_count, sweep, sweep_trunk, TrunkProfile};
 
 /// Counts of the junction pass.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -105,12 +105,43 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
         sweep.stem(i);
     }
     let Sweep { mut out, meshes, claimed, bridges, stats, blocks, .. } = sweep;
-    for m in meshes.iter().flatten() {
-        emit(m, &claimed, &mut out);
-    }
+    emit_all(&meshes, &claimed, &mut out);
     out.extend_indices(&bridges);
     super::cut_face::emit_faces(&meshes, &mut out);
     Ok(Built { mesh: out.finish(), welds: stats, blocks })
+}
+
+/// Index writes below which [`emit_all`] stays on one thread.
+const PARALLEL_INDICES: usize = 1 << 17;
+
+/// Every stem's indices ([`emit`]), in stem order: each stem's count first, then the stems'
+/// slices of one allocation written in runs of about equal size on [`crate::par::threads`]
+/// (the helper threads in wasm). The same indices on any number of threads.
+fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder) {
+    let stems: Vec<&StemMesh> = meshes.iter().flatten().collect();
+    let counts: Vec<usize> = stems.iter().map(|m| index_count(m, claimed)).collect();
+    let total: usize = counts.iter().sum();
+    let threads = if total >= PARALLEL_INDICES { crate::par::threads() } else { 1 };
+    let mut rest = out.alloc_indices(total);
+    // Runs of stems, each about `total / parts` indices, with their slices.
+    let parts = threads * 4;
+    let mut runs: Vec<Vec<(&StemMesh, &mut [u32])>> = Vec::with_capacity(parts);
+    let (mut run, mut written) = (Vec::new(), 0);
+    for (m, &n) in stems.into_iter().zip(&counts) {
+        let (head, tail) = std::mem::take(&mut rest).split_at_mut(n);
+        rest = tail;
+        run.push((m, head));
+        written += n;
+        if written * parts >= total * (runs.len() + 1) {
+            runs.push(std::mem::take(&mut run));
+        }
+    }
+    runs.push(run);
+    crate::par::run(runs, threads, |run| {
+        for (m, idx) in run {
+            emit(m, claimed, idx);
+        }
+    });
 }
 
 /// Circle tables ([`circle`]) by number of sides.

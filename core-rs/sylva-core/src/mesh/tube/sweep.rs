@@ -29,20 +29,34 @@ pub(super) fn circle(sides: u32) -> Vec<(f32, f32, f32)> {
     t
 }
 
-/// Indices of one swept stem: quads between rings (except those a child's junction claimed),
-/// the tip fan, and the base cap.
-pub(super) fn emit(m: &StemMesh, claimed: &[bool], out: &mut MeshBuilder) {
+/// The quad claims of stem `m` (one per quad, row by row).
+fn claims_of<'c>(m: &StemMesh, claimed: &'c [bool]) -> &'c [bool] {
+    &claimed[m.claim..m.claim + (m.rings as usize - 1) * m.sides as usize]
+}
+
+/// The triangles of stem `m`'s tip fan (or a cut end's rim: two triangles a side) and base fan.
+fn fan_triangles(m: &StemMesh) -> (usize, usize) {
+    let s = m.sides as usize;
+    let tip = s * m.cut.map_or(1, cut_face::rim_triangles);
+    (tip, if matches!(m.base, Base::Welded | Base::Open) { 0 } else { s })
+}
+
+/// How many indices [`emit`] writes for stem `m`.
+pub(super) fn index_count(m: &StemMesh, claimed: &[bool]) -> usize {
+    let free = claims_of(m, claimed).iter().filter(|&&c| !c).count();
+    let (tip, base) = fan_triangles(m);
+    free * 6 + (tip + base) * 3
+}
+
+/// Indices of one swept stem into `idx` (exactly [`index_count`] of them): quads between rings
+/// (except those a child's junction claimed), the tip fan, and the base cap.
+pub(super) fn emit(m: &StemMesh, claimed: &[bool], idx: &mut [u32]) {
     let s = m.sides;
     let st = s + 1;
-    let rows = m.rings as usize - 1;
-    let claims = &claimed[m.claim..m.claim + rows * s as usize];
-    let free = claims.iter().filter(|&&c| !c).count();
+    let claims = claims_of(m, claimed);
     debug_assert!(m.base != Base::Open, "a base is welded or closed before the index pass");
-    // The tip's fan (or a cut end's rim: two triangles a side) and the base's.
-    let tip = s as usize * m.cut.map_or(1, cut_face::rim_triangles);
-    let fans = tip + s as usize * if matches!(m.base, Base::Welded | Base::Open) { 0 } else { 1 };
-    let idx = out.alloc_indices(free * 6 + fans * 3);
-    let (quad_idx, fan_idx) = idx.split_at_mut(free * 6);
+    let (tip, base) = fan_triangles(m);
+    let (quad_idx, fan_idx) = idx.split_at_mut(idx.len() - (tip + base) * 3);
     let mut q = quad_idx.chunks_exact_mut(6);
     for (i, row_claims) in claims.chunks_exact(s as usize).enumerate() {
         let row = m.first + i as u32 * st;
