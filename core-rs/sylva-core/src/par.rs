@@ -48,8 +48,8 @@ pub fn serial<R>(f: impl FnOnce() -> R) -> R {
 
 /// Runs `work` on every job, on up to `threads` threads: each thread takes the next job of the
 /// list until none is left, so jobs given largest first balance best. One thread (or wasm
-/// without helper threads) runs them in order on the calling thread. A panicking job panics the caller once all
-/// threads have stopped.
+/// without helper threads) runs them in order on the calling thread. A panicking job panics
+/// the caller once all threads have stopped.
 pub fn run<J: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) + Sync) {
     let threads = threads.min(jobs.len());
     if threads <= 1 {

@@ -81,7 +81,7 @@ struct Done<B> {
     result: Mutex<Option<B>>,
 }
 
-/// `(a(), b())`: `b` on a helper when one is idle by the time `a` is done, else on this thread.
+/// `(a(), b())`: `b` on a helper if one takes it before `a` is done, else on this thread after `a`.
 pub fn join<A, B: Send>(a: impl FnOnce() -> A, b: impl FnOnce() -> B + Send) -> (A, B) {
     if helpers() == 0 {
         return (a(), b());

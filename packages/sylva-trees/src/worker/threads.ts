@@ -22,6 +22,9 @@ interface ThreadedGlue {
   threads(): number;
 }
 
+/** How long the ready message waits for the helper to say it started (ms). */
+const HELPER_START_MS = 5000;
+
 /** The parts of a worker's global scope this file reads. */
 interface IsolationScope {
   readonly crossOriginIsolated?: boolean;
@@ -71,7 +74,14 @@ export async function loadThreaded(): Promise<Threaded | null> {
       event.preventDefault();
       resolve(1);
     };
+    // Never wait on a helper that neither starts nor fails (the core works without it).
+    setTimeout(() => resolve(1), HELPER_START_MS);
   });
-  helper.postMessage({ module, memory });
+  try {
+    helper.postMessage({ module, memory });
+  } catch (thrown) {
+    helper.terminate();
+    throw thrown;
+  }
   return { api: glue as unknown as WasmApi, helper, threads };
 }
