@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # One setup for every entry point (npm start, npm test, npm run build/bench/lint).
 # Idempotent: each step checks before it acts, so a second run with nothing changed takes seconds.
-#   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build
-#   scripts/setup.sh --test     the same, plus the debug wasm build (the test hook `debug_panic`, in
-#                               packages/sylva-trees/src/wasm-debug), Chromium for the Playwright tests
+#   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build,
+#                               and the same with threads (scripts/wasm-threads.sh: a pinned nightly)
+#   scripts/setup.sh --test     the same, plus the debug wasm builds (the test hooks `debug_panic` and
+#                               `debug_panic_on_helper`, in packages/sylva-trees/src/wasm-debug and
+#                               wasm-threads-debug), Chromium for the Playwright tests
 #                               and the Python package's venv and wheel (scripts/python.sh)
 #   scripts/setup.sh --native   the same as plain (the bench also builds the native CLI itself)
 set -euo pipefail
