@@ -5,7 +5,8 @@ interface Window {
     hang?(ms: number): void;
     setTimeLimit?(ms: number): void;
     geometries?(): number | null;
-    trees?(): { id: number; at: number; preview: boolean }[];
+    trees?(): { id: number; at: number; requestedAt: number | null; preview: boolean }[];
+    settleWhenIdle?(on: boolean): void;
     pauseRendering?(paused: boolean): void;
     probeFrame?(): number | null;
     leafPullCheck?(): { covered: number; differing: number } | null;
