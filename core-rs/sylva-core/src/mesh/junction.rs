@@ -14,7 +14,7 @@ use crate::skeleton::Stem;
 pub(crate) const MAX_START: f32 = 0.5;
 
 /// Where a welded child starts and where it opens its parent (fractions of each stem).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Junction {
     /// The parent stem.
     pub parent: u32,

@@ -120,6 +120,17 @@ impl Stem {
         StemPoints { stem: self, index: 0, segment: self.segment(0) }
     }
 
+    /// Whether [`Stem::radius_at`] never grows from base to tip: Weber & Penn's taper below 2
+    /// (a cone, or one rounded tip) with a flare that widens the base, no radii point by point.
+    pub fn radius_never_grows(&self) -> bool {
+        self.radii.is_none() && (0.0..2.0).contains(&self.taper) && self.flare >= 0.0 && self.chain_start <= 1.0
+    }
+
+    /// Number of cubic segments of the centre curve.
+    pub fn segments(&self) -> usize {
+        self.points.len() - 1
+    }
+
     /// Segment index and local parameter of fraction `t`.
     pub fn locate(&self, t: f32) -> (usize, f32) {
         let segs = self.points.len() - 1;
@@ -208,6 +219,20 @@ impl Segment {
     #[inline]
     pub fn position(&self, u: f32) -> Vec3 {
         0.5 * (2.0 * self.p1 + self.d * u + self.a * (u * u) + self.b * (u * u * u))
+    }
+
+    /// The Bernstein control points of `d position / du` (a quadratic): the derivative at
+    /// every `u` in [0, 1] lies in their convex hull, so a chord of the segment from `u0` to
+    /// `u1` is `(u1 - u0)` times a point of that hull.
+    pub fn hodograph(&self) -> [Vec3; 3] {
+        let (c0, c1, c2) = (0.5 * self.d, self.a, 1.5 * self.b);
+        [c0, c0 + 0.5 * c1, c0 + c1 + c2]
+    }
+
+    /// The size of the terms [`Segment::position`] adds (its rounding error is a few units in
+    /// the last place of this).
+    pub fn magnitude(&self) -> f32 {
+        2.0 * self.p1.length() + self.d.length() + self.a.length() + self.b.length()
     }
 }
 

@@ -29,6 +29,7 @@
 //! keeps no rings between `S` and `Jo` ([`keep_gaps`]) and no other footprint may use those rows;
 //! triangles across the texture seam get vertex copies a turn on ([`MeshBuilder::unwrap_u`]).
 
+mod clear;
 mod join;
 
 pub(crate) use join::join;
@@ -80,13 +81,27 @@ pub(crate) fn geometry_from(
     sides: &[u32],
     from: Option<f32>,
 ) -> Option<Junction> {
+    search(stems, i, p, sides, from, true, &mut 0)
+}
+
+/// [`geometry_from`], skipping the steps that certainly do not separate ([`clear`]) or not;
+/// counts the steps evaluated into `probes`.
+fn search(
+    stems: &[Stem],
+    i: usize,
+    p: &MeshParams,
+    sides: &[u32],
+    from: Option<f32>,
+    skip: bool,
+    probes: &mut usize,
+) -> Option<Junction> {
     let c = &stems[i];
     let pi = c.parent?;
     let o = &stems[pi as usize];
     if o.level != c.level || sides[pi as usize] % 2 != 0 || sides[pi as usize] < 4 {
         return None;
     }
-    let (lo, lc) = (o.length.max(1e-6), c.length.max(1e-6));
+    let lo = o.length.max(1e-6);
     let t_base = c.offset / lo;
     let t_split = from.unwrap_or(t_base);
     if !(1e-3..0.9).contains(&t_split) || t_split < t_base {
@@ -106,38 +121,37 @@ pub(crate) fn geometry_from(
     // A clone that has drawn away already would separate at once, in a steep short crotch:
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
-    // Step k: how far up the original from the split, and where both stems are then.
-    let at_step = |k: usize| {
-        let s = k as f32 * step;
-        (s, t_split + s / lo, (ahead + s) / lc)
-    };
+    let walk = clear::Search { o, c, t_split, ahead, step, bound, min_s, max_start: MAX_START };
     let (mut on_o, mut on_c) = (o.points(), c.points());
-    // Some(true) where the tubes have separated, None past the search's end.
-    let mut separated = |k: usize| {
-        let (s, t_o, t_c) = at_step(k);
-        if t_c > MAX_START || t_o > 0.9 {
+    // The gap between the centres at step `k` and whether it separates the tubes; None past
+    // the search's end.
+    let mut probe = |k: usize| {
+        *probes += 1;
+        let (s, t_o, t_c) = walk.at_step(k);
+        if walk.past_end(t_o, t_c) {
             return None;
         }
         let gap = (on_o.at(t_o) - on_c.at(t_c)).length();
-        Some(s >= min_s && gap >= CLEARANCE * (o.radius_at(t_o) * bound + c.radius_at(t_c)))
+        Some((gap, s >= min_s && gap >= walk.clearance(t_o, t_c)))
     };
     // Every COARSE-th step first (a radius apart); the steps before one that separates (or ends
     // the search) are then tried in order for the first that does. A separation that does not
     // last to the next coarse step (the tubes touch again within a radius) is not taken; on
     // every preset the forks are the ones a step-by-step search finds (same golden hashes).
+    // Coarse steps that certainly do not separate are skipped ([`clear`]).
     let mut k = 0;
     while k < STEPS {
         let hi = (k + COARSE).min(STEPS);
-        if separated(hi) == Some(false) {
-            k = hi;
+        if let Some((gap, false)) = probe(hi) {
+            k = if skip { walk.clear_until(hi, gap) } else { hi };
             continue;
         }
         for j in k + 1..=hi {
-            match separated(j) {
+            match probe(j) {
                 None => return None,
-                Some(false) => {}
-                Some(true) => {
-                    let (s, t_o, t_c) = at_step(j);
+                Some((_, false)) => {}
+                Some((_, true)) => {
+                    let (s, t_o, t_c) = walk.at_step(j);
                     // A clone forking one step up has drawn away already: its side patch runs
                     // from the original's ring out to the clone, leaning further than the clone
                     // itself. Past MAX_KNEE more it shows as a knee; it stays a separate tube.
@@ -299,5 +313,52 @@ pub(crate) mod tests {
         let mut ts = vec![0.0, 0.15005, 0.2, 0.31995, 0.5];
         keep_gaps(&[fork(0.15, 0.32)], &mut ts, 0);
         assert_eq!(ts, vec![0.0, 0.15, 0.32, 0.5]);
+    }
+}
+
+#[cfg(test)]
+mod search_tests {
+    use super::*;
+
+    /// The skipping search finds the same fork as the step-by-step one for every split clone of
+    /// every preset (three seeds, two ages), from its own base and one step up.
+    #[test]
+    fn skipping_finds_the_same_forks() {
+        let (mut clones, mut forks) = (0, 0);
+        let (mut plain_probes, mut probes) = (0, 0);
+        for preset in crate::presets::PRESETS {
+            for (seed, age) in [(None, None), (Some(7.0), None), (Some(12345.0), Some(0.6))] {
+                let mut params = preset.params().expect("preset");
+                if let Some(seed) = seed {
+                    params.set("seed", seed).expect("seed");
+                }
+                if let Some(f) = age {
+                    let years = params.get("age").expect("age") * f;
+                    params.set("age", years.round().max(1.0)).expect("age");
+                }
+                let Ok(sk) = crate::skeleton::build(&params.skeleton) else { continue };
+                let sides = vec![8u32; sk.stems.len()];
+                for i in 0..sk.stems.len() {
+                    if sk.stems[i].kind != crate::skeleton::StemKind::SplitClone {
+                        continue;
+                    }
+                    clones += 1;
+                    let mut both = |from: Option<f32>| {
+                        let plain = search(&sk.stems, i, &params.mesh, &sides, from, false, &mut plain_probes);
+                        let skipping = search(&sk.stems, i, &params.mesh, &sides, from, true, &mut probes);
+                        assert_eq!(skipping, plain, "{} stem {i} from {from:?}", preset.name);
+                        plain
+                    };
+                    if let Some(j) = both(None) {
+                        forks += 1;
+                        both(Some(j.t_hi));
+                    }
+                }
+            }
+        }
+        assert!(clones > 10_000 && forks > 1_000, "{clones} clones, {forks} forks");
+        // The shortcut is taken: a willow's clones run along their originals for many steps.
+        assert!(probes * 4 < plain_probes, "{probes} steps evaluated skipping, {plain_probes} without");
+        eprintln!("{clones} clones, {forks} forks; {probes} steps evaluated skipping, {plain_probes} without");
     }
 }

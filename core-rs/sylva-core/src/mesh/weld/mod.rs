@@ -54,6 +54,9 @@ const MIN_SIN: f32 = 0.17;
 /// the hole spans the rows between them. Farther rings get a ring added at the footprint's end.
 pub(crate) const REACH: f32 = 1.0;
 
+/// Fewest stems whose junction geometry [`plan`] computes on every thread.
+const PARALLEL_PLAN: usize = 2048;
+
 /// True for the stems the junctions weld: levels 1 and 2 on their parents and split clones up to
 /// level 2 (a clone has its original's level).
 pub(crate) fn is_candidate(stems: &[Stem], i: usize) -> bool {
@@ -131,15 +134,18 @@ pub(crate) fn plan(skeleton: &Skeleton, p: &MeshParams, sides: &[u32]) -> Vec<Op
     let stems = &skeleton.stems;
     let n = stems.len();
     // A shallow split clone forks its original; the others open a footprint in their parent.
-    let geo: Vec<Option<Junction>> = (0..n)
-        .map(|i| {
-            if is_candidate(stems, i) {
-                super::fork::geometry(stems, i, p, sides).or_else(|| geometry(stems, i, p))
-            } else {
-                None
-            }
-        })
-        .collect();
+    // Each stem's geometry reads the skeleton alone: computed in ranges on every thread (a
+    // willow's thousands of clones each search up to 100 steps for where they separate).
+    let of = |i: usize| {
+        if is_candidate(stems, i) {
+            super::fork::geometry(stems, i, p, sides).or_else(|| geometry(stems, i, p))
+        } else {
+            None
+        }
+    };
+    let threads = if n >= PARALLEL_PLAN { crate::par::threads() } else { 1 };
+    let parts = crate::par::ranges(n, threads * 8);
+    let geo: Vec<Option<Junction>> = crate::par::map(parts, threads, |r| r.map(of).collect::<Vec<_>>()).concat();
     let mut out = vec![None; n];
     // Accepted footprints per parent as linked lists: (junction, next).
     let mut head = vec![u32::MAX; n];
