@@ -8,6 +8,7 @@
 mod batch;
 mod cli;
 mod leaf;
+mod memory;
 mod payloads;
 mod python;
 mod reference;
@@ -23,6 +24,7 @@ use sylva_core::params::{ParamKind, TreeParams};
 use sylva_core::{presets, SylvaError};
 
 fn main() -> ExitCode {
+    memory::keep_freed_memory();
     let args: Vec<String> = std::env::args().skip(1).collect();
     match run(&args) {
         Ok(out) => {
