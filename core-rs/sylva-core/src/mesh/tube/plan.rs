@@ -3,7 +3,7 @@
 //! a conservative vertex and index count checked against the budget (every junction counted as
 //! if it fell back to a separate tube).
 
-use super::rings::plan_rings;
+use super::rings::{bent_rings, plan_rings, start_and_tip};
 use crate::error::SylvaError;
 use crate::math::TAU;
 use crate::mesh::stem::sides_for;
@@ -100,12 +100,39 @@ impl Plan {
     /// densified for holes, with its forks' rows kept open.
     pub fn tube_rings(&self, skeleton: &Skeleton, p: &MeshParams, i: usize, t0: f32, out: &mut Vec<f32>) {
         let (stem, sides, start) = (&skeleton.stems[i], self.sides[i], out.len());
-        let feet = self.feet(i);
-        plan_rings(stem, p.mesh_quality, feet, TAU / sides as f32, t0, out);
-        if self.is_dense(i) {
-            holes::densify(stem, sides, p, out, start);
+        plan_rings(stem, p.mesh_quality, self.feet(i), TAU / sides as f32, t0, out);
+        self.finish_rings(skeleton, p, i, out, start);
+    }
+
+    /// [`Plan::tube_rings`] of welded tube `i` from its junction ring `t0` into `out`, and the
+    /// rings a fallback to a tube from its base would have (`fallback`, replaced): the rings
+    /// where it bends are placed once for both.
+    fn tube_rings_and_fallback(
+        &self,
+        skeleton: &Skeleton,
+        p: &MeshParams,
+        i: usize,
+        t0: f32,
+        out: &mut Vec<f32>,
+        fallback: &mut Vec<f32>,
+    ) {
+        let (stem, sides, start) = (&skeleton.stems[i], self.sides[i], out.len());
+        bent_rings(stem, p.mesh_quality, self.feet(i), TAU / sides as f32, out);
+        fallback.clear();
+        fallback.extend_from_slice(&out[start..]);
+        for (rings, first, from) in [(&mut *out, start, t0), (&mut *fallback, 0, 0.0)] {
+            start_and_tip(stem, from, rings, first);
+            self.finish_rings(skeleton, p, i, rings, first);
         }
-        fork::keep_gaps(feet, out, start);
+    }
+
+    /// The last steps of [`Plan::tube_rings`] on `out[start..]`: densified for holes, the forks'
+    /// rows kept open.
+    fn finish_rings(&self, skeleton: &Skeleton, p: &MeshParams, i: usize, out: &mut Vec<f32>, start: usize) {
+        if self.is_dense(i) {
+            holes::densify(&skeleton.stems[i], self.sides[i], p, out, start);
+        }
+        fork::keep_gaps(self.feet(i), out, start);
     }
 
     /// Every stem's rings, and the vertex and index counts: tubes, apexes, caps, the collar
@@ -127,7 +154,11 @@ impl Plan {
                 continue;
             }
             let t0 = self.junctions[i].map_or(0.0, |j| j.t_start);
-            self.tube_rings(skeleton, p, i, t0, &mut ts);
+            if self.junctions[i].is_some() {
+                self.tube_rings_and_fallback(skeleton, p, i, t0, &mut ts, &mut fallback);
+            } else {
+                self.tube_rings(skeleton, p, i, t0, &mut ts);
+            }
             let plan = StemPlan { rings: start..ts.len(), sides: self.sides[i] };
             let ring = u64::from(plan.sides) + 1;
             self.vertices += plan.rings.len() as u64 * ring + 2 + if s.parent.is_none() { ring + 1 } else { 0 };
@@ -142,8 +173,6 @@ impl Plan {
                 // Either the footprint loop and the collar loops, or a fallback swept from the
                 // parent's axis: planned here as it would be (densified for holes too), so that
                 // the budget holds either way.
-                fallback.clear();
-                self.tube_rings(skeleton, p, i, 0.0, &mut fallback);
                 let more = fallback.len().saturating_sub(plan.rings.len());
                 let fork = j.fork.then(|| fork_rows::rows(&j, &skeleton.stems[j.parent as usize], q));
                 let joined = match fork {
@@ -207,4 +236,36 @@ fn group_by_parent(junctions: &[Option<weld::Junction>], n: usize) -> (Vec<weld:
         of.push(from..at);
     }
     (feet, of)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The welded tubes' rings and their fallbacks' come out as two separate plans give them,
+    /// for every welded stem of every preset (with holes and forks among them), so the budget
+    /// counts do not change.
+    #[test]
+    fn rings_with_the_fallback_are_those_of_two_plans() {
+        let mut welded = 0;
+        for preset in crate::presets::PRESETS {
+            let params = preset.params().expect("preset");
+            let Ok(sk) = crate::skeleton::build(&params.skeleton) else { continue };
+            let p = &params.mesh;
+            let plan = Plan::new(&sk, p).expect("plan");
+            let (mut out, mut fallback) = (vec![0.5f32], Vec::new());
+            for i in 0..sk.stems.len() {
+                let Some(j) = plan.junctions[i] else { continue };
+                welded += 1;
+                out.truncate(1);
+                plan.tube_rings_and_fallback(&sk, p, i, j.t_start, &mut out, &mut fallback);
+                let (mut tube, mut alone) = (vec![0.5f32], Vec::new());
+                plan.tube_rings(&sk, p, i, j.t_start, &mut tube);
+                plan.tube_rings(&sk, p, i, 0.0, &mut alone);
+                assert_eq!(out, tube, "{} stem {i}", preset.name);
+                assert_eq!(fallback, alone, "{} stem {i}", preset.name);
+            }
+        }
+        assert!(welded > 50_000, "{welded} welded stems");
+    }
 }

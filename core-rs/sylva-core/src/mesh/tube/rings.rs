@@ -25,6 +25,15 @@ fn insert_sorted(out: &mut Vec<f32>, first: usize, t: f32) {
 /// apex closes the stem at t = 1.
 pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad: f32, start: f32, out: &mut Vec<f32>) {
     let first = out.len();
+    bent_rings(stem, quality, feet, pad, out);
+    start_and_tip(stem, start, out, first);
+}
+
+/// The rings of [`plan_rings`] before its start and tip are placed: where the stem bends,
+/// through the flare and rounded tips, and around the feet, appended to `out` (sorted). They do
+/// not depend on the start, so a welded stem's tube and its fallback share them.
+pub(super) fn bent_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad: f32, out: &mut Vec<f32>) {
+    let first = out.len();
     let pts = &stem.points;
     let segs = pts.len() - 1;
     let dir = |i: usize| (pts[i + 1] - pts[i]).normalize_or(Vec3::Y);
@@ -91,6 +100,11 @@ pub(super) fn plan_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
             }
         }
     }
+}
+
+/// Completes the rings `out[first..]` of [`bent_rings`] into [`plan_rings`]': the tube starts
+/// at `start` (0, or its junction ring) and ends a little short of the tip, or of a cut.
+pub(super) fn start_and_tip(stem: &Stem, start: f32, out: &mut Vec<f32>, first: usize) {
     if start > 0.0 {
         // Drop the rings the junction replaces; the junction ring is the first.
         let keep = out[first..].partition_point(|&t| t <= start + 1e-4) + first;
