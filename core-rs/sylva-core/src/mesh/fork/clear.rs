@@ -10,6 +10,8 @@
 //! times a mean derivative. While that bound, with room for rounding, stays below half the
 //! clearance still needed at the window's end (radii that never grow from base to tip), no
 //! step up to there separates.
+//!
+//! [`Segment::hodograph`]: crate::skeleton::Segment::hodograph
 
 use crate::skeleton::Stem;
 

@@ -102,7 +102,7 @@ pub(super) fn bent_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
     }
 }
 
-/// Completes the rings `out[first..]` of [`bent_rings`] into [`plan_rings`]': the tube starts
+/// Completes the rings `out[first..]` of [`bent_rings`] into those of [`plan_rings`]: the tube starts
 /// at `start` (0, or its junction ring) and ends a little short of the tip, or of a cut.
 pub(super) fn start_and_tip(stem: &Stem, start: f32, out: &mut Vec<f32>, first: usize) {
     if start > 0.0 {
