@@ -34,7 +34,7 @@ pub(crate) struct Scratch {
     pub(super) flat: Vec<Vec2>,
     /// The footprint loop in the parent's surface coordinates.
     pub(super) foot_flat: Vec<Vec2>,
-    /// The search window's triangles ([`footprint`]).
+    /// The search window's triangles ([`Meeting::fill_window`]).
     pub(super) window: Vec<WindowTri>,
 }
 
