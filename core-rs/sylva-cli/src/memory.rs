@@ -4,8 +4,8 @@
 //! them when freed, and hands the heap's free top back to the system above its *trim
 //! threshold*. A tree's buffers are such blocks (the default tree's bark is about 11 MB), so
 //! every tree of `sylva batch` (and every run of `sylva bench`) wrote its buffers into new
-//! pages, each a page fault in which the kernel zeroes the page first: 98–118 trees/s for a
-//! batch of 100 default trees on this project's 2-core machine, against 146–148 with freed
+//! pages, each a page fault in which the kernel zeroes the page first: 102–118 trees/s for a
+//! batch of 100 default trees on this project's 2-core machine, against 141–160 with freed
 //! memory kept (docs/performance.md, the cold path). Blocks up to 32 MB (glibc's ceiling for
 //! the threshold on 64-bit systems) now come from the heap, which keeps what is freed; larger
 //! ones are still mapped and unmapped. The trees are the same bytes either way.

@@ -21,6 +21,9 @@ use super::{CLEARANCE, COARSE, STEPS};
 pub(super) struct Search<'a> {
     pub o: &'a Stem,
     pub c: &'a Stem,
+    /// Their lengths (at least a micrometre).
+    pub lo: f32,
+    pub lc: f32,
     pub t_split: f32,
     pub ahead: f32,
     pub step: f32,
@@ -33,8 +36,7 @@ impl Search<'_> {
     /// Step `k`: how far up the original from the split, and where both stems are then.
     pub fn at_step(&self, k: usize) -> (f32, f32, f32) {
         let s = k as f32 * self.step;
-        let (lo, lc) = (self.o.length.max(1e-6), self.c.length.max(1e-6));
-        (s, self.t_split + s / lo, (self.ahead + s) / lc)
+        (s, self.t_split + s / self.lo, (self.ahead + s) / self.lc)
     }
 
     /// Whether step `k` lies past the search's end (the clone too far along, or the original).
@@ -55,7 +57,7 @@ impl Search<'_> {
         let (_, t_ok, t_ck) = self.at_step(k);
         let ((i_o, _), (i_c, _)) = (o.locate(t_ok), c.locate(t_ck));
         // The window: the coarse steps still on both segments and before the search's end.
-        let (lo, lc) = (o.length.max(1e-6), c.length.max(1e-6));
+        let (lo, lc) = (self.lo, self.lc);
         let (n_o, n_c) = (o.segments() as f32, c.segments() as f32);
         let s_end = ((((i_o + 1) as f32 / n_o).min(0.9) - self.t_split) * lo)
             .min(((i_c + 1) as f32 / n_c).min(self.max_start) * lc - self.ahead);

@@ -121,7 +121,8 @@ fn search(
     // A clone that has drawn away already would separate at once, in a steep short crotch:
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
-    let walk = clear::Search { o, c, t_split, ahead, step, bound, min_s, max_start: MAX_START };
+    let lc = c.length.max(1e-6);
+    let walk = clear::Search { o, c, lo, lc, t_split, ahead, step, bound, min_s, max_start: MAX_START };
     let (mut on_o, mut on_c) = (o.points(), c.points());
     // The gap between the centres at step `k` and whether it separates the tubes; None past
     // the search's end.
