@@ -8,6 +8,10 @@
 // - `wasm_threads` in each `cold` record: the same in the threaded module (scripts/wasm-threads.sh)
 //   with one helper worker started first, as a cross-origin isolated page runs it: a fresh
 //   instance per run, and `repeated`, the same tree generated again in that instance.
+// - `memory_mb` and `fresh_pages_ms` in each `cold` record's `wasm`: the memory the fresh instance
+//   grew to by the end of the generation, and what touching that many fresh pages costs at
+//   `freshPageMicros` (the machine's cost of one 4 KB page of a new wasm memory, written for the
+//   first time): the part of a fresh generation that no faster code removes.
 // - `batch`: `sylva batch` of 100 default trees with seeds 1 to 100 on every core (generation and
 //   hash, no files), in trees per second.
 // This file is also the worker's entry point.
@@ -18,15 +22,52 @@ import { runThreaded, threadedModule } from './wasm-threads-node.mjs';
 
 if (!isMainThread && workerData?.coldTree) {
   const w = await import(workerData.glue);
-  w.initSync({ module: workerData.module });
+  const exports = w.initSync({ module: workerData.module });
   const tree = w.generate(workerData.json);
   const meta = JSON.parse(tree.meta_json());
   tree.free();
-  parentPort.postMessage(meta);
+  parentPort.postMessage({ ...meta, memory_bytes: exports.memory.buffer.byteLength });
 }
 
-/** The meta of one generation of `json` in a fresh instance of `module` (glue module `glue`). */
-function coldWasmOnce(module, glue, json) {
+/** Bytes in one page of the system's memory, the unit a fresh memory is faulted in by. */
+export const PAGE_BYTES = 4096;
+
+if (!isMainThread && workerData?.freshPages) {
+  // A new wasm memory grown by `mb`, one byte written per page: the first pass faults every page
+  // in, the second (the same pages, now present) is the loop's own cost, taken off.
+  const mem = new WebAssembly.Memory({ initial: 1, maximum: 65536 });
+  mem.grow((workerData.mb << 20) >> 16);
+  const bytes = new Uint8Array(mem.buffer);
+  const pass = (value) => {
+    const t0 = performance.now();
+    for (let i = 0; i < bytes.length; i += PAGE_BYTES) bytes[i] = value;
+    return performance.now() - t0;
+  };
+  const first = pass(1);
+  const again = pass(2);
+  parentPort.postMessage({ us_per_page: (1000 * (first - again)) / (bytes.length / PAGE_BYTES) });
+}
+
+/** What one fresh page of wasm memory costs (µs): the median of `runs` fresh workers, each
+ *  touching `mb` MB of a new memory for the first time. */
+export async function freshPageMicros(runs = 5, mb = 64) {
+  const each = [];
+  for (let i = 0; i < runs; i++) {
+    const worker = new Worker(new URL(import.meta.url), { workerData: { freshPages: true, mb } });
+    each.push(
+      await new Promise((resolve, reject) => {
+        worker.once('message', (m) => resolve(m.us_per_page));
+        worker.once('error', reject);
+      }),
+    );
+    await worker.terminate();
+  }
+  return median(each);
+}
+
+/** The meta of one generation of `json` in a fresh instance of `module` (glue module `glue`),
+ *  with `memory_bytes`, the instance's memory at the end. */
+export function coldWasmOnce(module, glue, json) {
   return new Promise((resolve, reject) => {
     const worker = new Worker(new URL(import.meta.url), {
       workerData: { coldTree: true, module, glue, json },
@@ -52,8 +93,21 @@ function summary(metas, vertices) {
   };
 }
 
-/** The `cold` record of each case (`{ name, values, args }`): native and wasm, `runs` each. */
-export async function benchCold(sylva, module, glue, cases, runs) {
+/** The cold generations' fresh memory: the median memory the instance grew to (MB), and what
+ *  faulting in that many pages costs at `pageMicros` µs a page (ms, and µs per bark vertex). */
+export function freshMemory(metas, vertices, pageMicros) {
+  const bytes = median(metas.map((m) => m.memory_bytes));
+  const ms = (bytes / PAGE_BYTES) * pageMicros * 1e-3;
+  return {
+    memory_mb: bytes / 1e6,
+    fresh_pages_ms: ms,
+    fresh_pages_us_per_vertex: (1000 * ms) / vertices,
+  };
+}
+
+/** The `cold` record of each case (`{ name, values, args }`): native and wasm, `runs` each.
+ *  `pageMicros`: the machine's cost of a fresh page ([`freshPageMicros`]). */
+export async function benchCold(sylva, module, glue, cases, runs, pageMicros) {
   const threaded = threadedModule();
   const out = [];
   for (const c of cases) {
@@ -78,7 +132,7 @@ export async function benchCold(sylva, module, glue, cases, runs) {
       preset: c.name,
       vertices,
       native: summary(native, vertices),
-      wasm: summary(wasm, vertices),
+      wasm: { ...summary(wasm, vertices), ...freshMemory(wasm, vertices, pageMicros) },
       wasm_threads: { ...summary(fresh, vertices), repeated: summary(repeated, vertices) },
       same_hash: [...native, ...fresh, ...repeated].every((n) => n.hash === wasm[0].hash),
     });

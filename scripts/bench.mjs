@@ -8,7 +8,7 @@ import { tmpdir } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import { benchBrowser } from './bench-browser.mjs';
-import { benchBatch, benchCold } from './bench-cold.mjs';
+import { benchBatch, benchCold, freshPageMicros } from './bench-cold.mjs';
 import { median } from './bench-stats.mjs';
 import { nativeCli } from './native-cli.mjs';
 
@@ -104,7 +104,8 @@ for (const preset of cases) {
 // native and wasm, 3 runs each) and a native batch of 100 default trees on every core
 // (bench-cold.mjs).
 const presetCases = cases.filter((c) => c.args[0] === '--preset');
-const cold = await benchCold(sylva, wasmModule, wasmGlue.href, presetCases, 3);
+const freshPageUs = await freshPageMicros();
+const cold = await benchCold(sylva, wasmModule, wasmGlue.href, presetCases, 3, freshPageUs);
 const batch = benchBatch(sylva, 100);
 
 // Incremental regeneration (the worker's session), default tree in wasm: an edit of each stage,
@@ -172,7 +173,7 @@ if (typeof wasm.Session === 'function') {
 execFileSync('npm', ['run', 'build', '-w', 'web'], { cwd: root, stdio: 'ignore' });
 const browser = await benchBrowser(runs);
 // With --json everything goes into this one object, printed at the end.
-const report = { runs, results, cold, batch, incremental, browser };
+const report = { runs, results, fresh_page_us: freshPageUs, cold, batch, incremental, browser };
 
 if (!asJson) {
   const inc = Object.entries(incremental).filter(([, v]) => typeof v === 'object');
@@ -213,17 +214,23 @@ if (!asJson) {
   const mv = (x) => (x / 1e6).toFixed(1).padStart(7);
   console.log(
     'Cold path (a whole generation, nothing kept from an earlier tree; medians of 3; µs per bark vertex, ms):\n' +
-      'preset            vertices | native µs/v      ms | wasm µs/v      ms | 2 threads µs/v      ms  repeated ms',
+      'preset            vertices | native µs/v      ms | wasm µs/v      ms   memory MB  pages ms | 2 threads µs/v      ms  repeated ms',
   );
   for (const c of cold) {
     console.log(
       `${c.preset.padEnd(16)} ${String(c.vertices).padStart(9)} |${c.native.us_per_vertex.toFixed(3).padStart(11)}${c.native.median_ms.toFixed(1).padStart(8)} |` +
-        `${c.wasm.us_per_vertex.toFixed(3).padStart(10)}${c.wasm.median_ms.toFixed(1).padStart(8)} |` +
+        `${c.wasm.us_per_vertex.toFixed(3).padStart(10)}${c.wasm.median_ms.toFixed(1).padStart(8)}` +
+        `${c.wasm.memory_mb.toFixed(1).padStart(12)}${c.wasm.fresh_pages_ms.toFixed(1).padStart(10)} |` +
         `${c.wasm_threads.us_per_vertex.toFixed(3).padStart(15)}${c.wasm_threads.median_ms.toFixed(1).padStart(8)}` +
         `${c.wasm_threads.repeated.median_ms.toFixed(1).padStart(13)}` +
         (c.same_hash ? '' : '  HASH MISMATCH'),
     );
   }
+  const floor = median(cold.map((c) => c.wasm.fresh_pages_us_per_vertex));
+  console.log(
+    `A fresh 4 KB page of wasm memory costs ${freshPageUs.toFixed(2)} µs here: faulting in a fresh instance's memory ` +
+      `alone takes a median ${floor.toFixed(3)} µs per bark vertex over the presets ("pages ms").`,
+  );
   console.log(
     `Batch: ${batch.trees} default trees (seeds 1-${batch.trees}) natively on ${batch.threads} threads: ` +
       `${batch.trees_per_second.toFixed(1)} trees/s (${batch.tree_median_ms.toFixed(1)} ms a tree)\n`,
