@@ -98,7 +98,7 @@ pub(crate) fn write(
     }
 }
 
-/// A fresh cut's rim: the bevel ring and the face ring (see [`write`]).
+/// A fresh cut's rim: the bevel ring and the face ring (see [`write`](fn@write)).
 fn write_bevel(
     block: &mut VertexBlock,
     slot: usize,

@@ -4,7 +4,7 @@
 //! in spring (cherry and apple: five petals made by the leaf pipeline, [`meshes`]), catkins
 //! (birch, aspen, willow), the **Fruit** in its months (acorns, samaras, cones, cherries,
 //! apples) and, on a bare deciduous tree in winter, a bud at every shoot tip. When each shows,
-//! at what size and colour, is the species' calendar in [`calendar`]; where, is [`place`].
+//! at what size and colour, is the species' calendar in [`calendar`]; where, is [`place`](mod@place).
 //!
 //! Each kind of part is one [`OrganSet`]: one small mesh in metres drawn once per instance
 //! through a 4×4 matrix and an RGB tint, like the leaves ([`crate::foliage`]), in a plain

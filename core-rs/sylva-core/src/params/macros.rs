@@ -9,15 +9,16 @@
 
 /// Declares the parameters (used once, in `params/registry.rs`). Tree-level entries read
 /// `id: Type = default; [min, max, step] "unit", "Group", "Label", Stage, "description";`
-/// where `Stage` is the pipeline [`Stage`] whose parameter struct holds the field (the first
+/// where `Stage` is the pipeline [`Stage`](super::Stage) whose parameter struct holds the field (the first
 /// stage it affects), and per-level entries (Weber & Penn's `n*`, one value per level 0..3)
 /// `id: Type = [d0, d1, d2, d3]; [min, max, step] "unit", "Label", "description", trunk: bool;`
 /// where `trunk: false` means level 0 (the trunk) has no such parameter. Per-level parameters
-/// all shape the stems: they live in [`SkeletonParams::level`].
+/// all shape the stems: they live in [`SkeletonParams::level`](super::SkeletonParams::level).
 ///
-/// The entries are sorted into one struct per stage ([`SkeletonParams`], [`MeshParams`],
-/// [`FoliageParams`], [`LeafParams`], [`ViewerParams`]) by a recursive walk (`@split`); the
-/// registry keeps the table's order.
+/// The entries are sorted into one struct per stage ([`SkeletonParams`](super::SkeletonParams),
+/// [`MeshParams`](super::MeshParams), [`FoliageParams`](super::FoliageParams),
+/// [`LeafParams`](super::LeafParams), [`ViewerParams`](super::ViewerParams)) by a recursive walk
+/// (`@split`); the registry keeps the table's order.
 macro_rules! define_params {
     (tree { $($tree:tt)* } level { $($level:tt)* }) => {
         define_params!(@split [] [] [] [] [] $($tree)*);

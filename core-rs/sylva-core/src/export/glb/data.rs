@@ -25,7 +25,7 @@ pub(super) enum Data<'a> {
     Frames(&'a TreeMesh),
     /// [`Data::Frames`] from given normals (3 floats each) and tangents (4 floats, `w` = ±1).
     FramesOf(&'a [f32], &'a [f32]),
-    /// The bark's colours (4 bytes per vertex, [`crate::export::BarkTint`], when `Some(bounds)`)
+    /// The bark's colours (4 bytes per vertex, [`BarkTint`](crate::export::tint::BarkTint), when `Some(bounds)`)
     /// followed by its wind data (16 bytes per vertex, [`WindCodec`], when `Some`): two views
     /// written in one pass over the wind records.
     BarkExtras(&'a TreeMesh, Option<Bounds>, Option<WindCodec>),

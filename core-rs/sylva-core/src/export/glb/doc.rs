@@ -245,6 +245,6 @@ pub(super) struct VertexExtras<'a> {
 pub(super) enum Colors<'a> {
     /// RGBA8 per vertex.
     Bytes(&'a [u8]),
-    /// The bark tint of the mesh with these bounds ([`crate::export::BarkTint`]).
+    /// The bark tint of the mesh with these bounds ([`BarkTint`](crate::export::tint::BarkTint)).
     Bark(Bounds),
 }

@@ -1,7 +1,7 @@
 //! The edit list's JSON: the `"edits"` array of the parameters' JSON, and the document
 //! `{"version": 1, "edits": [...]}` the CLI's `--edits FILE` and the app's export use. Strict:
 //! unknown ops and fields, wrong types and counts past the limits are errors naming the edit and
-//! field; the parsed list is then [`validate`](super::validate)d.
+//! field; the parsed list is then [`validate`](fn@super::validate)d.
 
 use super::validate::{check_count, check_points, validate};
 use super::{
