@@ -9,6 +9,7 @@
 
 #[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
 pub mod helpers;
+pub mod prefault;
 
 /// Whether this build runs jobs on threads it starts itself (`std::thread`): native builds.
 const SPAWNS: bool = !cfg!(target_arch = "wasm32");

@@ -3,14 +3,25 @@
 
 use super::{Material, MeshGroup, TreeMesh, WIND_STRIDE};
 use crate::math;
+use crate::par::prefault::{self, Prefault};
 
 /// Appends geometry to a [`TreeMesh`] and keeps the material groups. A builder made with
 /// [`MeshBuilder::with_wind`] keeps [`TreeMesh::wind`] in step with the vertices: every way of
 /// adding vertices adds their wind records too (zeros unless given).
 pub struct MeshBuilder {
+    /// Another thread faulting in the buffers' reserved memory ([`MeshBuilder::prefault`]);
+    /// declared first, so that it stops before the buffers are dropped.
+    prefault: Option<Prefault>,
     mesh: TreeMesh,
     wind: bool,
 }
+
+/// The buffers [`MeshBuilder::prefault`] hands to another thread, as regions of a [`Prefault`].
+const POSITIONS: usize = 0;
+const NORMALS: usize = 1;
+const UVS: usize = 2;
+const WIND: usize = 3;
+const INDICES: usize = 4;
 
 /// A block of freshly appended, zeroed vertices (see [`MeshBuilder::alloc_vertices`]).
 pub struct VertexBlock<'a> {
@@ -51,6 +62,7 @@ impl MeshBuilder {
                 shade: Vec::new(),
             },
             wind: false,
+            prefault: None,
         }
     }
 
@@ -60,6 +72,71 @@ impl MeshBuilder {
         b.mesh.wind = Vec::with_capacity(vertices * WIND_STRIDE);
         b.wind = true;
         b
+    }
+
+    /// Has another thread fault in the memory reserved for the vertices and for the first
+    /// `indices` indices ahead of this builder's writes ([`crate::par::prefault`]), when the
+    /// code around offers one (the other thread of the bark's [`crate::par::join`] with the
+    /// leaves) and the reservation is worth it. The bytes written are the same either way.
+    pub fn prefault(&mut self, indices: usize) {
+        if self.prefault.is_some() || !prefault::wanted() {
+            return;
+        }
+        let m = &mut self.mesh;
+        fn spare<T>(v: &mut Vec<T>, most: usize) -> (usize, usize) {
+            let size = std::mem::size_of::<T>();
+            (v.as_mut_ptr() as usize + v.len() * size, (v.capacity() - v.len()).min(most) * size)
+        }
+        let regions = [
+            spare(&mut m.positions, usize::MAX),
+            spare(&mut m.normals, usize::MAX),
+            spare(&mut m.uvs, usize::MAX),
+            spare(&mut m.wind, usize::MAX),
+            spare(&mut m.indices, indices),
+        ];
+        if regions.iter().map(|r| r.1).sum::<usize>() < prefault::MIN_BYTES {
+            prefault::withdraw();
+            return;
+        }
+        let (pf, toucher) = Prefault::new(&regions);
+        self.prefault = Some(pf);
+        prefault::offer(toucher);
+    }
+
+    /// Stops the thread faulting in the buffers ([`MeshBuilder::prefault`]), so that it is free
+    /// for other work; the buffers' later pages are faulted in by their writers.
+    pub fn end_prefault(&mut self) {
+        self.prefault = None;
+    }
+
+    /// Before the vertex buffers grow to `n` vertices: the pages they reach claimed from the
+    /// prefaulting thread, or that thread stopped if the buffers must move.
+    #[inline]
+    fn grow_vertices(&mut self, n: usize) {
+        let Some(pf) = &mut self.prefault else { return };
+        let m = &self.mesh;
+        let fits = n * 3 <= m.positions.capacity().min(m.normals.capacity()) && n * 2 <= m.uvs.capacity();
+        if !fits || (self.wind && n * WIND_STRIDE > m.wind.capacity()) {
+            self.prefault = None;
+            return;
+        }
+        pf.claim(POSITIONS, m.positions.as_ptr() as usize + n * 12);
+        pf.claim(NORMALS, m.normals.as_ptr() as usize + n * 12);
+        pf.claim(UVS, m.uvs.as_ptr() as usize + n * 8);
+        if self.wind {
+            pf.claim(WIND, m.wind.as_ptr() as usize + n * WIND_STRIDE * 4);
+        }
+    }
+
+    /// [`MeshBuilder::grow_vertices`] for the indices, to `n` of them.
+    #[inline]
+    fn grow_indices(&mut self, n: usize) {
+        let Some(pf) = &mut self.prefault else { return };
+        if n > self.mesh.indices.capacity() {
+            self.prefault = None;
+            return;
+        }
+        pf.claim(INDICES, self.mesh.indices.as_ptr() as usize + n * 4);
     }
 
     /// Index the next vertex will get.
@@ -77,6 +154,7 @@ impl MeshBuilder {
     #[inline]
     pub fn vertex_with_wind(&mut self, p: [f32; 3], n: [f32; 3], uv: [f32; 2], wind: &[f32; WIND_STRIDE]) -> u32 {
         let i = self.next_index();
+        self.grow_vertices(i as usize + 1);
         self.mesh.positions.extend_from_slice(&p);
         self.mesh.normals.extend_from_slice(&n);
         self.mesh.uvs.extend_from_slice(&uv);
@@ -90,6 +168,7 @@ impl MeshBuilder {
     /// stages that fill whole blocks.
     pub fn alloc_vertices(&mut self, n: usize) -> VertexBlock<'_> {
         let first = self.next_index();
+        self.grow_vertices(first as usize + n);
         let m = &mut self.mesh;
         let (p, q, u, w) = (m.positions.len(), m.normals.len(), m.uvs.len(), m.wind.len());
         m.positions.resize(p + 3 * n, 0.0);
@@ -138,12 +217,14 @@ impl MeshBuilder {
     /// Append `n` zeroed indices (a multiple of 3) and return them for filling.
     pub fn alloc_indices(&mut self, n: usize) -> &mut [u32] {
         let start = self.mesh.indices.len();
+        self.grow_indices(start + n);
         self.mesh.indices.resize(start + n, 0);
         &mut self.mesh.indices[start..]
     }
 
     /// Append triangles given as a flat index list (counter-clockwise seen from outside).
     pub fn extend_indices(&mut self, indices: &[u32]) {
+        self.grow_indices(self.mesh.indices.len() + indices.len());
         self.mesh.indices.extend_from_slice(indices);
     }
 
@@ -214,6 +295,7 @@ impl MeshBuilder {
     /// Append one triangle (counter-clockwise seen from outside).
     #[inline]
     pub fn triangle(&mut self, a: u32, b: u32, c: u32) {
+        self.grow_indices(self.mesh.indices.len() + 3);
         self.mesh.indices.extend_from_slice(&[a, b, c]);
     }
 
@@ -233,6 +315,7 @@ impl MeshBuilder {
 
     /// The finished mesh (empty groups dropped).
     pub fn finish(mut self) -> TreeMesh {
+        self.prefault = None;
         self.close_group();
         self.mesh.groups.retain(|g| g.count > 0);
         self.mesh

@@ -88,6 +88,7 @@ pub struct Built {
 pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, SylvaError> {
     let plan = Plan::new(skeleton, p)?;
     let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
+    out.prefault(plan.indices as usize);
     out.begin_group(Material::Bark);
     // Circle tables by number of sides.
     let mut tables: Vec<Option<Vec<(f32, f32, f32)>>> = vec![None; 97];
@@ -105,6 +106,8 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
         sweep.stem(i);
     }
     let Sweep { mut out, meshes, claimed, bridges, stats, blocks, .. } = sweep;
+    // The index pass runs on every thread, the one faulting in the buffers too.
+    out.end_prefault();
     emit_all(&meshes, &claimed, &mut out);
     out.extend_indices(&bridges);
     super::cut_face::emit_faces(&meshes, &mut out);
