@@ -2,7 +2,7 @@
 //!
 //! The first write to each page of fresh memory is a page fault (the kernel maps and zeroes the
 //! page): about 1.4 µs per 4 KB page on the project's machine, a third of a fresh generation in
-//! wasm ([performance](../../../../docs/performance.md)). Faults of one memory are served on
+//! wasm (docs/performance.md, "Where the time goes"). Faults of one memory are served on
 //! both cores at once, so while the bark is swept on one thread, the thread that placed the
 //! leaves can write one byte into each page the bark's buffers have reserved but not yet
 //! filled: the sweep then finds them mapped.
@@ -130,7 +130,8 @@ impl Prefault {
             }
         };
         if need <= hi {
-            self.safe[r] = region.start + want.min(hi) * PAGE;
+            let held = want.min(hi);
+            self.safe[r] = if held == region.pages { usize::MAX } else { region.start + held * PAGE };
             return;
         }
         // The owner has reached the toucher's pages, all of them above the ones it now holds
@@ -256,11 +257,22 @@ thread_local! {
 /// Runs `f` with `mailbox` as this thread's: a [`Toucher`] that code inside `f` [`offer`]s goes
 /// there. The mailbox is closed when `f` returns (a thread waiting in [`Mailbox::run`] goes on).
 pub fn offering<R>(mailbox: &Arc<Mailbox>, f: impl FnOnce() -> R) -> R {
+    /// Restores this thread's mailbox and closes the given one, also when `f` panics (the
+    /// thread waiting in [`Mailbox::run`] must not wait forever).
+    struct Close<'a> {
+        mailbox: &'a Mailbox,
+        before: Option<Arc<Mailbox>>,
+    }
+    impl Drop for Close<'_> {
+        fn drop(&mut self) {
+            let before = self.before.take();
+            MAILBOX.with(|m| *m.borrow_mut() = before);
+            self.mailbox.post(None, true);
+        }
+    }
     let before = MAILBOX.with(|m| m.replace(Some(Arc::clone(mailbox))));
-    let r = f();
-    MAILBOX.with(|m| *m.borrow_mut() = before);
-    mailbox.post(None, true);
-    r
+    let _close = Close { mailbox, before };
+    f()
 }
 
 /// Whether a toucher offered now would reach another thread ([`offering`] is active here).
@@ -352,6 +364,21 @@ mod tests {
             assert_eq!(beside.content_hash(), alone.content_hash(), "{name}");
             assert!(beside.positions == alone.positions && beside.indices == alone.indices, "{name}");
         }
+    }
+
+    #[test]
+    fn a_panic_while_offering_still_releases_the_runner() {
+        let mb = Arc::new(Mailbox::default());
+        let ran = std::thread::scope(|s| {
+            let runner = s.spawn(|| mb.run());
+            let panicked = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                offering(&mb, || panic!("the bark failed"));
+            }));
+            assert!(panicked.is_err());
+            runner.join().expect("runner")
+        });
+        assert_eq!(ran, 0);
+        assert!(!wanted());
     }
 
     #[test]
