@@ -11,7 +11,8 @@
 //! 4. [`Fork::patch_quads`] and [`Fork::crotch`]: the triangles, the crotch rows' end quads
 //!    zipped against the side patches' end columns.
 //!
-//! [`join`] tries the seam's rises ([`RISES`]) in order until every triangle is well wound.
+//! [`join`] tries the seam's rises ([`RISES`]) in order until every triangle is well wound; the
+//! side patches, which do not depend on the rise, are built and checked once.
 
 use super::{seam_copies, split_ring, RISES};
 use crate::math::{atan2, cos, sin, unit_or, PI, TAU};
@@ -137,18 +138,33 @@ pub(crate) fn join(
 ) -> bool {
     let Some(fork) = Fork::new(j, rows, claimed, out) else { return false };
     let (pm, cm) = (j.parent, j.child);
-    let mut verts = Vec::new();
-    for rise in RISES {
+    // The side patches and their quads do not depend on the seam's rise: built and checked
+    // once (when they fold, no rise helps), then written again after each rise's seam.
+    let mut seam = Vec::new();
+    let mut patches = Vec::new();
+    fork.seam(out, RISES[0], &mut seam);
+    fork.side_patches(out, &mut patches);
+    debug_assert_eq!(fork.first_new as usize + seam.len() + patches.len(), fork.end as usize);
+    write(out, &seam);
+    write(out, &patches);
+    let mut patch_tris = Vec::new();
+    fork.patch_quads(out, &mut patch_tris);
+    if !well_wound(out, &patch_tris) {
         out.truncate_vertices(fork.first_new);
-        verts.clear();
-        fork.seam(out, rise, &mut verts);
-        fork.side_patches(out, &mut verts);
-        debug_assert_eq!(fork.first_new as usize + verts.len(), fork.end as usize);
-        write(out, &verts);
+        return false;
+    }
+    for (k, rise) in RISES.into_iter().enumerate() {
+        if k > 0 {
+            out.truncate_vertices(fork.first_new);
+            seam.clear();
+            fork.seam(out, rise, &mut seam);
+            write(out, &seam);
+            write(out, &patches);
+        }
         tris.clear();
-        fork.patch_quads(out, tris);
+        tris.extend_from_slice(&patch_tris);
         fork.crotch(out, tris, rise);
-        if well_wound(out, tris)
+        if well_wound(out, &tris[patch_tris.len()..])
             && out.unwrap_u(tris, seam_copies(pm.sides), |i, k| pm.seam_twin(i, k).or_else(|| cm.seam_twin(i, k)))
         {
             for c in 0..fork.n {
@@ -319,8 +335,12 @@ impl Fork {
                     [p0, p0 + t0 * (0.4 * len), p3 - f.tangent * (0.4 * len), p3]
                 })
                 .collect();
+            let mut at: Vec<(Vec3, Vec3)> = Vec::with_capacity(h + 1);
             for li in 0..self.rows - 1 {
                 let u = (li + 1) as f32 / self.rows as f32;
+                // Each column's point and direction on this loop, once.
+                at.clear();
+                at.extend(cols.iter().map(|c| bezier(c, u)));
                 for slot in 0..p.width(h) {
                     // Column of the slot, and whether it is the seam copy's right-end twin.
                     let (e, right) = match (p.wraps, p.start + slot) {
@@ -328,8 +348,8 @@ impl Fork {
                         (true, cu) if cu == n => (slot, true),
                         _ => (slot, false),
                     };
-                    let (pos, along) = bezier(&cols[e], u);
-                    let around = bezier(&cols[(e + 1).min(h)], u).0 - bezier(&cols[e.saturating_sub(1)], u).0;
+                    let (pos, along) = at[e];
+                    let around = at[(e + 1).min(h)].0 - at[e.saturating_sub(1)].0;
                     let normal = unit_or(around.cross(along), || unit_or(pos - f.centre, || self.up));
                     let (bottom, top) = (p.ring(self.s_first, e, right, n), p.ring(side.ring, e, right, n));
                     let (w0, mut wind) = (out.wind_at(bottom), out.wind_at(top));

@@ -117,9 +117,14 @@ impl Collar {
             for c in 0..stride {
                 let m = c % nr;
                 let k = li * nr + m;
-                let around = sc.pos[li * nr + (m + 1) % nr] - sc.pos[li * nr + (m + nr - 1) % nr];
-                let radial = sc.pos[k] - self.ring.centre;
-                let collar = unit_or(around.cross(sc.along[k]), || unit_or(radial, || self.ring.normal));
+                // The copy of the footprint loop has its normals, computed for loop 0.
+                let collar = if copy {
+                    sc.collar_n[m]
+                } else {
+                    let around = sc.pos[li * nr + (m + 1) % nr] - sc.pos[li * nr + (m + nr - 1) % nr];
+                    let radial = sc.pos[k] - self.ring.centre;
+                    unit_or(around.cross(sc.along[k]), || unit_or(radial, || self.ring.normal))
+                };
                 if li == 0 && !copy && c < nr {
                     sc.collar_n.push(collar);
                 }
