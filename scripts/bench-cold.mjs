@@ -3,7 +3,8 @@
 //   nothing kept from an earlier tree (no cached leaf, no memory the allocator already holds):
 //   natively a fresh `sylva generate` process per run; in wasm a fresh instance of the module in
 //   a worker thread per run (its memory is freed with the worker). The compiled module is shared,
-//   so V8's compilation is not part of the figure. Reported in µs per bark vertex, with the
+//   so V8's compilation is not part of the figure, nor is its tiering up: one generation of each
+//   tree in each module is run and dropped first (`warmed`). Reported in µs per bark vertex, with the
 //   milliseconds per stage.
 // - `wasm_threads` in each `cold` record: the same in the threaded module (scripts/wasm-threads.sh)
 //   with one helper worker started first, as a cross-origin isolated page runs it: a fresh
@@ -72,9 +73,10 @@ export function coldWasmOnce(module, glue, json) {
     const worker = new Worker(new URL(import.meta.url), {
       workerData: { coldTree: true, module, glue, json },
     });
+    // Resolved once the worker has ended, so that freeing its memory is not part of the next
+    // run's figure.
     worker.once('message', (meta) => {
-      resolve(meta);
-      void worker.terminate();
+      worker.terminate().then(() => resolve(meta), reject);
     });
     worker.once('error', reject);
   });
@@ -91,6 +93,18 @@ function summary(metas, vertices) {
       stages.map((k) => [k, median(metas.map((m) => m.stage_ms[k]))]),
     ),
   };
+}
+
+/** `runs` results of `once()` (each awaited before the next), after one more whose result is
+ *  dropped: V8 compiles a module's functions lazily and tiers the hot ones up while they run (in
+ *  every instance of the module), so the first generations of a tree after a module is compiled
+ *  measure V8's compiler as much as the cold path (the default tree's first fresh threaded
+ *  generation took 45 ms, its later ones 15 to 19). */
+export async function warmed(runs, once) {
+  await once();
+  const out = [];
+  for (let i = 0; i < runs; i++) out.push(await once());
+  return out;
 }
 
 /** The cold generations' fresh memory: the median memory the instance grew to (MB), and what
@@ -116,17 +130,14 @@ export async function benchCold(sylva, module, glue, cases, runs, pageMicros) {
       const g = JSON.parse(execFileSync(sylva, ['generate', ...c.args], { encoding: 'utf8' }));
       native.push({ total_ms: g.total_ms, stage_ms: g.ms, vertices: g.vertices, hash: g.hash });
     }
-    const wasm = [];
-    for (let i = 0; i < runs; i++)
-      wasm.push(await coldWasmOnce(module, glue, JSON.stringify(c.values)));
-    const fresh = [];
-    const repeated = [];
-    for (let i = 0; i < runs; i++) {
-      const json = JSON.stringify(c.values);
+    const json = JSON.stringify(c.values);
+    const wasm = await warmed(runs, () => coldWasmOnce(module, glue, json));
+    const pairs = await warmed(runs, async () => {
       const { metas } = await runThreaded(threaded, { kind: 'generate', jsons: [json, json] });
-      fresh.push(metas[0]);
-      repeated.push(metas[1]);
-    }
+      return metas;
+    });
+    const fresh = pairs.map((m) => m[0]);
+    const repeated = pairs.map((m) => m[1]);
     const vertices = wasm[0].vertices;
     out.push({
       preset: c.name,
