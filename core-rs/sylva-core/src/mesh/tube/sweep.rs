@@ -134,13 +134,14 @@ pub(super) fn sweep(
             let sides = circle.len() - 1;
             let lobe: Vec<f32> =
                 (0..=sides).map(|j| 1.0 + depth * sin(n as f32 * TAU * (j % sides) as f32 / sides as f32)).collect();
-            sweep_with(stem, ts, circle, &|_, j| lobe[j], wind, frames, start, out)
+            sweep_with(stem, ts, circle, Some(&|_, j| lobe[j]), wind, frames, start, out)
         }
-        None => sweep_with(stem, ts, circle, &|_, _| 1.0, wind, frames, start, out),
+        None => sweep_with(stem, ts, circle, None, wind, frames, start, out),
     }
 }
 
-/// Sweep one stem whose ring `r`, column `j` sits at `factor(r, j)` times the ring radius.
+/// Sweep one stem whose ring `r`, column `j` sits at `factor(r, j)` times the ring radius (at
+/// the radius itself without a `factor`: a round tube, most stems, with no call per vertex).
 /// Where the factor varies around the ring, the in-plane normal follows the outline's tangent.
 #[allow(
     clippy::too_many_arguments,
@@ -150,7 +151,7 @@ fn sweep_with(
     stem: &Stem,
     ts: &[f32],
     circle: &[(f32, f32, f32)],
-    factor: &dyn Fn(usize, usize) -> f32,
+    factor: Option<&dyn Fn(usize, usize) -> f32>,
     wind: &StemWind,
     frames: &mut [Frame],
     start: Option<(Vec3, f32)>,
@@ -194,15 +195,17 @@ fn sweep_with(
         if let Some((pt, pr)) = prev {
             v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
         }
-        for (j, f) in ring_factor.iter_mut().enumerate() {
-            *f = factor(r, j);
+        if let Some(factor) = factor {
+            for (j, f) in ring_factor.iter_mut().enumerate() {
+                *f = factor(r, j);
+            }
         }
         let ring = Ring { centre: c, normal, binormal, radius, tilt: tan * slope, inv, v };
         write_ring(
             &mut block,
             r * stride,
             circle,
-            &ring_factor,
+            factor.is_some().then_some(ring_factor.as_slice()),
             &mut plane_normal,
             &ring,
             &wind.record(stem, t, radius),
@@ -264,13 +267,13 @@ struct Ring {
 }
 
 /// Writes one ring's vertices from vertex `slot` of `block`: column `j` at `factors[j]` times
-/// the radius (a round ring when every factor is 1; else the in-plane normals, kept in
+/// the radius (a round ring without factors or when every factor is 1; else the in-plane normals, kept in
 /// `plane_normal`, are perpendicular to the chord between neighbouring columns).
 fn write_ring(
     block: &mut VertexBlock,
     slot: usize,
     circle: &[(f32, f32, f32)],
-    factors: &[f32],
+    factors: Option<&[f32]>,
     plane_normal: &mut [(f32, f32)],
     g: &Ring,
     record: &[f32; WIND_STRIDE],
@@ -284,7 +287,7 @@ fn write_ring(
         w.copy_from_slice(record);
     }
     let (c, normal, binormal, v) = (g.centre, g.normal, g.binormal, g.v);
-    if factors.iter().all(|&f| f == 1.0) {
+    let Some(factors) = factors.filter(|f| f.iter().any(|&f| f != 1.0)) else {
         for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
             let radial = normal * cs + binormal * sn;
             let p = c + radial * g.radius;
@@ -294,7 +297,7 @@ fn write_ring(
             t2.copy_from_slice(&[u, v]);
         }
         return;
-    }
+    };
     // In-plane outline normals: perpendicular to the chord between neighbouring columns.
     let at = |j: usize| {
         let (cs, sn, _) = circle[j];
@@ -420,5 +423,5 @@ pub(super) fn sweep_trunk(
         }
         rings.push(rho.clone());
     }
-    sweep_with(stem, ts, circle, &|r, j| rings[r][j], wind, frames, start, out)
+    sweep_with(stem, ts, circle, Some(&|r, j| rings[r][j]), wind, frames, start, out)
 }
