@@ -123,6 +123,11 @@ export function freshMemory(metas, vertices, pageMicros) {
  *  `pageMicros`: the machine's cost of a fresh page ([`freshPageMicros`]). */
 export async function benchCold(sylva, module, glue, cases, runs, pageMicros) {
   const threaded = threadedModule();
+  // The threaded module is compiled here, and V8 tiers its functions up in the background while
+  // they run: in a fresh process the default tree's first fresh generation took 71 ms, the next
+  // five 17-20, then 15 (as every later compile of the same bytes does from its first run). A few
+  // default trees first, then one dropped generation per tree (`warmed`).
+  for (let i = 0; i < 6; i++) await runThreaded(threaded, { kind: 'generate', jsons: ['{}'] });
   const out = [];
   for (const c of cases) {
     const native = [];
