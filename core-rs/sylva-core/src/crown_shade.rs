@@ -104,6 +104,13 @@ impl CrownLight {
     /// saturation checks); the arithmetic is the same operations in the same order.
     #[inline]
     pub fn sky_at(&self, p: Vec3) -> f32 {
+        self.sky_at_inline(p)
+    }
+
+    /// [`CrownLight::sky_at`], inlined into its caller (the bark's occlusion reads it at every
+    /// vertex in one loop, where the field's constants then stay in registers).
+    #[inline(always)]
+    pub fn sky_at_inline(&self, p: Vec3) -> f32 {
         let f = (p - self.min) / self.cell - Vec3::splat(0.5);
         let [nx, ny, nz] = self.n;
         if f.y > (ny - 1) as f32 {
