@@ -267,8 +267,9 @@ struct Ring {
 }
 
 /// Writes one ring's vertices from vertex `slot` of `block`: column `j` at `factors[j]` times
-/// the radius (a round ring without factors or when every factor is 1; else the in-plane normals, kept in
-/// `plane_normal`, are perpendicular to the chord between neighbouring columns).
+/// the radius (a round ring without factors or when every factor is 1; else the in-plane
+/// normals, kept in `plane_normal`, are perpendicular to the chord between neighbouring
+/// columns).
 fn write_ring(
     block: &mut VertexBlock,
     slot: usize,
