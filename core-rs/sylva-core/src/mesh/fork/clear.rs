@@ -13,6 +13,7 @@
 //!
 //! [`Segment::hodograph`]: crate::skeleton::Segment::hodograph
 
+use crate::math::max;
 use crate::skeleton::Stem;
 
 use super::{CLEARANCE, COARSE, STEPS};
@@ -84,10 +85,10 @@ impl Search<'_> {
         let mut rate = 0.0f32;
         for a in ho {
             for b in hc {
-                rate = rate.max((a * ko - b * kc).length());
+                rate = max(rate, (a * ko - b * kc).length());
             }
         }
-        let big = |h: [glam::Vec3; 3]| h.iter().map(|v| v.length()).fold(0.0, f32::max);
+        let big = |h: [glam::Vec3; 3]| h.iter().map(|v| v.length()).fold(0.0, max);
         let (bo, bc) = (big(ho), big(hc));
         // Rounding: the positions' sums (a few units in the last place of their terms), and the
         // parameters' (each `t` within a unit in the last place of 1).
