@@ -53,7 +53,10 @@ pub struct CrownLight {
     min: Vec3,
     cell: f32,
     n: [usize; 3],
-    sky: Vec<f32>,
+    /// For every cell (x fastest, then y, then z), the sky at the eight cell centres a point
+    /// past its own centre is interpolated between: its own, then the next along x, y, and z
+    /// (the last cell's own again at the grid's far side), x fastest; one read per lookup.
+    corners: Vec<[f32; 8]>,
 }
 
 impl CrownLight {
@@ -94,14 +97,34 @@ impl CrownLight {
             accumulate_sky(&depth, n, d, &mut sky);
         }
         sky.iter_mut().for_each(|s| *s /= SKY_DIRECTIONS as f32);
-        Some(CrownLight { min, cell, n, sky })
+        let [nx, ny, nz] = n;
+        let mut corners = Vec::with_capacity(sky.len());
+        for z in 0..nz {
+            for y in 0..ny {
+                for x in 0..nx {
+                    let (x1, y1, z1) = ((x + 1).min(nx - 1), (y + 1).min(ny - 1), (z + 1).min(nz - 1));
+                    let at = |x: usize, y: usize, z: usize| sky[(z * ny + y) * nx + x];
+                    corners.push([
+                        at(x, y, z),
+                        at(x1, y, z),
+                        at(x, y1, z),
+                        at(x1, y1, z),
+                        at(x, y, z1),
+                        at(x1, y, z1),
+                        at(x, y1, z1),
+                        at(x1, y1, z1),
+                    ]);
+                }
+            }
+        }
+        Some(CrownLight { min, cell, n, corners })
     }
 
     /// Sky visibility at `p` (trilinear between cell centres; 1 outside the grid above, the
     /// nearest cell's value beside and below it). The bark's occlusion reads it at every vertex:
-    /// the cell's corners are read from two rows of `x` at a time, and the clamped coordinates
-    /// (0 to 20) truncated through `i32` (what `as usize` gives for them, without its
-    /// saturation checks); the arithmetic is the same operations in the same order.
+    /// the eight values come from one record of `corners`, and the clamped coordinates (0 to 20)
+    /// are truncated through `i32` (what `as usize` gives for them, without its saturation
+    /// checks); the arithmetic is the same operations in the same order.
     #[inline]
     pub fn sky_at(&self, p: Vec3) -> f32 {
         self.sky_at_inline(p)
@@ -111,32 +134,36 @@ impl CrownLight {
     /// vertex in one loop, where the field's constants then stay in registers).
     #[inline(always)]
     pub fn sky_at_inline(&self, p: Vec3) -> f32 {
-        let f = (p - self.min) / self.cell - Vec3::splat(0.5);
-        let [nx, ny, nz] = self.n;
-        if f.y > (ny - 1) as f32 {
-            return 1.0;
-        }
-        // The lower cell centre, the upper one (the last cell's again at the far side) and the
-        // fraction between them, along one axis of `n` cells.
-        let axis = |v: f32, n: usize| {
-            let v = v.clamp(0.0, (n - 1) as f32);
-            let i = v as i32 as usize;
-            (i, (i + 1).min(n - 1), v - i as f32)
-        };
-        let ((x0, x1, tx), (y0, y1, ty), (z0, z1, tz)) = (axis(f.x, nx), axis(f.y, ny), axis(f.z, nz));
-        let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
-        // Row (y, z) of the grid, x from 0 to nx - 1.
-        let row = |y: usize, z: usize| &self.sky[(z * ny + y) * nx..][..nx];
-        let along_x = |r: &[f32]| lerp(r[x0], r[x1], tx);
-        let (x00, x10) = (along_x(row(y0, z0)), along_x(row(y1, z0)));
-        let (x01, x11) = (along_x(row(y0, z1)), along_x(row(y1, z1)));
-        lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz)
+        sky(self.min, self.cell, self.n, &self.corners, p)
     }
 
     /// Brightness for sky visibility `sky`: [`MIN_LIGHT`] in full shade, 1 in the open.
     pub fn light(sky: f32) -> f32 {
         MIN_LIGHT + (1.0 - MIN_LIGHT) * sky
     }
+}
+
+/// [`CrownLight::sky_at`] of the field of cells of `cell` from `min`, `n` cells along each axis
+/// with these `corners`.
+#[inline(always)]
+fn sky(min: Vec3, cell: f32, n: [usize; 3], corners: &[[f32; 8]], p: Vec3) -> f32 {
+    let f = (p - min) / cell - Vec3::splat(0.5);
+    let [nx, ny, nz] = n;
+    if f.y > (ny - 1) as f32 {
+        return 1.0;
+    }
+    // The lower cell centre and the fraction past it, along one axis of `n` cells.
+    let axis = |v: f32, n: usize| {
+        let v = v.clamp(0.0, (n - 1) as f32);
+        let i = v as i32 as usize;
+        (i, v - i as f32)
+    };
+    let ((x0, tx), (y0, ty), (z0, tz)) = (axis(f.x, nx), axis(f.y, ny), axis(f.z, nz));
+    let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
+    let c = &corners[(z0 * ny + y0) * nx + x0];
+    let (x00, x10) = (lerp(c[0], c[1], tx), lerp(c[2], c[3], tx));
+    let (x01, x11) = (lerp(c[4], c[5], tx), lerp(c[6], c[7], tx));
+    lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz)
 }
 
 /// Adds `exp(-optical depth)` toward the sky along `d` (unit, `d.y > 0`) to every cell of
@@ -233,5 +260,38 @@ mod tests {
         darken(&m, &mut c);
         assert!(c.iter().all(|&v| (MIN_LIGHT..=1.0).contains(&v)));
         assert!(c.iter().cloned().fold(1.0f32, f32::min) < 0.6, "the core of the ball is shaded");
+    }
+
+    #[test]
+    fn lookup_matches_trilinear_between_cell_centres() {
+        // A lopsided cloud of leaves, so the grid's axes differ and the edges are crossed.
+        let mut m = Vec::new();
+        let mut r = crate::rng::Rng::new(7, "crown_shade_test");
+        for _ in 0..400 {
+            let p = Vec3::new(2.0 * r.next_f32(), 3.0 + r.next_f32(), 0.7 * r.next_f32());
+            m.extend_from_slice(&leaf_at(p));
+        }
+        let f = CrownLight::from_leaves(&m).unwrap();
+        let [nx, ny, nz] = f.n;
+        let own = |x: usize, y: usize, z: usize| f.corners[(z * ny + y) * nx + x][0];
+        for _ in 0..2000 {
+            let p = Vec3::new(3.0 * r.next_f32() - 0.5, 2.5 + 2.0 * r.next_f32(), 1.5 * r.next_f32() - 0.4);
+            // The lookup spelled out: each axis clamped to the centres, its corners' own values.
+            let g = (p - f.min) / f.cell - Vec3::splat(0.5);
+            if g.y > (ny - 1) as f32 {
+                assert_eq!(f.sky_at(p), 1.0);
+                continue;
+            }
+            let axis = |v: f32, n: usize| {
+                let v = v.clamp(0.0, (n - 1) as f32);
+                let i = v.floor() as usize;
+                (i, (i + 1).min(n - 1), v - i as f32)
+            };
+            let ((x0, x1, tx), (y0, y1, ty), (z0, z1, tz)) = (axis(g.x, nx), axis(g.y, ny), axis(g.z, nz));
+            let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
+            let at_y_z = |y, z| lerp(own(x0, y, z), own(x1, y, z), tx);
+            let want = lerp(lerp(at_y_z(y0, z0), at_y_z(y1, z0), ty), lerp(at_y_z(y0, z1), at_y_z(y1, z1), ty), tz);
+            assert_eq!(f.sky_at(p).to_bits(), want.to_bits(), "{p}");
+        }
     }
 }
