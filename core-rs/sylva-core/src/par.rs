@@ -29,7 +29,12 @@ pub fn threads() -> usize {
     #[cfg(all(target_arch = "wasm32", not(target_feature = "atomics")))]
     return 1;
     #[cfg(not(target_arch = "wasm32"))]
-    std::thread::available_parallelism().map_or(1, |n| n.get()).min(MAX_THREADS)
+    {
+        // Asked once: on Linux the standard library reads the cgroup's CPU quota from files at
+        // every call (1% of a small tree's generation when every stage asked).
+        static MACHINE: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+        *MACHINE.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get()).min(MAX_THREADS))
+    }
 }
 
 thread_local! {
