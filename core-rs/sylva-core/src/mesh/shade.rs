@@ -98,5 +98,24 @@ fn vertex_light(p: Vec3, holes: &[Hole], crown: Option<&CrownLight>, hole_size: 
 /// A light of 0..1 as the occlusion byte.
 #[inline(always)]
 fn to_byte(light: f32) -> u8 {
-    (light.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+    // 0.5 to 255.5 (or NaN): through `i32` the same byte as `as u8`, without its saturation.
+    (light.clamp(0.0, 1.0) * 255.0 + 0.5) as i32 as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::to_byte;
+
+    #[test]
+    fn byte_through_i32_is_the_saturating_cast() {
+        let mut lights = vec![f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -0.0, 0.0, 1.0, 2.0, -1.0];
+        lights.extend((0..=100_000).map(|i| i as f32 / 100_000.0));
+        lights.extend((0..=255).flat_map(|k| {
+            let edge = (k as f32 + 0.5) / 255.0;
+            [edge, f32::from_bits(edge.to_bits() - 1), f32::from_bits(edge.to_bits() + 1)]
+        }));
+        for l in lights {
+            assert_eq!(to_byte(l), (l.clamp(0.0, 1.0) * 255.0 + 0.5) as u8, "{l}");
+        }
+    }
 }
