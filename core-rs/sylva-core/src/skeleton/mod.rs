@@ -268,7 +268,8 @@ impl Builder<'_> {
             unit.push(q - s.base);
             true
         });
-        let fits = |len: f32| unit.iter().all(|&d| inside_prune_envelope(p, self.scale, s.base + d * len));
+        // From the tip down: a stem too long leaves the envelope at its tip first, most often.
+        let fits = |len: f32| unit.iter().rev().all(|&d| inside_prune_envelope(p, self.scale, s.base + d * len));
         if fits(s.length) {
             return s.length;
         }

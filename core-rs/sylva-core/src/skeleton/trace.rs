@@ -156,9 +156,16 @@ impl Tracer<'_> {
 pub(super) fn inside_prune_envelope(p: &SkeletonParams, scale: f32, q: Vec3) -> bool {
     let denom = (scale * (1.0 - p.base_size)).max(1e-6);
     let ratio = (scale - q.y) / denom;
+    let lateral = (q.x * q.x + q.z * q.z).sqrt() / scale;
+    // The envelope's power of a base of at most 1 (give or take its rounding) is at most 1, so
+    // the width never exceeds PruneWidth by a thousandth: a point beyond that is outside
+    // without the power (the same answer; most points a pruned stem's search tries).
+    if !(lateral < 1.001 * p.prune_width) {
+        return false;
+    }
     let width =
         p.prune_width * crate::crown::prune_envelope(ratio, p.prune_width_peak, p.prune_power_low, p.prune_power_high);
-    (q.x * q.x + q.z * q.z).sqrt() / scale < width
+    lateral < width
 }
 
 /// Weber & Penn AttractionUp: turn the stem toward the sky by `attraction * declination / segs`
@@ -173,4 +180,43 @@ fn attract_up(frame: Quat, attraction: f32, segs: usize) -> Quat {
     }
     let turn = (attraction * declination / segs as f32).clamp(-0.9 * (PI - declination), 0.9 * declination);
     (math::quat_axis_angle(axis.normalize(), turn) * frame).normalize()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`inside_prune_envelope`] without its shortcut.
+    fn inside_by_the_formula(p: &SkeletonParams, scale: f32, q: Vec3) -> bool {
+        let ratio = (scale - q.y) / (scale * (1.0 - p.base_size)).max(1e-6);
+        let width = p.prune_width
+            * crate::crown::prune_envelope(ratio, p.prune_width_peak, p.prune_power_low, p.prune_power_high);
+        (q.x * q.x + q.z * q.z).sqrt() / scale < width
+    }
+
+    #[test]
+    fn the_prune_shortcut_gives_the_formulas_answer() {
+        let mut p = crate::TreeParams::default().skeleton;
+        let mut rng = crate::rng::Rng::new(3, "prune_test");
+        let scale = 12.0;
+        for (peak, low, high) in
+            [(0.5, 0.5, 0.5), (0.0, 0.0, 10.0), (1.0, 10.0, 0.0), (0.3, 1.0, 2.0), (0.999, 0.01, 7.0)]
+        {
+            (p.prune_width_peak, p.prune_power_low, p.prune_power_high) = (peak, low, high);
+            for width in [0.01, 0.5, 5.0] {
+                p.prune_width = width;
+                for _ in 0..20_000 {
+                    let y = scale * (1.2 * rng.next_f32() - 0.1);
+                    // Around the widest point most of all, where the shortcut's bound is tight.
+                    let r = scale
+                        * width
+                        * (0.98 + 0.04 * rng.next_f32())
+                        * if rng.next_f32() < 0.5 { 1.0 } else { rng.next_f32() };
+                    let a = std::f32::consts::TAU * rng.next_f32();
+                    let q = Vec3::new(r * a.cos(), y, r * a.sin());
+                    assert_eq!(inside_prune_envelope(&p, scale, q), inside_by_the_formula(&p, scale, q), "{q}");
+                }
+            }
+        }
+    }
 }
