@@ -160,7 +160,7 @@ pub(super) fn inside_prune_envelope(p: &SkeletonParams, scale: f32, q: Vec3) -> 
     // The envelope's power of a base of at most 1 (give or take its rounding) is at most 1, so
     // the width never exceeds PruneWidth by a thousandth: a point beyond that is outside
     // without the power (the same answer; most points a pruned stem's search tries).
-    if !(lateral < 1.001 * p.prune_width) {
+    if lateral >= 1.001 * p.prune_width {
         return false;
     }
     let width =
@@ -213,7 +213,7 @@ mod tests {
                         * (0.98 + 0.04 * rng.next_f32())
                         * if rng.next_f32() < 0.5 { 1.0 } else { rng.next_f32() };
                     let a = std::f32::consts::TAU * rng.next_f32();
-                    let q = Vec3::new(r * a.cos(), y, r * a.sin());
+                    let q = Vec3::new(r * crate::math::cos(a), y, r * crate::math::sin(a));
                     assert_eq!(inside_prune_envelope(&p, scale, q), inside_by_the_formula(&p, scale, q), "{q}");
                 }
             }
