@@ -21,6 +21,7 @@ pub const CAVITY_FLOOR: f32 = 0.06;
 
 /// How much light the inside of `hole` lets reach `p` (1 outside the cavity). `stem_radius` is
 /// the local radius of the stem it is cut into.
+#[inline]
 pub fn cavity_light(hole: &Hole, stem_radius: f32, p: Vec3) -> f32 {
     let rel = p - hole.centre;
     let below = -rel.dot(hole.normal);
@@ -72,7 +73,20 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
                     *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
                 }
             }
-            _ => {
+            // Holes and the light field (an old tree): the field read inline, each hole's
+            // stem radius divided out once, not at every vertex.
+            (Some(c), false) => {
+                let cavities: Vec<(&Hole, f32)> = holes.iter().map(|h| (h, h.radius / hole_size.max(1e-3))).collect();
+                for (p, o) in positions.chunks_exact(3).zip(part) {
+                    let p = Vec3::new(p[0], p[1], p[2]);
+                    let mut light = CrownLight::light(c.sky_at_inline(p));
+                    for &(h, stem_radius) in &cavities {
+                        light *= cavity_light(h, stem_radius, p);
+                    }
+                    *o = to_byte(light);
+                }
+            }
+            (None, _) => {
                 for (p, o) in positions.chunks_exact(3).zip(part) {
                     *o = vertex_light(Vec3::new(p[0], p[1], p[2]), holes, crown, hole_size);
                 }
