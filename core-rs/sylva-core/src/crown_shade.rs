@@ -178,11 +178,14 @@ fn accumulate_sky(depth: &[f32], n: [usize; 3], d: Vec3, sky: &mut [f32]) {
     // Optical depth from the centre of each cell of the layer above out of the grid.
     let mut above = vec![0.0f32; nx * nz];
     let mut here = vec![0.0f32; nx * nz];
+    // Where the ray from a cell reaches the layer above depends on its x (or z) alone, the
+    // same for every layer: the two columns (None outside the grid) and the fraction between.
+    let xs: Vec<Reach> = (0..nx).map(|x| Reach::of(x as f32 + step.x, nx)).collect();
+    let zs: Vec<Reach> = (0..nz).map(|z| Reach::of(z as f32 + step.z, nz)).collect();
     for y in (0..ny).rev() {
-        for z in 0..nz {
-            for x in 0..nx {
-                let (fx, fz) = (x as f32 + step.x, z as f32 + step.z);
-                let up = if y + 1 < ny { bilinear(&above, nx, nz, fx, fz) } else { 0.0 };
+        for (z, rz) in zs.iter().enumerate() {
+            for (x, rx) in xs.iter().enumerate() {
+                let up = if y + 1 < ny { bilinear(&above, nx, rx, rz) } else { 0.0 };
                 let own = depth[at(y, x, z)] * len;
                 // exp(-0) is 1 exactly: most cells (the margin, the air above and around the
                 // crown) see the open sky, and the software exp is the sweep's cost.
@@ -195,20 +198,32 @@ fn accumulate_sky(depth: &[f32], n: [usize; 3], d: Vec3, sky: &mut [f32]) {
     }
 }
 
-/// `layer` (`nx × nz`) at fractional cell (fx, fz), 0 outside.
-fn bilinear(layer: &[f32], nx: usize, nz: usize, fx: f32, fz: f32) -> f32 {
-    let (x0, z0) = (fx.floor(), fz.floor());
-    let (tx, tz) = (fx - x0, fz - z0);
-    let get = |x: f32, z: f32| {
-        if x < 0.0 || z < 0.0 || x >= nx as f32 || z >= nz as f32 {
-            0.0
-        } else {
-            layer[z as usize * nx + x as usize]
-        }
+/// Where a ray reaches a layer along one axis: at fractional cell `f`, between cells
+/// `floor(f)` and the next (None outside the `n` cells), `t` past the first.
+struct Reach {
+    lo: Option<usize>,
+    hi: Option<usize>,
+    t: f32,
+}
+
+impl Reach {
+    fn of(f: f32, n: usize) -> Reach {
+        let f0 = f.floor();
+        let cell = |c: f32| (c >= 0.0 && c < n as f32).then_some(c as usize);
+        Reach { lo: cell(f0), hi: cell(f0 + 1.0), t: f - f0 }
+    }
+}
+
+/// `layer` (`nx` cells along x) at the fractional cell (`x`, `z`), 0 outside.
+#[inline]
+fn bilinear(layer: &[f32], nx: usize, x: &Reach, z: &Reach) -> f32 {
+    let get = |x: Option<usize>, z: Option<usize>| match (x, z) {
+        (Some(x), Some(z)) => layer[z * nx + x],
+        _ => 0.0,
     };
-    let a = get(x0, z0) + (get(x0 + 1.0, z0) - get(x0, z0)) * tx;
-    let b = get(x0, z0 + 1.0) + (get(x0 + 1.0, z0 + 1.0) - get(x0, z0 + 1.0)) * tx;
-    a + (b - a) * tz
+    let a = get(x.lo, z.lo) + (get(x.hi, z.lo) - get(x.lo, z.lo)) * x.t;
+    let b = get(x.lo, z.hi) + (get(x.hi, z.hi) - get(x.lo, z.hi)) * x.t;
+    a + (b - a) * z.t
 }
 
 /// Multiplies each leaf's RGB tint (3 floats per leaf, matching `matrices`) by its crown light.
@@ -292,6 +307,53 @@ mod tests {
             let at_y_z = |y, z| lerp(own(x0, y, z), own(x1, y, z), tx);
             let want = lerp(lerp(at_y_z(y0, z0), at_y_z(y1, z0), ty), lerp(at_y_z(y0, z1), at_y_z(y1, z1), ty), tz);
             assert_eq!(f.sky_at(p).to_bits(), want.to_bits(), "{p}");
+        }
+    }
+
+    #[test]
+    fn the_sky_sweep_matches_its_plain_formula() {
+        // The sweep spelled out without its per-column reach: each cell's point in the layer
+        // above found and read (0 outside) at every cell.
+        fn plain(depth: &[f32], [nx, ny, nz]: [usize; 3], d: Vec3) -> Vec<f32> {
+            let step = d / d.y;
+            let len = step.length();
+            let at = |y: usize, x: usize, z: usize| (z * ny + y) * nx + x;
+            let (mut sky, mut above, mut here) = (vec![0.0; depth.len()], vec![0.0f32; nx * nz], vec![0.0f32; nx * nz]);
+            for y in (0..ny).rev() {
+                for z in 0..nz {
+                    for x in 0..nx {
+                        let (fx, fz) = (x as f32 + step.x, z as f32 + step.z);
+                        let get = |x: f32, z: f32| {
+                            if x < 0.0 || z < 0.0 || x >= nx as f32 || z >= nz as f32 {
+                                0.0
+                            } else {
+                                above[z as usize * nx + x as usize]
+                            }
+                        };
+                        let (x0, z0) = (fx.floor(), fz.floor());
+                        let (tx, tz) = (fx - x0, fz - z0);
+                        let a = get(x0, z0) + (get(x0 + 1.0, z0) - get(x0, z0)) * tx;
+                        let b = get(x0, z0 + 1.0) + (get(x0 + 1.0, z0 + 1.0) - get(x0, z0 + 1.0)) * tx;
+                        let up = if y + 1 < ny { a + (b - a) * tz } else { 0.0 };
+                        let own = depth[at(y, x, z)] * len;
+                        let optical = 0.5 * own + up;
+                        sky[at(y, x, z)] += if optical == 0.0 { 1.0 } else { crate::math::exp(-optical) };
+                        here[z * nx + x] = own + up;
+                    }
+                }
+                std::mem::swap(&mut above, &mut here);
+            }
+            sky
+        }
+        let n = [7, 5, 6];
+        let mut r = crate::rng::Rng::new(11, "sky_sweep_test");
+        let depth: Vec<f32> =
+            (0..7 * 5 * 6).map(|_| if r.next_f32() < 0.5 { 0.0 } else { 2.0 * r.next_f32() }).collect();
+        for d in sky_directions() {
+            let mut sky = vec![0.0; depth.len()];
+            accumulate_sky(&depth, n, d, &mut sky);
+            let want = plain(&depth, n, d);
+            assert!(sky.iter().zip(&want).all(|(a, b)| a.to_bits() == b.to_bits()), "{d}");
         }
     }
 }
