@@ -82,6 +82,13 @@ pub(super) fn bent_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
         out[first..].sort_by(f32::total_cmp);
     }
     drop_close(out, first);
+    ring_feet(out, first, feet, pad);
+}
+
+/// The rings `out[first..]` (sorted) completed around `feet` (sorted by `t_lo`): a ring within
+/// [`weld::REACH`] footprint lengths below and above each footprint, and one between two
+/// footprints side by side around the stem that no ring separates ([`bent_rings`]).
+fn ring_feet(out: &mut Vec<f32>, first: usize, feet: &[weld::Junction], pad: f32) {
     let has_ring = |out: &[f32], lo: f32, hi: f32| {
         let k = out.partition_point(|&x| x < lo);
         k < out.len() && out[k] <= hi
@@ -94,9 +101,19 @@ pub(super) fn bent_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
         if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
             insert_sorted(out, first, f.t_hi);
         }
+        // A ring lies between e and f exactly when the last ring at or below f's start is at or
+        // above e's end: found once for f, then kept as the midpoints go in (each above it and
+        // at most f's start), rather than searched for every earlier foot.
+        let below = |out: &[f32]| {
+            let k = out.partition_point(|&x| x <= f.t_lo);
+            k.checked_sub(1).map(|k| out[k])
+        };
+        let mut last = below(&out[first..]);
         for e in &feet[..i] {
-            if e.t_hi <= f.t_lo && f.side_by_side(e, pad) && !has_ring(&out[first..], e.t_hi, f.t_lo) {
-                insert_sorted(out, first, 0.5 * (e.t_hi + f.t_lo));
+            if e.t_hi <= f.t_lo && last.is_none_or(|g| e.t_hi > g) && f.side_by_side(e, pad) {
+                let mid = 0.5 * (e.t_hi + f.t_lo);
+                insert_sorted(out, first, mid);
+                last = Some(mid);
             }
         }
     }
@@ -123,4 +140,66 @@ pub(super) fn start_and_tip(stem: &Stem, start: f32, out: &mut Vec<f32>, first: 
     // Close to the tip (a quarter of the last spacing before it), leaving room for the apex.
     let last = *out.last().expect("at least one ring");
     out.push(last + 0.75 * (1.0 - last));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// [`ring_feet`] spelled out: every earlier foot searched for a ring between it and the next.
+    fn plain(out: &mut Vec<f32>, first: usize, feet: &[weld::Junction], pad: f32) {
+        let has_ring = |out: &[f32], lo: f32, hi: f32| {
+            let k = out.partition_point(|&x| x < lo);
+            k < out.len() && out[k] <= hi
+        };
+        for (i, f) in feet.iter().enumerate() {
+            let reach = weld::REACH * (f.t_hi - f.t_lo);
+            if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
+                insert_sorted(out, first, f.t_lo);
+            }
+            if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
+                insert_sorted(out, first, f.t_hi);
+            }
+            for e in &feet[..i] {
+                if e.t_hi <= f.t_lo && f.side_by_side(e, pad) && !has_ring(&out[first..], e.t_hi, f.t_lo) {
+                    insert_sorted(out, first, 0.5 * (e.t_hi + f.t_lo));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn feet_get_the_rings_of_the_plain_search() {
+        let mut r = crate::rng::Rng::new(5, "ring_feet_test");
+        for case in 0..300 {
+            // Crowded stems (many short footprints around it) and sparse ones.
+            let count = 1 + (r.next_f32() * if case % 3 == 0 { 120.0 } else { 12.0 }) as usize;
+            let mut feet: Vec<weld::Junction> = (0..count)
+                .map(|_| {
+                    let t_lo = r.next_f32();
+                    weld::Junction {
+                        parent: 0,
+                        t_start: 0.0,
+                        t_lo,
+                        t_hi: t_lo + 0.002 + 0.05 * r.next_f32(),
+                        foot: 0.01,
+                        phi: crate::math::TAU * r.next_f32(),
+                        beta: 0.6 * r.next_f32(),
+                        fork: false,
+                    }
+                })
+                .collect();
+            feet.sort_by(|a, b| a.t_lo.total_cmp(&b.t_lo));
+            let mut rings = vec![9.0];
+            let mut t = 0.0;
+            while t < 1.0 {
+                rings.push(t);
+                t += 0.02 + 0.2 * r.next_f32();
+            }
+            let (mut fast, mut slow) = (rings.clone(), rings);
+            ring_feet(&mut fast, 1, &feet, 0.1);
+            plain(&mut slow, 1, &feet, 0.1);
+            assert_eq!(fast, slow, "case {case}");
+        }
+    }
 }
