@@ -92,7 +92,7 @@ pub fn generate_with_progress(
     clock: &dyn Clock,
     progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<Generated, SylvaError> {
-    let mut session = session::Session::new();
+    let mut session = session::Session::one_shot();
     session.update(params, session::Quality::Full, clock, progress)?;
     Ok(session.into_generated(clock).expect("a full update gives a full tree"))
 }

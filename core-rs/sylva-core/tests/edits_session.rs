@@ -112,3 +112,24 @@ fn a_failed_stroke_keeps_the_tree_and_the_next_update_is_right() {
     // The cache forgot the failed stroke: a longer stroke of the first brush is still right.
     full(&mut session, &[Edit::Paint(stroke(9))]);
 }
+
+#[test]
+fn a_one_shot_session_updated_again_builds_its_tree_again() {
+    // `generate`'s session hands its stems on instead of keeping copies: a second update (which
+    // `generate` never makes) finds nothing kept and must build everything again.
+    let mut session = Session::one_shot();
+    let g0 = generate(&TreeParams::default()).expect("the default tree");
+    let s = &g0.skeleton.stems[a_branch(&g0.skeleton)];
+    let at = s.point_at(0.6 * s.length).0;
+    let bend = Edit::Bend(Bend { at, to: at + Vec3::new(0.0, -0.4, 0.0) });
+    let lists =
+        [vec![], vec![Edit::Paint(stroke(12))], vec![bend.clone()], vec![bend.clone(), Edit::Paint(stroke(8))], vec![]];
+    for edits in &lists {
+        let r = full(&mut session, edits);
+        assert!(r.rebuilt && r.reused_edits == 0, "nothing was kept: {r:?}");
+    }
+    let mut aged = with_edits(vec![bend]);
+    aged.set("age", 20.0).expect("an age");
+    session.update(&aged, Quality::Full, &NoClock, None).expect("a younger tree");
+    assert_eq!(session.hash(), Some(generate(&aged).expect("cold").hash));
+}

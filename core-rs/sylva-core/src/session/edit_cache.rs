@@ -83,6 +83,9 @@ pub(super) struct EditCache {
     /// Kept prefixes of `edits`, shortest first; the first is always the empty one (`edits: 0`).
     prefixes: Vec<Prefix>,
     stroke: Option<Stroke>,
+    /// The session makes one tree and ends ([`EditCache::one_shot`]): the stems are handed on
+    /// as built, not copied for a next update.
+    one_shot: bool,
 }
 
 impl std::fmt::Debug for EditCache {
@@ -119,6 +122,7 @@ enum Mature {
 fn build_stems(
     p: &SkeletonParams,
     mature: &mut Option<Mature>,
+    one_shot: bool,
     progress: Option<&mut dyn FnMut(f32)>,
 ) -> Result<(Skeleton, Vec<Vec3>), SylvaError> {
     let crown = edits::drawn_crown(&p.edits);
@@ -132,15 +136,20 @@ fn build_stems(
             GrowthMode::SpaceColonization => Mature::Grown(growth::grow_with_crown(p, crown, progress)?),
         });
     }
-    let (mut skeleton, markers) = match mature.as_ref().expect("just built") {
-        Mature::Parametric(dated) => {
-            let mut skeleton = dated.clone();
-            skeleton.age = p.age;
-            crate::age::replay(&mut skeleton, p.age, p.maturity);
-            (skeleton, Vec::new())
-        }
+    let at_age = |mut skeleton: Skeleton| {
+        skeleton.age = p.age;
+        crate::age::replay(&mut skeleton, p.age, p.maturity);
+        (skeleton, Vec::new())
+    };
+    let (mut skeleton, markers) = match (one_shot, mature.as_ref().expect("just built")) {
+        // Nothing kept for a next update: the stems themselves.
+        (true, Mature::Parametric(_)) => match mature.take() {
+            Some(Mature::Parametric(dated)) => at_age(dated),
+            _ => unreachable!("just matched"),
+        },
+        (false, Mature::Parametric(dated)) => at_age(dated.clone()),
         // Dated and brought to its Age by its annual flushes.
-        Mature::Grown(grown) => (growth::skeleton_by_years(p, grown), grown.markers.clone()),
+        (_, Mature::Grown(grown)) => (growth::skeleton_by_years(p, grown), grown.markers.clone()),
     };
     crate::life::live(&mut skeleton, p);
     Ok((skeleton, markers))
@@ -152,10 +161,17 @@ fn ageless(p: &SkeletonParams) -> SkeletonParams {
 }
 
 impl EditCache {
+    /// A cache for a session that makes one tree and ends (a cold generation): the stems and
+    /// the tree after the edits are moved on, not copied into the cache, and the next update
+    /// builds everything again.
+    pub(super) fn one_shot() -> EditCache {
+        EditCache { one_shot: true, ..EditCache::default() }
+    }
+
     /// Forgets everything.
     pub(super) fn clear(&mut self) {
-        let resume = self.resume;
-        *self = EditCache { resume, ..EditCache::default() };
+        let (resume, one_shot) = (self.resume, self.one_shot);
+        *self = EditCache { resume, one_shot, ..EditCache::default() };
     }
 
     /// Forgets everything but the stems at the Mature Age.
@@ -181,7 +197,7 @@ impl EditCache {
                 Some((k, m)) if k == key => Some(m),
                 _ => None,
             };
-            let built = build_stems(p, &mut mature, progress);
+            let built = build_stems(p, &mut mature, self.one_shot, progress);
             self.mature = mature.map(|m| (key, m));
             let (skeleton, markers) = built?;
             self.base = Some(base);
@@ -214,7 +230,14 @@ impl EditCache {
             }
         }
         self.prefixes.retain(|q| q.edits <= shared);
-        let mut tree = self.prefixes.last().expect("the empty prefix is always kept").clone();
+        let mut tree = if self.one_shot {
+            // Nothing is resumed after this update: the tree itself, and the stems built again
+            // by the next one.
+            self.base = None;
+            self.prefixes.pop().expect("the empty prefix is always kept")
+        } else {
+            self.prefixes.last().expect("the empty prefix is always kept").clone()
+        };
         self.resume = Resume { rebuilt: false, reused_edits: tree.edits, extended_stroke: false };
         let n = list.len();
         for (i, edit) in list.iter().enumerate().skip(tree.edits) {
@@ -233,7 +256,7 @@ impl EditCache {
             tree.reports.push(report);
             tree.edits = i + 1;
             // Keep the trees near the end of the list: the next update most likely continues it.
-            if i + 1 + KEEP > n {
+            if i + 1 + KEEP > n && !self.one_shot {
                 self.keep(tree.clone());
             }
         }

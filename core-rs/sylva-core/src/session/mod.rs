@@ -230,6 +230,12 @@ impl Session {
         Session::default()
     }
 
+    /// A session for one tree ([`crate::generate`]): its stems are not copied into the caches
+    /// an interactive session keeps for its next update (a second update builds them again).
+    pub fn one_shot() -> Session {
+        Session { edits: EditCache::one_shot(), ..Session::default() }
+    }
+
     /// The current tree, if an update succeeded.
     pub fn current(&self) -> Option<&Current> {
         self.current.as_ref()
