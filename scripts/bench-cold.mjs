@@ -3,9 +3,9 @@
 //   nothing kept from an earlier tree (no cached leaf, no memory the allocator already holds):
 //   natively a fresh `sylva generate` process per run; in wasm a fresh instance of the module in
 //   a worker thread per run (its memory is freed with the worker). The compiled module is shared,
-//   so V8's compilation is not part of the figure, nor is its tiering up: one generation of each
-//   tree in each module is run and dropped first (`warmed`). Reported in µs per bark vertex,
-//   with the milliseconds per stage.
+//   so V8's compilation is not part of the figure, nor is its tiering up: the threaded module
+//   generates six default trees first, and one generation of each tree in each module is run and
+//   dropped (`warmed`). Reported in µs per bark vertex, with the milliseconds per stage.
 // - `wasm_threads` in each `cold` record: the same in the threaded module (scripts/wasm-threads.sh)
 //   with one helper worker started first, as a cross-origin isolated page runs it: a fresh
 //   instance per run, and `repeated`, the same tree generated again in that instance.
