@@ -89,18 +89,8 @@ pub(super) fn bent_rings(stem: &Stem, quality: f32, feet: &[weld::Junction], pad
 /// [`weld::REACH`] footprint lengths below and above each footprint, and one between two
 /// footprints side by side around the stem that no ring separates ([`bent_rings`]).
 fn ring_feet(out: &mut Vec<f32>, first: usize, feet: &[weld::Junction], pad: f32) {
-    let has_ring = |out: &[f32], lo: f32, hi: f32| {
-        let k = out.partition_point(|&x| x < lo);
-        k < out.len() && out[k] <= hi
-    };
     for (i, f) in feet.iter().enumerate() {
-        let reach = weld::REACH * (f.t_hi - f.t_lo);
-        if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
-            insert_sorted(out, first, f.t_lo);
-        }
-        if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
-            insert_sorted(out, first, f.t_hi);
-        }
+        ring_ends(out, first, f);
         // A ring lies between e and f exactly when the last ring at or below f's start is at or
         // above e's end: found once for f, then kept as the midpoints go in (each above it and
         // at most f's start), rather than searched for every earlier foot.
@@ -116,6 +106,24 @@ fn ring_feet(out: &mut Vec<f32>, first: usize, feet: &[weld::Junction], pad: f32
                 last = Some(mid);
             }
         }
+    }
+}
+
+/// Whether `out` holds a ring from `lo` to `hi` (sorted, both ends included).
+fn has_ring(out: &[f32], lo: f32, hi: f32) -> bool {
+    let k = out.partition_point(|&x| x < lo);
+    k < out.len() && out[k] <= hi
+}
+
+/// The rings `out[first..]` (sorted) with one at each end of footprint `f` where none lies
+/// within [`weld::REACH`] footprint lengths of it.
+fn ring_ends(out: &mut Vec<f32>, first: usize, f: &weld::Junction) {
+    let reach = weld::REACH * (f.t_hi - f.t_lo);
+    if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
+        insert_sorted(out, first, f.t_lo);
+    }
+    if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
+        insert_sorted(out, first, f.t_hi);
     }
 }
 
@@ -148,18 +156,8 @@ mod tests {
 
     /// [`ring_feet`] spelled out: every earlier foot searched for a ring between it and the next.
     fn plain(out: &mut Vec<f32>, first: usize, feet: &[weld::Junction], pad: f32) {
-        let has_ring = |out: &[f32], lo: f32, hi: f32| {
-            let k = out.partition_point(|&x| x < lo);
-            k < out.len() && out[k] <= hi
-        };
         for (i, f) in feet.iter().enumerate() {
-            let reach = weld::REACH * (f.t_hi - f.t_lo);
-            if !has_ring(&out[first..], f.t_lo - reach, f.t_lo) {
-                insert_sorted(out, first, f.t_lo);
-            }
-            if !has_ring(&out[first..], f.t_hi, f.t_hi + reach) {
-                insert_sorted(out, first, f.t_hi);
-            }
+            ring_ends(out, first, f);
             for e in &feet[..i] {
                 if e.t_hi <= f.t_lo && f.side_by_side(e, pad) && !has_ring(&out[first..], e.t_hi, f.t_lo) {
                     insert_sorted(out, first, 0.5 * (e.t_hi + f.t_lo));
