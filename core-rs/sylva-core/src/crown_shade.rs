@@ -134,36 +134,29 @@ impl CrownLight {
     /// vertex in one loop, where the field's constants then stay in registers).
     #[inline(always)]
     pub fn sky_at_inline(&self, p: Vec3) -> f32 {
-        sky(self.min, self.cell, self.n, &self.corners, p)
+        let f = (p - self.min) / self.cell - Vec3::splat(0.5);
+        let [nx, ny, nz] = self.n;
+        if f.y > (ny - 1) as f32 {
+            return 1.0;
+        }
+        // The lower cell centre and the fraction past it, along one axis of `n` cells.
+        let axis = |v: f32, n: usize| {
+            let v = v.clamp(0.0, (n - 1) as f32);
+            let i = v as i32 as usize;
+            (i, v - i as f32)
+        };
+        let ((x0, tx), (y0, ty), (z0, tz)) = (axis(f.x, nx), axis(f.y, ny), axis(f.z, nz));
+        let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
+        let c = &self.corners[(z0 * ny + y0) * nx + x0];
+        let (x00, x10) = (lerp(c[0], c[1], tx), lerp(c[2], c[3], tx));
+        let (x01, x11) = (lerp(c[4], c[5], tx), lerp(c[6], c[7], tx));
+        lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz)
     }
 
     /// Brightness for sky visibility `sky`: [`MIN_LIGHT`] in full shade, 1 in the open.
     pub fn light(sky: f32) -> f32 {
         MIN_LIGHT + (1.0 - MIN_LIGHT) * sky
     }
-}
-
-/// [`CrownLight::sky_at`] of the field of cells of `cell` from `min`, `n` cells along each axis
-/// with these `corners`.
-#[inline(always)]
-fn sky(min: Vec3, cell: f32, n: [usize; 3], corners: &[[f32; 8]], p: Vec3) -> f32 {
-    let f = (p - min) / cell - Vec3::splat(0.5);
-    let [nx, ny, nz] = n;
-    if f.y > (ny - 1) as f32 {
-        return 1.0;
-    }
-    // The lower cell centre and the fraction past it, along one axis of `n` cells.
-    let axis = |v: f32, n: usize| {
-        let v = v.clamp(0.0, (n - 1) as f32);
-        let i = v as i32 as usize;
-        (i, v - i as f32)
-    };
-    let ((x0, tx), (y0, ty), (z0, tz)) = (axis(f.x, nx), axis(f.y, ny), axis(f.z, nz));
-    let lerp = |a: f32, b: f32, t: f32| a + (b - a) * t;
-    let c = &corners[(z0 * ny + y0) * nx + x0];
-    let (x00, x10) = (lerp(c[0], c[1], tx), lerp(c[2], c[3], tx));
-    let (x01, x11) = (lerp(c[4], c[5], tx), lerp(c[6], c[7], tx));
-    lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz)
 }
 
 /// Adds `exp(-optical depth)` toward the sky along `d` (unit, `d.y > 0`) to every cell of

@@ -73,22 +73,16 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
                     *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
                 }
             }
-            // Holes and the light field (an old tree): the field read inline, each hole's
-            // stem radius divided out once, not at every vertex.
-            (Some(c), false) => {
+            // Holes (an old tree), or no leaves: each hole's stem radius divided out once, not
+            // at every vertex.
+            _ => {
                 let cavities: Vec<(&Hole, f32)> = holes.iter().map(|h| (h, h.radius / hole_size.max(1e-3))).collect();
                 for (p, o) in positions.chunks_exact(3).zip(part) {
                     let p = Vec3::new(p[0], p[1], p[2]);
-                    let mut light = CrownLight::light(c.sky_at_inline(p));
-                    for &(h, stem_radius) in &cavities {
-                        light *= cavity_light(h, stem_radius, p);
-                    }
-                    *o = to_byte(light);
-                }
-            }
-            (None, _) => {
-                for (p, o) in positions.chunks_exact(3).zip(part) {
-                    *o = vertex_light(Vec3::new(p[0], p[1], p[2]), holes, crown, hole_size);
+                    let light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at_inline(p)));
+                    *o = to_byte(
+                        cavities.iter().fold(light, |l, &(h, stem_radius)| l * cavity_light(h, stem_radius, p)),
+                    );
                 }
             }
         }
@@ -98,16 +92,6 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
 
 /// Barks of at least this many vertices are shaded on every core (natively).
 const PARALLEL_VERTICES: usize = 1 << 16;
-
-/// One vertex's occlusion byte (see [`occlusion_with`]).
-#[inline]
-fn vertex_light(p: Vec3, holes: &[Hole], crown: Option<&CrownLight>, hole_size: f32) -> u8 {
-    let mut light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at(p)));
-    for h in holes {
-        light *= cavity_light(h, h.radius / hole_size.max(1e-3), p);
-    }
-    to_byte(light)
-}
 
 /// A light of 0..1 as the occlusion byte.
 #[inline(always)]

@@ -141,15 +141,14 @@ fn build_stems(
         crate::age::replay(&mut skeleton, p.age, p.maturity);
         (skeleton, Vec::new())
     };
-    let (mut skeleton, markers) = match (one_shot, mature.as_ref().expect("just built")) {
-        // Nothing kept for a next update: the stems themselves.
-        (true, Mature::Parametric(_)) => match mature.take() {
-            Some(Mature::Parametric(dated)) => at_age(dated),
-            _ => unreachable!("just matched"),
+    // A one-shot session keeps nothing for a next update: the dated stems themselves.
+    let (mut skeleton, markers) = match mature.take_if(|m| one_shot && matches!(m, Mature::Parametric(_))) {
+        Some(Mature::Parametric(dated)) => at_age(dated),
+        _ => match mature.as_ref().expect("just built") {
+            Mature::Parametric(dated) => at_age(dated.clone()),
+            // Dated and brought to its Age by its annual flushes.
+            Mature::Grown(grown) => (growth::skeleton_by_years(p, grown), grown.markers.clone()),
         },
-        (false, Mature::Parametric(dated)) => at_age(dated.clone()),
-        // Dated and brought to its Age by its annual flushes.
-        (_, Mature::Grown(grown)) => (growth::skeleton_by_years(p, grown), grown.markers.clone()),
     };
     crate::life::live(&mut skeleton, p);
     Ok((skeleton, markers))
