@@ -422,10 +422,82 @@ impl Facing {
 fn search(window: &[WindowTri], q: Vec3, d: Vec3) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     for w in window {
-        let (s, u, v) = w.facing.at(q, d);
-        if u >= 0.0 && v >= 0.0 && u + v <= 1.0 && best.is_none_or(|b| s > b.s) {
-            best = Some(Hit::new(s, w.tri, u, v, w.row, w.col, w.half));
+        // Facing::at, its `u` first: most of the window's triangles are left on it alone.
+        let f = &w.facing;
+        let o = q - f.p0;
+        let u = o.dot(f.h) * f.inv;
+        if !(0.0..=1.0).contains(&u) {
+            continue;
+        }
+        let qv = o.cross(f.e1);
+        let v = d.dot(qv) * f.inv;
+        if v >= 0.0 && u + v <= 1.0 {
+            let s = f.e2.dot(qv) * f.inv;
+            if best.is_none_or(|b| s > b.s) {
+                best = Some(Hit::new(s, w.tri, u, v, w.row, w.col, w.half));
+            }
         }
     }
     best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::Rng;
+
+    /// [`search`] as the plain formula: every triangle's crossing from [`Facing::at`].
+    fn search_by_the_formula(window: &[WindowTri], q: Vec3, d: Vec3) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        for w in window {
+            let (s, u, v) = w.facing.at(q, d);
+            if u >= 0.0 && v >= 0.0 && u + v <= 1.0 && best.is_none_or(|b| s > b.s) {
+                best = Some(Hit::new(s, w.tri, u, v, w.row, w.col, w.half));
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn the_search_finds_the_hit_of_its_plain_formula() {
+        let mut rng = Rng::new(7, "footprint_test");
+        let mut point =
+            |scale: f32| Vec3::new(rng.next_f32() - 0.5, rng.next_f32() - 0.5, rng.next_f32() - 0.5) * scale;
+        let (mut hits, mut misses) = (0, 0);
+        for _ in 0..400 {
+            let d = point(2.0).normalize_or(Vec3::Y);
+            let mut window = Vec::new();
+            for k in 0..40 {
+                let a = point(1.0);
+                let t = [a, a + point(1.2), a + point(1.2)];
+                // Some triangles share a corner, as a window's quads do.
+                let t = if k % 3 == 0 { [t[0], t[2], t[1]] } else { t };
+                if let Some(facing) = Facing::new(d, t) {
+                    window.push(WindowTri {
+                        facing,
+                        tri: [k, k + 1, k + 2],
+                        row: k as usize,
+                        col: 0,
+                        half: k as usize % 2,
+                    });
+                }
+            }
+            for _ in 0..50 {
+                let q = point(1.5);
+                let (a, b) = (search(&window, q, d), search_by_the_formula(&window, q, d));
+                match (a, b) {
+                    (None, None) => misses += 1,
+                    (Some(a), Some(b)) => {
+                        hits += 1;
+                        assert_eq!(
+                            (a.s.to_bits(), a.tri, a.bary.to_array().map(f32::to_bits)),
+                            (b.s.to_bits(), b.tri, b.bary.to_array().map(f32::to_bits))
+                        );
+                    }
+                    _ => panic!("one found a hit, the other none"),
+                }
+            }
+        }
+        assert!(hits > 1000 && misses > 1000, "{hits} hits, {misses} misses");
+    }
 }

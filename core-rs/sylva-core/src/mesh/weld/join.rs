@@ -12,6 +12,7 @@
 //!    anything is committed.
 
 use super::footprint::{self, claim_index, free, Cell, FootPoint, Meeting, Rect, Scratch};
+use super::wrap;
 use super::zip::zip_hole;
 use crate::math::{unit_or, TAU};
 use crate::mesh::junction::{well_wound, Join};
@@ -115,13 +116,13 @@ impl Collar {
             let li = if copy { 0 } else { row };
             let back = 1.0 - li as f32 / (loops + 1) as f32;
             for c in 0..stride {
-                let m = c % nr;
+                let m = wrap(c, nr);
                 let k = li * nr + m;
                 // The copy of the footprint loop has its normals, computed for loop 0.
                 let collar = if copy {
                     sc.collar_n[m]
                 } else {
-                    let around = sc.pos[li * nr + (m + 1) % nr] - sc.pos[li * nr + (m + nr - 1) % nr];
+                    let around = sc.pos[li * nr + wrap(m + 1, nr)] - sc.pos[li * nr + wrap(m + nr - 1, nr)];
                     let radial = sc.pos[k] - self.ring.centre;
                     unit_or(around.cross(sc.along[k]), || unit_or(radial, || self.ring.normal))
                 };
@@ -186,7 +187,8 @@ fn open_and_zip(
     let nr = collar.columns;
     for w in [0.5, 0.25, 0.75, 0.0] {
         for k in 0..collar.stride() {
-            let n = unit_or(sc.foot[k % nr].normal * (1.0 - w) + sc.collar_n[k % nr] * w, || sc.collar_n[k % nr]);
+            let m = wrap(k, nr);
+            let n = unit_or(sc.foot[m].normal * (1.0 - w) + sc.collar_n[m] * w, || sc.collar_n[m]);
             out.set_normal(collar.first + k as u32, n);
             out.set_normal(collar.uv_seam + k as u32, n);
         }

@@ -69,6 +69,18 @@ pub(crate) fn collar_loops(quality: f32) -> usize {
     (quality.round() as usize).clamp(1, 3)
 }
 
+/// `i % n` for `i < 2 n`: a ring's index one turn on brought back, without the division a
+/// remainder costs (wasm's `rem_u` is one, in the junctions' loops over every column).
+#[inline]
+fn wrap(i: usize, n: usize) -> usize {
+    debug_assert!(i < 2 * n);
+    if i >= n {
+        i - n
+    } else {
+        i
+    }
+}
+
 /// `asin(x)` for x in [0, 1) through the portable `atan2`.
 fn asin(x: f32) -> f32 {
     atan2(x, (1.0 - x * x).max(0.0).sqrt())
@@ -192,4 +204,16 @@ pub(crate) fn plan(skeleton: &Skeleton, p: &MeshParams, sides: &[u32]) -> Vec<Op
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn wrap_is_the_remainder_below_two_turns() {
+        for n in 1..70 {
+            for i in 0..2 * n {
+                assert_eq!(super::wrap(i, n), i % n);
+            }
+        }
+    }
 }

@@ -7,6 +7,7 @@
 //! edge of both loops is used exactly once. These triangles lie on the parent's facets.
 
 use super::footprint::{Rect, Scratch};
+use super::wrap;
 use crate::math::TAU;
 use crate::mesh::junction::Join;
 use glam::Vec2;
@@ -83,7 +84,7 @@ pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, hole: Rect, first_new: u32) -
     }));
     let kstar = (0..nr).fold(0, |m, k| if sc.ring[k] > sc.ring[m] { k } else { m });
     let ring_ang = |k: usize| {
-        let a = sc.ring[(kstar + k) % nr];
+        let a = sc.ring[wrap(kstar + k, nr)];
         if k == 0 {
             a - TURN
         } else {
@@ -105,8 +106,8 @@ pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, hole: Rect, first_new: u32) -
     let ang_r = |k: usize| if k < nr { ring_ang(k) } else { ring_ang(0) + TURN };
     // Each step advances the loop whose next vertex comes first by angle, unless that triangle
     // would turn the wrong way and the other would not.
-    let hole_at = |i: usize| sc.flat[i % l];
-    let foot_at = |k: usize| sc.foot_flat[column(k) % nr];
+    let hole_at = |i: usize| sc.flat[wrap(i, l)];
+    let foot_at = |k: usize| sc.foot_flat[wrap(column(k), nr)];
     let turns = |a: Vec2, b: Vec2, c: Vec2| (b - a).perp_dot(c - a) > 0.0;
     let (mut i, mut k) = (0, 0);
     while i < l || k < nr {
@@ -119,11 +120,11 @@ pub(super) fn zip_hole(sc: &mut Scratch, j: &Join, hole: Rect, first_new: u32) -
             (false, false) => return false,
         };
         if advance_hole {
-            sc.tris.extend_from_slice(&[sc.hole[i], sc.hole[(i + 1) % l], first_new + column(k) as u32]);
+            sc.tris.extend_from_slice(&[sc.hole[i], sc.hole[wrap(i + 1, l)], first_new + column(k) as u32]);
             i += 1;
         } else {
             sc.tris.extend_from_slice(&[
-                sc.hole[i % l],
+                sc.hole[wrap(i, l)],
                 first_new + column(k + 1) as u32,
                 first_new + column(k) as u32,
             ]);
