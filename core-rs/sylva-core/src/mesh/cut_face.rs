@@ -18,7 +18,7 @@
 //! (the inner one) and its quads are the whole cost.
 pub(crate) use super::stem::CutEnd;
 use super::stem::{Frame, StemMesh};
-use super::{Material, MeshBuilder, VertexBlock, WIND_STRIDE};
+use super::{Material, MeshBuilder, Tail, VertexBlock, WIND_STRIDE};
 use crate::skeleton::Stem;
 use glam::Vec3;
 use std::f32::consts::TAU;
@@ -169,21 +169,23 @@ fn write_callus(
 /// The chamfer's quads from the last ring to the bevel ring (bark), and a callus's from its
 /// crest ring to its inner ring, written where a pointed tip's fan would go:
 /// [`rim_triangles`]` * sides` triangles.
-pub(crate) fn rim_indices(m: &StemMesh, end: CutEnd, out: &mut [u32]) {
+pub(crate) fn rim_indices(m: &StemMesh, end: CutEnd, out: &mut Tail<u32>) {
     let (s, st) = (m.sides, m.sides + 1);
     let row = m.first + (m.rings - 1) * st;
     let bevel = end.first;
-    let (rim, roll) = out.split_at_mut(s as usize * 6);
-    for (j, q) in (0..s).zip(rim.chunks_exact_mut(6)) {
+    for j in 0..s {
         let (a, b) = (row + j, row + j + 1);
         let (c, d) = (bevel + j + 1, bevel + j);
-        q.copy_from_slice(&[a, b, c, a, c, d]);
+        out.push([a, b, c, a, c, d]);
+    }
+    if !end.callus {
+        return;
     }
     let inner = bevel + 2 * st;
-    for (j, q) in (0..s).zip(roll.chunks_exact_mut(6)) {
+    for j in 0..s {
         let (a, b) = (bevel + j, bevel + j + 1);
         let (c, d) = (inner + j + 1, inner + j);
-        q.copy_from_slice(&[a, b, c, a, c, d]);
+        out.push([a, b, c, a, c, d]);
     }
 }
 

@@ -19,7 +19,7 @@ pub mod weld;
 
 use serde::Serialize;
 
-pub use builder::{seam_shifts, MeshBuilder, VertexBlock};
+pub use builder::{seam_shifts, MeshBuilder, Tail, VertexBlock, VertexSink};
 
 /// Which material a range of indices uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

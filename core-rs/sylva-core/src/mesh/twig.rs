@@ -26,7 +26,7 @@
 //! the tip at an apex, exactly as the tube does, so the only open edges stay the buried base ring.
 
 use super::stem::{sides_for, Base, StemMesh, StemWind};
-use super::{MeshBuilder, WIND_STRIDE};
+use super::MeshBuilder;
 use crate::math::{acos, cos, rad, sin, unit_or, TAU};
 use crate::params::{GrowthMode, MeshParams, TwigDetail};
 use crate::skeleton::{Skeleton, Stem, StemKind};
@@ -182,71 +182,55 @@ pub(crate) fn sweep(
     let sides = circle.len() - 1;
     let stride = sides + 1;
     let rings = us.len();
-    let block = out.alloc_vertices(rings * stride + 1);
-    let (first, pos, nrm, uv, wnd) = (block.first, block.positions, block.normals, block.uvs, block.wind);
     let floor = 0.05 * span.r[0];
     let mut v = 0.0f32;
     let mut prev: Option<(Vec3, f32)> = None;
     let (mut last_c, mut last_rho) = (span.p[0], span.r[0]);
-    for (k, &u) in us.iter().enumerate() {
-        let w = bernstein(u);
-        let dw = [-2.0 * (1.0 - u), 2.0 * (1.0 - 2.0 * u), 2.0 * u];
-        let mut c = Vec3::ZERO;
-        let mut dc = Vec3::ZERO;
-        let (mut nn, mut bb, mut dn, mut db) = (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
-        let mut rho = 0.0f32;
-        for i in 0..3 {
-            c += span.p[i] * w[i];
-            dc += span.p[i] * dw[i];
-            nn += ns[i] * (w[i] * span.r[i]);
-            bb += bs[i] * (w[i] * span.r[i]);
-            dn += ns[i] * (dw[i] * span.r[i]);
-            db += bs[i] * (dw[i] * span.r[i]);
-            rho += w[i] * span.r[i];
-        }
-        if rho < floor {
-            // Never thinner than 5% of the base radius, like the tube's last ring.
-            let s = floor / rho.max(1e-12);
-            (nn, bb, dn, db, rho) = (nn * s, bb * s, dn * s, db * s, floor);
-        }
-        if let Some((pc, pr)) = prev {
-            v += (c - pc).length() / (TAU * (0.5 * (rho + pr)).max(0.25 * span.r[0]));
-        }
-        let block = k * stride;
-        let ring_pos = pos[block * 3..(block + stride) * 3].chunks_exact_mut(3);
-        let ring_nrm = nrm[block * 3..(block + stride) * 3].chunks_exact_mut(3);
-        let ring_uv = uv[block * 2..(block + stride) * 2].chunks_exact_mut(2);
-        for (((p3, n3), t2), &(cs, sn, tu)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
-            let radial = nn * cs + bb * sn;
-            let q = c + radial;
-            let d_phi = bb * cs - nn * sn;
-            let d_u = dc + dn * cs + db * sn;
-            let n = unit_or(d_phi.cross(d_u), || unit_or(radial, || d0));
-            p3.copy_from_slice(&q.to_array());
-            n3.copy_from_slice(&n.to_array());
-            t2.copy_from_slice(&[tu, v]);
-        }
-        if !wnd.is_empty() {
+    let first = out.append_vertices(rings * stride + 1, |sink| {
+        for &u in us {
+            let w = bernstein(u);
+            let dw = [-2.0 * (1.0 - u), 2.0 * (1.0 - 2.0 * u), 2.0 * u];
+            let mut c = Vec3::ZERO;
+            let mut dc = Vec3::ZERO;
+            let (mut nn, mut bb, mut dn, mut db) = (Vec3::ZERO, Vec3::ZERO, Vec3::ZERO, Vec3::ZERO);
+            let mut rho = 0.0f32;
+            for i in 0..3 {
+                c += span.p[i] * w[i];
+                dc += span.p[i] * dw[i];
+                nn += ns[i] * (w[i] * span.r[i]);
+                bb += bs[i] * (w[i] * span.r[i]);
+                dn += ns[i] * (dw[i] * span.r[i]);
+                db += bs[i] * (dw[i] * span.r[i]);
+                rho += w[i] * span.r[i];
+            }
+            if rho < floor {
+                // Never thinner than 5% of the base radius, like the tube's last ring.
+                let s = floor / rho.max(1e-12);
+                (nn, bb, dn, db, rho) = (nn * s, bb * s, dn * s, db * s, floor);
+            }
+            if let Some((pc, pr)) = prev {
+                v += (c - pc).length() / (TAU * (0.5 * (rho + pr)).max(0.25 * span.r[0]));
+            }
+            sink.extend(circle.iter().map(|&(cs, sn, tu)| {
+                let radial = nn * cs + bb * sn;
+                let d_phi = bb * cs - nn * sn;
+                let d_u = dc + dn * cs + db * sn;
+                (c + radial, unit_or(d_phi.cross(d_u), || unit_or(radial, || d0)), [tu, v])
+            }));
             // The wind record of the ring: `u` is the Bezier parameter, close enough to the
             // fraction of the stem's length for the distance from the root.
-            let rec = wind.record(stem, u, rho);
-            for w in wnd[block * WIND_STRIDE..(block + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
-                w.copy_from_slice(&rec);
-            }
+            sink.push_wind(&wind.record(stem, u, rho), stride);
+            prev = Some((c, rho));
+            (last_c, last_rho) = (c, rho);
         }
-        prev = Some((c, rho));
-        (last_c, last_rho) = (c, rho);
-    }
-    // Tip: a short cone to an apex at the curve's end (a little beyond it if the tip is blunt).
-    let apex_pos = span.p[2] + d1 * (0.5 * span.r[2]).max(0.05 * last_rho);
-    let v_apex = v + (apex_pos - last_c).length() / (TAU * last_rho.max(1e-6));
+        // Tip: a short cone to an apex at the curve's end (a little beyond it if the tip is blunt).
+        let apex_pos = span.p[2] + d1 * (0.5 * span.r[2]).max(0.05 * last_rho);
+        let v_apex = v + (apex_pos - last_c).length() / (TAU * last_rho.max(1e-6));
+        sink.push(apex_pos, d1, [0.5, v_apex]);
+        sink.push_wind(&wind.record(stem, 1.0, last_rho), 1);
+        sink.first
+    });
     let apex_slot = rings * stride;
-    pos[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&apex_pos.to_array());
-    nrm[apex_slot * 3..apex_slot * 3 + 3].copy_from_slice(&d1.to_array());
-    uv[apex_slot * 2..apex_slot * 2 + 2].copy_from_slice(&[0.5, v_apex]);
-    if !wnd.is_empty() {
-        wnd[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, last_rho));
-    }
     let apex = first + apex_slot as u32;
     // A twig sits on its parent as a separate tube: its base is closed by a shallow cone to a
     // centre a quarter radius inside (like the tube's capped bases), so the twig is closed.

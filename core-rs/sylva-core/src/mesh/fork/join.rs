@@ -180,13 +180,12 @@ pub(crate) fn join(
 
 /// Appends the fork's new vertices to `out`.
 fn write(out: &mut MeshBuilder, verts: &[NewVertex]) {
-    let mut block = out.alloc_vertices(verts.len());
-    for (k, v) in verts.iter().enumerate() {
-        block.write(k, v.pos, v.normal, v.uv);
-        if !block.wind.is_empty() {
-            block.wind[WIND_STRIDE * k..WIND_STRIDE * (k + 1)].copy_from_slice(&v.wind);
+    out.append_vertices(verts.len(), |sink| {
+        for v in verts {
+            sink.push(v.pos, v.normal, v.uv);
+            sink.push_wind(&v.wind, 1);
         }
-    }
+    });
 }
 
 impl Fork {

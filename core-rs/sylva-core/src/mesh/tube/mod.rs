@@ -22,7 +22,7 @@ pub use super::stem::{sides_for, StemWind};
 pub use sweep::stem_winds;
 
 use super::stem::{Base, Frame, StemMesh};
-use super::{fork, fork_rows, twig, weld, Material, MeshBuilder, TreeMesh};
+use super::{fork, fork_rows, twig, weld, Material, MeshBuilder, Tail, TreeMesh};
 use crate::error::SylvaError;
 use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem, StemKind};
@@ -125,25 +125,24 @@ fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder
     let counts: Vec<usize> = stems.iter().map(|m| index_count(m, claimed)).collect();
     let total: usize = counts.iter().sum();
     let threads = if total >= PARALLEL_INDICES { crate::par::threads() } else { 1 };
-    let mut rest = out.alloc_indices(total);
-    // Runs of stems, each about `total / parts` indices, with their slices.
-    let parts = threads * 4;
-    let mut runs: Vec<Vec<(&StemMesh, &mut [u32])>> = Vec::with_capacity(parts);
-    let (mut run, mut written) = (Vec::new(), 0);
-    for (m, &n) in stems.into_iter().zip(&counts) {
-        let (head, tail) = std::mem::take(&mut rest).split_at_mut(n);
-        rest = tail;
-        run.push((m, head));
-        written += n;
-        if written * parts >= total * (runs.len() + 1) {
-            runs.push(std::mem::take(&mut run));
+    out.append_indices(&counts, |tails| {
+        // Runs of stems, each about `total / parts` indices, with their tails.
+        let parts = threads * 4;
+        let mut runs: Vec<Vec<(&StemMesh, &mut Tail<u32>)>> = Vec::with_capacity(parts);
+        let (mut run, mut written) = (Vec::new(), 0);
+        for ((m, &n), tail) in stems.into_iter().zip(&counts).zip(tails) {
+            run.push((m, tail));
+            written += n;
+            if written * parts >= total * (runs.len() + 1) {
+                runs.push(std::mem::take(&mut run));
+            }
         }
-    }
-    runs.push(run);
-    crate::par::run(runs, threads, |run| {
-        for (m, idx) in run {
-            emit(m, claimed, idx);
-        }
+        runs.push(run);
+        crate::par::run(runs, threads, |run| {
+            for (m, idx) in run {
+                emit(m, claimed, idx);
+            }
+        });
     });
 }
 

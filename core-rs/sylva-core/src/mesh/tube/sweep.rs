@@ -10,7 +10,7 @@
 use crate::math::{cos, sin, unit_or, TAU};
 use crate::mesh::stem::{Base, Frame, StemMesh, StemWind};
 use crate::mesh::trunk::{ring_circles, union_outline};
-use crate::mesh::{cut_face, MeshBuilder, VertexBlock, WIND_STRIDE};
+use crate::mesh::{cut_face, MeshBuilder, Tail, VertexBlock, VertexSink, WIND_STRIDE};
 use crate::params::MeshParams;
 use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
@@ -50,14 +50,11 @@ pub(super) fn index_count(m: &StemMesh, claimed: &[bool]) -> usize {
 
 /// Indices of one swept stem into `idx` (exactly [`index_count`] of them): quads between rings
 /// (except those a child's junction claimed), the tip fan, and the base cap.
-pub(super) fn emit(m: &StemMesh, claimed: &[bool], idx: &mut [u32]) {
+pub(super) fn emit(m: &StemMesh, claimed: &[bool], idx: &mut Tail<u32>) {
     let s = m.sides;
     let st = s + 1;
     let claims = claims_of(m, claimed);
     debug_assert!(m.base != Base::Open, "a base is welded or closed before the index pass");
-    let (tip, base) = fan_triangles(m);
-    let (quad_idx, fan_idx) = idx.split_at_mut(idx.len() - (tip + base) * 3);
-    let mut q = quad_idx.chunks_exact_mut(6);
     for (i, row_claims) in claims.chunks_exact(s as usize).enumerate() {
         let row = m.first + i as u32 * st;
         for (j, &c) in row_claims.iter().enumerate() {
@@ -66,30 +63,28 @@ pub(super) fn emit(m: &StemMesh, claimed: &[bool], idx: &mut [u32]) {
             }
             let (a, b) = (row + j as u32, row + j as u32 + 1);
             let (c, d) = (b + st, a + st);
-            q.next().expect("sized above").copy_from_slice(&[a, b, c, a, c, d]);
+            idx.push([a, b, c, a, c, d]);
         }
     }
-    let (tip_idx, base_idx) = fan_idx.split_at_mut(tip * 3);
     let row = m.first + (m.rings - 1) * st;
     match m.cut {
-        Some(end) => cut_face::rim_indices(m, end, tip_idx),
+        Some(end) => cut_face::rim_indices(m, end, idx),
         None => {
-            for (j, f) in (0..s).zip(tip_idx.chunks_exact_mut(3)) {
-                f.copy_from_slice(&[row + j, row + j + 1, m.apex]);
+            for j in 0..s {
+                idx.push([row + j, row + j + 1, m.apex]);
             }
         }
     }
-    let mut f = base_idx.chunks_exact_mut(3);
     match m.base {
         Base::Trunk(cap) => {
             let centre = cap + st;
             for j in 0..s {
-                f.next().expect("sized above").copy_from_slice(&[cap + j + 1, cap + j, centre]);
+                idx.push([cap + j + 1, cap + j, centre]);
             }
         }
         Base::Cap(centre) => {
             for j in 0..s {
-                f.next().expect("sized above").copy_from_slice(&[m.first + j + 1, m.first + j, centre]);
+                idx.push([m.first + j + 1, m.first + j, centre]);
             }
         }
         Base::Welded | Base::Open => {}
@@ -162,9 +157,7 @@ fn sweep_with(
     let rings = ts.len();
     let trunk = stem.parent.is_none();
     let cap = if trunk { stride + 1 } else { 0 };
-    let count = rings * stride + 1 + cap + if stem.cut_end { cut_face::rings(stem) * stride } else { 0 };
-    let mut block = out.alloc_vertices(count);
-    let first = block.first;
+    let extra = cap + if stem.cut_end { cut_face::rings(stem) * stride } else { 0 };
     let mut ring_factor = vec![1.0f32; stride];
     let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
     let mut seg = (0, stem.segment(0));
@@ -179,42 +172,46 @@ fn sweep_with(
     let mut last_center = Vec3::ZERO;
     let mut last_radius = stem.radius;
     let mut last_nominal = stem.radius;
-    for (r, &t) in ts.iter().enumerate() {
-        let (i, u) = stem.locate(t);
-        if seg.0 != i {
-            seg = (i, stem.segment(i));
-        }
-        let (c, tan) = seg.1.eval(u);
-        normal = unit_or(normal - tan * normal.dot(tan), || tan.any_orthonormal_vector());
-        let binormal = tan.cross(normal);
-        frames[r] = Frame { centre: c, tangent: tan, normal };
-        // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
-        let radius = stem.radius_at(t).max(0.05 * stem.radius);
-        let slope = stem.radius_slope(t);
-        let inv = 1.0 / (1.0 + slope * slope).sqrt();
-        if let Some((pt, pr)) = prev {
-            v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
-        }
-        if let Some(factor) = factor {
-            for (j, f) in ring_factor.iter_mut().enumerate() {
-                *f = factor(r, j);
+    // The rings, front to back; then the apex, the trunk's cap and a cut end (which read the
+    // first and the last ring back).
+    let first = out.append_vertices(rings * stride, |sink| {
+        for (r, &t) in ts.iter().enumerate() {
+            let (i, u) = stem.locate(t);
+            if seg.0 != i {
+                seg = (i, stem.segment(i));
             }
+            let (c, tan) = seg.1.eval(u);
+            normal = unit_or(normal - tan * normal.dot(tan), || tan.any_orthonormal_vector());
+            let binormal = tan.cross(normal);
+            frames[r] = Frame { centre: c, tangent: tan, normal };
+            // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
+            let radius = stem.radius_at(t).max(0.05 * stem.radius);
+            let slope = stem.radius_slope(t);
+            let inv = 1.0 / (1.0 + slope * slope).sqrt();
+            if let Some((pt, pr)) = prev {
+                v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
+            }
+            if let Some(factor) = factor {
+                for (j, f) in ring_factor.iter_mut().enumerate() {
+                    *f = factor(r, j);
+                }
+            }
+            let ring = Ring { centre: c, normal, binormal, radius, tilt: tan * slope, inv, v };
+            write_ring(
+                sink,
+                circle,
+                factor.is_some().then_some(ring_factor.as_slice()),
+                &mut plane_normal,
+                &ring,
+                &wind.record(stem, t, radius),
+            );
+            prev = Some((t, radius));
+            last_nominal = radius;
+            last_center = c;
+            last_radius = radius;
         }
-        let ring = Ring { centre: c, normal, binormal, radius, tilt: tan * slope, inv, v };
-        write_ring(
-            &mut block,
-            r * stride,
-            circle,
-            factor.is_some().then_some(ring_factor.as_slice()),
-            &mut plane_normal,
-            &ring,
-            &wind.record(stem, t, radius),
-        );
-        prev = Some((t, radius));
-        last_nominal = radius;
-        last_center = c;
-        last_radius = radius;
-    }
+        sink.first
+    });
     // Tip: a short cone to an apex at the stem end (a little beyond it if the tip is blunt).
     let last_seg = stem.points.len() - 2;
     if seg.0 != last_seg {
@@ -225,6 +222,7 @@ fn sweep_with(
     let apex_pos = tip + tip_tan * (0.5 * end_r).max(0.05 * last_radius);
     let v_apex = v + (apex_pos - last_center).length() / (TAU * last_radius.max(1e-6));
     let apex_slot = rings * stride;
+    let mut block = out.block_from(first, 1 + extra);
     block.write(apex_slot, apex_pos, tip_tan, [0.5, v_apex]);
     block.wind[apex_slot * WIND_STRIDE..(apex_slot + 1) * WIND_STRIDE].copy_from_slice(&wind.record(stem, 1.0, end_r));
     let apex = first + apex_slot as u32;
@@ -266,13 +264,12 @@ struct Ring {
     v: f32,
 }
 
-/// Writes one ring's vertices from vertex `slot` of `block`: column `j` at `factors[j]` times
+/// Appends one ring's vertices to `sink`: column `j` at `factors[j]` times
 /// the radius (a round ring without factors or when every factor is 1; else the in-plane
 /// normals, kept in `plane_normal`, are perpendicular to the chord between neighbouring
 /// columns).
 fn write_ring(
-    block: &mut VertexBlock,
-    slot: usize,
+    sink: &mut VertexSink,
     circle: &[(f32, f32, f32)],
     factors: Option<&[f32]>,
     plane_normal: &mut [(f32, f32)],
@@ -281,22 +278,13 @@ fn write_ring(
 ) {
     let stride = circle.len();
     let sides = stride - 1;
-    let ring_pos = block.positions[slot * 3..(slot + stride) * 3].chunks_exact_mut(3);
-    let ring_nrm = block.normals[slot * 3..(slot + stride) * 3].chunks_exact_mut(3);
-    let ring_uv = block.uvs[slot * 2..(slot + stride) * 2].chunks_exact_mut(2);
-    for w in block.wind[slot * WIND_STRIDE..(slot + stride) * WIND_STRIDE].chunks_exact_mut(WIND_STRIDE) {
-        w.copy_from_slice(record);
-    }
+    sink.push_wind(record, stride);
     let (c, normal, binormal, v) = (g.centre, g.normal, g.binormal, g.v);
     let Some(factors) = factors.filter(|f| f.iter().any(|&f| f != 1.0)) else {
-        for (((p3, n3), t2), &(cs, sn, u)) in ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle) {
+        sink.extend(circle.iter().map(|&(cs, sn, u)| {
             let radial = normal * cs + binormal * sn;
-            let p = c + radial * g.radius;
-            let n = (radial - g.tilt) * g.inv;
-            p3.copy_from_slice(&[p.x, p.y, p.z]);
-            n3.copy_from_slice(&[n.x, n.y, n.z]);
-            t2.copy_from_slice(&[u, v]);
-        }
+            (c + radial * g.radius, (radial - g.tilt) * g.inv, [u, v])
+        }));
         return;
     };
     // In-plane outline normals: perpendicular to the chord between neighbouring columns.
@@ -310,17 +298,11 @@ fn write_ring(
         let len = (dx * dx + dy * dy).sqrt().max(1e-12);
         *n2 = (dy / len, -dx / len);
     }
-    for ((((p3, n3), t2), &(cs, sn, u)), (&f, &(nx, ny))) in
-        ring_pos.zip(ring_nrm).zip(ring_uv).zip(circle).zip(factors.iter().zip(plane_normal.iter()))
-    {
+    sink.extend(circle.iter().zip(factors.iter().zip(plane_normal.iter())).map(|(&(cs, sn, u), (&f, &(nx, ny)))| {
         let radial = normal * cs + binormal * sn;
-        let p = c + radial * (g.radius * f);
         let outward = normal * nx + binormal * ny;
-        let n = unit_or(outward - g.tilt, || radial);
-        p3.copy_from_slice(&[p.x, p.y, p.z]);
-        n3.copy_from_slice(&[n.x, n.y, n.z]);
-        t2.copy_from_slice(&[u, v]);
-    }
+        (c + radial * (g.radius * f), unit_or(outward - g.tilt, || radial), [u, v])
+    }));
 }
 
 /// Trunk base: a flat cap from vertex `cap` of `block`, its own copy of the bottom ring facing

@@ -17,7 +17,7 @@ use super::zip::zip_hole;
 use crate::math::{unit_or, TAU};
 use crate::mesh::junction::{well_wound, Join};
 use crate::mesh::stem::Frame;
-use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_STRIDE};
+use crate::mesh::{MeshBuilder, WIND_DISTANCE};
 use glam::Vec3;
 
 /// Steps 2 to 5: open the parent, add the collar loops and zip them in. On success the hole's
@@ -110,42 +110,40 @@ impl Collar {
         let (loops, nr, stride) = (self.loops, self.columns, self.stride());
         let record = j.wind.record(j.child_stem, j.junction.t_start, self.rc);
         sc.collar_n.clear();
-        let block = out.alloc_vertices((loops + 1) * stride);
-        for row in 0..=loops {
-            let copy = row == loops;
-            let li = if copy { 0 } else { row };
-            let back = 1.0 - li as f32 / (loops + 1) as f32;
-            for c in 0..stride {
-                let m = wrap(c, nr);
-                let k = li * nr + m;
-                // The copy of the footprint loop has its normals, computed for loop 0.
-                let collar = if copy {
-                    sc.collar_n[m]
-                } else {
-                    let around = sc.pos[li * nr + wrap(m + 1, nr)] - sc.pos[li * nr + wrap(m + nr - 1, nr)];
-                    let radial = sc.pos[k] - self.ring.centre;
-                    unit_or(around.cross(sc.along[k]), || unit_or(radial, || self.ring.normal))
-                };
-                if li == 0 && !copy && c < nr {
-                    sc.collar_n.push(collar);
+        out.append_vertices((loops + 1) * stride, |sink| {
+            for row in 0..=loops {
+                let copy = row == loops;
+                let li = if copy { 0 } else { row };
+                let back = 1.0 - li as f32 / (loops + 1) as f32;
+                for c in 0..stride {
+                    let m = wrap(c, nr);
+                    let k = li * nr + m;
+                    // The copy of the footprint loop has its normals, computed for loop 0.
+                    let collar = if copy {
+                        sc.collar_n[m]
+                    } else {
+                        let around = sc.pos[li * nr + wrap(m + 1, nr)] - sc.pos[li * nr + wrap(m + nr - 1, nr)];
+                        let radial = sc.pos[k] - self.ring.centre;
+                        unit_or(around.cross(sc.along[k]), || unit_or(radial, || self.ring.normal))
+                    };
+                    if li == 0 && !copy && c < nr {
+                        sc.collar_n.push(collar);
+                    }
+                    let dist = back * sc.chord[m];
+                    let uv = if li == 0 && !copy {
+                        sc.foot[m].uv
+                    } else {
+                        [c as f32 / nr as f32, j.child.v0 - dist / (TAU * self.rc)]
+                    };
+                    sink.push(sc.pos[k], collar, uv);
+                    let mut wind = if li == 0 { sc.foot[m].wind } else { record };
+                    if li != 0 || copy {
+                        wind[WIND_DISTANCE] = record[WIND_DISTANCE] - dist;
+                    }
+                    sink.push_wind(&wind, 1);
                 }
-                let slot = row * stride + c;
-                block.positions[slot * 3..slot * 3 + 3].copy_from_slice(&sc.pos[k].to_array());
-                block.normals[slot * 3..slot * 3 + 3].copy_from_slice(&collar.to_array());
-                let dist = back * sc.chord[m];
-                let uv = if li == 0 && !copy {
-                    sc.foot[m].uv
-                } else {
-                    [c as f32 / nr as f32, j.child.v0 - dist / (TAU * self.rc)]
-                };
-                block.uvs[slot * 2..slot * 2 + 2].copy_from_slice(&uv);
-                let mut wind = if li == 0 { sc.foot[m].wind } else { record };
-                if li != 0 || copy {
-                    wind[WIND_DISTANCE] = record[WIND_DISTANCE] - dist;
-                }
-                block.wind[slot * WIND_STRIDE..(slot + 1) * WIND_STRIDE].copy_from_slice(&wind);
             }
-        }
+        });
     }
 
     /// Quads between the footprint loop (its copy with the child's bark), the collar loops and
