@@ -302,7 +302,7 @@ impl MeshBuilder {
 
     /// Appends up to `n` vertices front to back through `fill` ([`VertexSink`]), each written
     /// once into the buffers' reserved memory: no zero-fill first, the pass over the memory a
-    /// block of [`MeshBuilder::alloc_vertices`] costs (a twentieth of a big tree's bark in wasm).
+    /// block of [`MeshBuilder::alloc_vertices`] costs (5 to 7% of a big tree's bark in wasm).
     /// Returns what `fill` returns. Panics if `fill` pushes more than `n` vertices, or a vertex
     /// without its wind record when the builder keeps wind.
     pub fn append_vertices<R>(&mut self, n: usize, fill: impl FnOnce(&mut VertexSink) -> R) -> R {
