@@ -75,14 +75,16 @@ impl VertexSink<'_> {
     }
 
     /// Appends the vertices `items` yields (position, normal, uv): a ring in one loop, its
-    /// counts kept in registers.
+    /// counts kept in registers. Panics past the reserved room.
     #[inline]
-    pub fn extend(&mut self, items: impl IntoIterator<Item = (glam::Vec3, glam::Vec3, [f32; 2])>) {
+    pub fn extend(&mut self, items: impl ExactSizeIterator<Item = (glam::Vec3, glam::Vec3, [f32; 2])>) {
+        let count = items.len();
         let (p, n, u) = (&mut self.positions, &mut self.normals, &mut self.uvs);
-        let slots = p.spare[p.len..]
+        assert!(u.len + 2 * count <= u.spare.len(), "a vertex past the reserved room");
+        let slots = p.spare[p.len..p.len + 3 * count]
             .chunks_exact_mut(3)
-            .zip(n.spare[n.len..].chunks_exact_mut(3))
-            .zip(u.spare[u.len..].chunks_exact_mut(2));
+            .zip(n.spare[n.len..n.len + 3 * count].chunks_exact_mut(3))
+            .zip(u.spare[u.len..u.len + 2 * count].chunks_exact_mut(2));
         let mut k = 0;
         for (((ps, ns), us), (pos, nrm, uv)) in slots.zip(items) {
             for (slot, x) in ps.iter_mut().zip(pos.to_array()) {
@@ -96,7 +98,8 @@ impl VertexSink<'_> {
             }
             k += 1;
         }
-        // Only the `k` slots just written, in every buffer (the zip stops at the shortest).
+        // The `k` slots just written, in every buffer (`count` of them, unless `items` yields
+        // fewer than its length says).
         p.len += 3 * k;
         n.len += 3 * k;
         u.len += 2 * k;
@@ -106,15 +109,13 @@ impl VertexSink<'_> {
     #[inline]
     pub fn push_wind(&mut self, record: &[f32; WIND_STRIDE], count: usize) {
         if let Some(w) = &mut self.wind {
-            let mut k = 0;
-            for slots in w.spare[w.len..].chunks_exact_mut(WIND_STRIDE).take(count) {
+            let end = w.len + WIND_STRIDE * count;
+            for slots in w.spare[w.len..end].chunks_exact_mut(WIND_STRIDE) {
                 for (slot, &x) in slots.iter_mut().zip(record) {
                     slot.write(x);
                 }
-                k += 1;
             }
-            // Only the `k` records just written (fewer than `count` past the reserved room).
-            w.len += WIND_STRIDE * k;
+            w.len = end;
         }
     }
 
@@ -685,5 +686,13 @@ mod tests {
     fn a_part_left_short_panics() {
         let mut b = MeshBuilder::with_capacity(0, 0);
         b.append_indices(&[3, 3], |tails| tails[0].push([1, 2, 3]));
+    }
+
+    #[test]
+    #[should_panic(expected = "a vertex past the reserved room")]
+    fn extending_past_the_room_asked_for_panics() {
+        three_vertices(false, |b| {
+            b.append_vertices(1, |sink| sink.extend([(glam::Vec3::ZERO, glam::Vec3::Z, [0.0; 2]); 2].into_iter()));
+        });
     }
 }
