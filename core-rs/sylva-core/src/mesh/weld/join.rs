@@ -11,7 +11,8 @@
 //!    edge) and the zip ([`super::zip`]); every new triangle is checked ([`well_wound`]) before
 //!    anything is committed.
 
-use super::footprint::{self, claim_index, free, Cell, FootPoint, Meeting, Rect, Scratch};
+use super::crossing::Cell;
+use super::footprint::{self, claim_index, free, FootPoint, Meeting, Rect, Scratch};
 use super::wrap;
 use super::zip::zip_hole;
 use crate::math::{unit_or, TAU};

@@ -34,6 +34,7 @@
 //! separate closed tube: a **fallback**, counted in [`super::tube::WeldStats`]. Level-3 stems are
 //! always separate closed tubes.
 
+mod crossing;
 mod footprint;
 mod join;
 mod zip;
