@@ -82,7 +82,8 @@ impl ParamSpec {
 
     /// Check one value against this spec; the error names the field and the allowed range.
     pub fn check(&self, v: f64) -> Result<(), SylvaError> {
-        let range = match self.kind {
+        // The range's text only for an error: a valid value costs no formatting.
+        let range = || match self.kind {
             ParamKind::Bool => "0 or 1".to_string(),
             ParamKind::Enum => {
                 format!("0 to {} ({})", self.max, self.options.as_deref().unwrap_or_default().join(", "))
@@ -91,7 +92,7 @@ impl ParamSpec {
         };
         let bad = |why: &str| SylvaError::InvalidParam {
             param: self.id.clone(),
-            message: format!("{} ({}) {}: allowed range is {}", self.id, self.label, why, range),
+            message: format!("{} ({}) {}: allowed range is {}", self.id, self.label, why, range()),
         };
         if !v.is_finite() {
             return Err(bad("must be a finite number"));

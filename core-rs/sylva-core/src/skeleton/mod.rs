@@ -95,6 +95,10 @@ struct Builder<'a> {
     crown_base: f32,
     /// The drawn crown when Crown Shape is Drawn and a crown edit gives the outline.
     drawn: Option<DrawnCrown>,
+    /// Emptied lists for [`trace()`]'s clones, for the next stems ([`Builder::grow`]).
+    clone_lists: Vec<Vec<StemStart>>,
+    /// [`Builder::pruned_length`]'s trace, kept for the next stem.
+    unit: Vec<Vec3>,
 }
 
 /// Where and how a stem (or a clone made by a split) starts.
@@ -141,6 +145,8 @@ pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Ske
         scale,
         crown_base: p.base_size * length,
         drawn: drawn_crown(p, crown),
+        clone_lists: Vec::new(),
+        unit: Vec::new(),
     };
     b.grow(StemStart {
         level: 0,
@@ -204,7 +210,9 @@ impl Builder<'_> {
         let mut carry = self.split_carry[s.level];
         let trunk = s.level == 0 && s.parent.is_none();
         let mut points = Points::with_capacity(p.level[s.level].curve_res as usize + 1);
-        let clones = trace(p, &s, length, &mut rng, Some(&mut carry), &mut |q| {
+        // The clones' list from a pool, one per level of recursion: no allocation per stem.
+        let mut clones = self.clone_lists.pop().unwrap_or_default();
+        trace(p, &s, length, &mut rng, Some(&mut carry), &mut clones, &mut |q| {
             points.push(q);
             true
         });
@@ -248,12 +256,13 @@ impl Builder<'_> {
         if s.level + 1 < p.levels as usize {
             self.grow_children(s.level, index, &mut rng)?;
         }
-        for mut c in clones {
+        for mut c in clones.drain(..) {
             c.parent = Some(index);
             c.offset = (c.first_seg - s.first_seg) as f32 * length / segs as f32;
             c.length = length;
             self.grow(c)?;
         }
+        self.clone_lists.push(clones);
         Ok(())
     }
 
@@ -261,10 +270,18 @@ impl Builder<'_> {
     /// envelope (bisection), then `L - (L - L_fit) * PruneRatio`. A stem's shape does not depend
     /// on its length (bends are per segment), so one unit-length trace, scaled, answers every
     /// trial length.
-    fn pruned_length(&self, s: &StemStart) -> f32 {
+    fn pruned_length(&mut self, s: &StemStart) -> f32 {
+        let mut unit = std::mem::take(&mut self.unit);
+        unit.clear();
+        let length = self.fit_length(s, &mut unit);
+        self.unit = unit;
+        length
+    }
+
+    /// [`Builder::pruned_length`] with its buffer for the unit-length trace (empty on entry).
+    fn fit_length(&self, s: &StemStart, unit: &mut Vec<Vec3>) -> f32 {
         let p = self.p;
-        let mut unit = Vec::with_capacity(p.level[s.level].curve_res as usize + 1);
-        trace(p, s, 1.0, &mut s.rng.clone(), None, &mut |q| {
+        trace(p, s, 1.0, &mut s.rng.clone(), None, &mut Vec::new(), &mut |q| {
             unit.push(q - s.base);
             true
         });

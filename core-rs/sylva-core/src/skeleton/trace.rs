@@ -16,22 +16,22 @@ use glam::{Quat, Vec3};
 /// turning up or down by AttractionUp, and, when `split_carry` is given, splitting into clones
 /// (SegSplits with error diffusion, BaseSplits at the trunk's first joint) that turn back toward
 /// the original direction over their remaining segments. Each point, base first, goes to
-/// `visit`; tracing stops early when it returns false. Returns the clones.
+/// `visit`; tracing stops early when it returns false. The clones go to `clones`.
 pub(super) fn trace(
     p: &SkeletonParams,
     s: &StemStart,
     length: f32,
     rng: &mut Rng,
     mut split_carry: Option<&mut f32>,
+    clones: &mut Vec<StemStart>,
     visit: &mut impl FnMut(Vec3) -> bool,
-) -> Vec<StemStart> {
+) {
     let lp = &p.level[s.level];
     let segs = lp.curve_res.max(1) as usize;
     let mut t = Tracer { p, s, lp, segs, length, frame: s.frame, pos: s.base, correction: s.correction };
     let seg_len = length / segs as f32;
-    let mut clones = Vec::new();
     if !visit(s.base) {
-        return clones;
+        return;
     }
     for i in s.first_seg..segs {
         if lp.curve_v < 0.0 {
@@ -40,7 +40,7 @@ pub(super) fn trace(
             t.bend(i, rng);
             let n = split_carry.as_deref_mut().map_or(0, |carry| t.split_count(i, carry));
             if n > 0 {
-                t.split(i, n, rng, &mut clones);
+                t.split(i, n, rng, clones);
             }
         }
         t.pos += (t.frame * Vec3::Y) * seg_len;
@@ -48,7 +48,6 @@ pub(super) fn trace(
             break;
         }
     }
-    clones
 }
 
 /// One record being traced: what it reads (the parameters, the record, its level's parameters)

@@ -21,6 +21,8 @@ pub struct MeshBuilder {
     prefault: Option<Prefault>,
     mesh: TreeMesh,
     wind: bool,
+    /// [`MeshBuilder::unwrap_u`]'s copies, kept for its next call (no allocation per call).
+    seam_copies: Vec<(u32, i32, u32)>,
 }
 
 /// The buffers [`MeshBuilder::prefault`] hands to another thread, as regions of a [`Prefault`].
@@ -70,6 +72,7 @@ impl MeshBuilder {
             },
             wind: false,
             prefault: None,
+            seam_copies: Vec::new(),
         }
     }
 

@@ -16,7 +16,25 @@ impl MeshBuilder {
     /// `max` copies (the caller discards `tris`).
     pub fn unwrap_u(&mut self, tris: &mut [u32], max: usize, twin: impl Fn(u32, i32) -> Option<u32>) -> bool {
         let first = self.next_index();
-        let mut copies: Vec<(u32, i32, u32)> = Vec::new();
+        let mut copies = std::mem::take(&mut self.seam_copies);
+        copies.clear();
+        let whole = self.unwrap_with(tris, max, twin, &mut copies);
+        self.seam_copies = copies;
+        if !whole {
+            self.truncate_vertices(first);
+        }
+        whole
+    }
+
+    /// [`MeshBuilder::unwrap_u`] with its list of copies (empty on entry); false when it would
+    /// take more than `max` copies.
+    fn unwrap_with(
+        &mut self,
+        tris: &mut [u32],
+        max: usize,
+        twin: impl Fn(u32, i32) -> Option<u32>,
+        copies: &mut Vec<(u32, i32, u32)>,
+    ) -> bool {
         for t in tris.chunks_exact_mut(3) {
             let shifts = seam_shifts([t[0], t[1], t[2]].map(|i| self.uv_at(i)[0]));
             for (i, &k) in t.iter_mut().zip(&shifts) {
@@ -33,7 +51,6 @@ impl MeshBuilder {
                     copies.push((*i, k, c));
                     *i = c;
                 } else {
-                    self.truncate_vertices(first);
                     return false;
                 }
             }
@@ -114,5 +131,30 @@ mod tests {
         let mut tris = [0, 1, 3];
         assert!(b.unwrap_u(&mut tris, 0, |i, k| (i == 1 && k == 1).then_some(4)));
         assert_eq!((tris, b.next_index()), ([0, 4, 3], 6));
+    }
+
+    #[test]
+    fn each_unwrap_makes_its_own_copies() {
+        // The list of copies is kept between calls: a later call must not reuse an earlier
+        // call's copy (made for other triangles, and dropped when that call failed).
+        let mut b = MeshBuilder::with_wind(8, 8);
+        for u in [0.9, 0.0, 0.05, 0.95] {
+            b.vertex_with_wind([u, 0.0, 0.0], [0.0, 0.0, 1.0], [u, 0.5], &[u; WIND_STRIDE]);
+        }
+        let mut tris = [0, 1, 3];
+        assert!(b.unwrap_u(&mut tris, 8, |_, _| None));
+        assert_eq!((tris, b.next_index()), ([0, 4, 3], 5));
+        let mut tris = [0, 1, 3];
+        assert!(b.unwrap_u(&mut tris, 8, |_, _| None));
+        assert_eq!((tris, b.next_index()), ([0, 5, 3], 6), "a copy of its own");
+        assert_eq!(b.uv_at(5), b.uv_at(4));
+        // A failed call drops its copies; the next call copies again at the same place.
+        let mut tris = [0, 1, 3, 3, 1, 2];
+        assert!(!b.unwrap_u(&mut tris, 1, |_, _| None));
+        assert_eq!(b.next_index(), 6);
+        let mut tris = [3, 1, 2];
+        assert!(b.unwrap_u(&mut tris, 1, |_, _| None));
+        assert_eq!((tris, b.next_index()), ([6, 1, 2], 7));
+        assert_eq!(b.uv_at(6), [0.95 - 1.0, 0.5]);
     }
 }

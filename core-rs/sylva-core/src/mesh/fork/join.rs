@@ -21,6 +21,21 @@ use crate::mesh::stem::Frame;
 use crate::mesh::{MeshBuilder, WIND_DISTANCE, WIND_RADIUS, WIND_STRIDE};
 use glam::Vec3;
 
+/// Reused buffers of [`join`]: one fork's vertices and triangles, and its side patches' columns.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    /// The candidate triangles (the patches', then the crotch's).
+    tris: Vec<u32>,
+    seam: Vec<NewVertex>,
+    patches: Vec<NewVertex>,
+    patch_tris: Vec<u32>,
+    /// A side patch's Bezier columns, and their points on one loop.
+    cols: Vec<[Vec3; 4]>,
+    at: Vec<(Vec3, Vec3)>,
+    /// An end column of a side patch ([`Fork::column`]).
+    column: Vec<(u32, f32)>,
+}
+
 /// One side patch: the half ring of `S` from column `start` (`h + 1` columns, around the stem)
 /// up to the same columns of a branch's ring, with `loops` loops between.
 struct Patch {
@@ -134,22 +149,23 @@ pub(crate) fn join(
     claimed: &mut [bool],
     out: &mut MeshBuilder,
     bridges: &mut Vec<u32>,
-    tris: &mut Vec<u32>,
+    sc: &mut Scratch,
 ) -> bool {
     let Some(fork) = Fork::new(j, rows, claimed, out) else { return false };
     let (pm, cm) = (j.parent, j.child);
+    let Scratch { tris, seam, patches, patch_tris, cols, at, column } = sc;
     // The side patches and their quads do not depend on the seam's rise: built and checked
     // once (when they fold, no rise helps), then written again after each rise's seam.
-    let mut seam = Vec::new();
-    let mut patches = Vec::new();
-    fork.seam(out, RISES[0], &mut seam);
-    fork.side_patches(out, &mut patches);
+    seam.clear();
+    patches.clear();
+    fork.seam(out, RISES[0], seam);
+    fork.side_patches(out, patches, cols, at);
     debug_assert_eq!(fork.first_new as usize + seam.len() + patches.len(), fork.end as usize);
-    write(out, &seam);
-    write(out, &patches);
-    let mut patch_tris = Vec::new();
-    fork.patch_quads(out, &mut patch_tris);
-    if !well_wound(out, &patch_tris) {
+    write(out, seam);
+    write(out, patches);
+    patch_tris.clear();
+    fork.patch_quads(out, patch_tris);
+    if !well_wound(out, patch_tris) {
         out.truncate_vertices(fork.first_new);
         return false;
     }
@@ -157,13 +173,13 @@ pub(crate) fn join(
         if k > 0 {
             out.truncate_vertices(fork.first_new);
             seam.clear();
-            fork.seam(out, rise, &mut seam);
-            write(out, &seam);
-            write(out, &patches);
+            fork.seam(out, rise, seam);
+            write(out, seam);
+            write(out, patches);
         }
         tris.clear();
-        tris.extend_from_slice(&patch_tris);
-        fork.crotch(out, tris, rise);
+        tris.extend_from_slice(patch_tris);
+        fork.crotch(out, tris, rise, column);
         if well_wound(out, &tris[patch_tris.len()..])
             && out.unwrap_u(tris, seam_copies(pm.sides), |i, k| pm.seam_twin(i, k).or_else(|| cm.seam_twin(i, k)))
         {
@@ -311,30 +327,34 @@ impl Fork {
     /// The side patches' loops: per column a cubic Bezier from `S` (leaving along the original's
     /// axis) to the branch's ring (arriving along the branch's axis), handles 0.4 of the chord;
     /// the loops at even parameters, normals across the loops.
-    fn side_patches(&self, out: &MeshBuilder, verts: &mut Vec<NewVertex>) {
+    fn side_patches(
+        &self,
+        out: &MeshBuilder,
+        verts: &mut Vec<NewVertex>,
+        cols: &mut Vec<[Vec3; 4]>,
+        at: &mut Vec<(Vec3, Vec3)>,
+    ) {
         let (n, h, fs) = (self.n, self.h, self.fs);
         for side in &self.sides {
             let (p, f) = (&side.patch, side.frame);
-            let cols: Vec<[Vec3; 4]> = (0..=h)
-                .map(|e| {
-                    let (p0, p3) = (
-                        out.vertex_at(p.ring(self.s_first, e, false, n)).0,
-                        out.vertex_at(p.ring(side.ring, e, false, n)).0,
-                    );
-                    let len = (p3 - p0).length();
-                    // Leaving S along the original's axis, except toward the front and back of
-                    // the clone's patch, which lean with the clone: there they must stay on the
-                    // clone's side of the crotch seam, which leans half as much.
-                    let t0 = if side.ring == self.c_first {
-                        let s = sin(PI * e as f32 / h as f32);
-                        unit_or(fs.tangent * s + f.tangent * (1.0 - s), || fs.tangent)
-                    } else {
-                        fs.tangent
-                    };
-                    [p0, p0 + t0 * (0.4 * len), p3 - f.tangent * (0.4 * len), p3]
-                })
-                .collect();
-            let mut at: Vec<(Vec3, Vec3)> = Vec::with_capacity(h + 1);
+            cols.clear();
+            cols.extend((0..=h).map(|e| {
+                let (p0, p3) = (
+                    out.vertex_at(p.ring(self.s_first, e, false, n)).0,
+                    out.vertex_at(p.ring(side.ring, e, false, n)).0,
+                );
+                let len = (p3 - p0).length();
+                // Leaving S along the original's axis, except toward the front and back of
+                // the clone's patch, which lean with the clone: there they must stay on the
+                // clone's side of the crotch seam, which leans half as much.
+                let t0 = if side.ring == self.c_first {
+                    let s = sin(PI * e as f32 / h as f32);
+                    unit_or(fs.tangent * s + f.tangent * (1.0 - s), || fs.tangent)
+                } else {
+                    fs.tangent
+                };
+                [p0, p0 + t0 * (0.4 * len), p3 - f.tangent * (0.4 * len), p3]
+            }));
             for li in 0..self.rows - 1 {
                 let u = (li + 1) as f32 / self.rows as f32;
                 // Each column's point and direction on this loop, once.
@@ -380,19 +400,21 @@ impl Fork {
     }
 
     /// A side patch's end column `e` (from `S` up to its ring), bottom to top, with height
-    /// parameters.
-    fn column(&self, side: &Side, e: usize, right: bool) -> Vec<(u32, f32)> {
+    /// parameters, into `c`.
+    fn column<'c>(&self, side: &Side, e: usize, right: bool, c: &'c mut Vec<(u32, f32)>) -> &'c [(u32, f32)] {
         let (p, n) = (&side.patch, self.n);
-        let mut c = vec![p.ring(self.s_first, e, right, n)];
-        c.extend((0..self.rows - 1).map(|li| p.at(li, e, right, n)));
-        c.push(p.ring(side.ring, e, right, n));
-        let last = (c.len() - 1) as f32;
-        c.into_iter().enumerate().map(|(i, v)| (v, i as f32 / last)).collect()
+        // rows + 1 vertices: S's, one per loop, the ring's.
+        let last = self.rows as f32;
+        c.clear();
+        c.push((p.ring(self.s_first, e, right, n), 0.0));
+        c.extend((0..self.rows - 1).map(|li| (p.at(li, e, right, n), (li + 1) as f32 / last)));
+        c.push((p.ring(side.ring, e, right, n), self.rows as f32 / last));
+        c
     }
 
     /// The crotch: one row of quads from the seam up to each ring's inner half. Its end quads
     /// border the side patches' end columns (`S`'s front and back up to the ring): zipped strips.
-    fn crotch(&self, out: &MeshBuilder, tris: &mut Vec<u32>, rise: f32) {
+    fn crotch(&self, out: &MeshBuilder, tris: &mut Vec<u32>, rise: f32, col: &mut Vec<(u32, f32)>) {
         let (n, h, a) = (self.n, self.h, self.a);
         let [po, pc] = &self.sides;
         // Height parameter of a seam vertex (0 at S, 1 at the rings), as placed by `seam`.
@@ -402,9 +424,9 @@ impl Fork {
             let (p0, p1) = self.quad(self.o_first, a + k);
             let (m0, m1) = (self.m_at(k, 0), self.m_at(k + 1, 0));
             if k == 0 {
-                zip(out, tris, &self.column(po, h, true), &[(m1, lift(1)), (p1, 1.0)]);
+                zip(out, tris, self.column(po, h, true, col), &[(m1, lift(1)), (p1, 1.0)]);
             } else if k + 1 == h {
-                zip(out, tris, &[(m0, lift(k)), (p0, 1.0)], &self.column(po, 0, false));
+                zip(out, tris, &[(m0, lift(k)), (p0, 1.0)], self.column(po, 0, false, col));
             } else {
                 tris.extend_from_slice(&[m0, m1, p1, m0, p1, p0]);
             }
@@ -414,9 +436,9 @@ impl Fork {
             let (q1, q0) = self.quad(self.c_first, a + n - k - 1);
             let (m0, m1) = (self.m_at(k, 1), self.m_at(k + 1, 1));
             if k == 0 {
-                zip(out, tris, &[(m1, lift(1)), (q1, 1.0)], &self.column(pc, 0, false));
+                zip(out, tris, &[(m1, lift(1)), (q1, 1.0)], self.column(pc, 0, false, col));
             } else if k + 1 == h {
-                zip(out, tris, &self.column(pc, h, true), &[(m0, lift(k)), (q0, 1.0)]);
+                zip(out, tris, self.column(pc, h, true, col), &[(m0, lift(k)), (q0, 1.0)]);
             } else {
                 tris.extend_from_slice(&[m1, m0, q0, m1, q0, q1]);
             }

@@ -32,7 +32,7 @@
 mod clear;
 mod join;
 
-pub(crate) use join::join;
+pub(crate) use join::{join, Scratch};
 
 use super::junction::{surface_bound, Junction, MAX_START};
 use super::stem::{Frame, StemMesh};

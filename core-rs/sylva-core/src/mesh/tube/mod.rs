@@ -167,6 +167,7 @@ struct Sweep<'a> {
     /// The junctions' triangles.
     bridges: Vec<u32>,
     scratch: weld::Scratch,
+    fork_scratch: fork::Scratch,
     stats: WeldStats,
     /// Each stem's block of vertices.
     blocks: Vec<Range<u32>>,
@@ -192,6 +193,7 @@ impl<'a> Sweep<'a> {
             claimed: Vec::with_capacity(plan.indices as usize / 6),
             bridges: Vec::with_capacity(plan.bridges as usize),
             scratch: weld::Scratch::default(),
+            fork_scratch: fork::Scratch::default(),
             stats: WeldStats::default(),
             blocks: vec![0..0; n],
             plan,
@@ -279,10 +281,10 @@ impl<'a> Sweep<'a> {
         };
         let (claimed, out, bridges) = (&mut self.claimed, &mut self.out, &mut self.bridges);
         if j.fork {
-            let tris = &mut self.scratch.tris;
+            let sc = &mut self.fork_scratch;
             forked
                 && fork_rows::row_choices(j, parent_stem, self.p.mesh_quality)
-                    .any(|rows| fork::join(&join, rows, claimed, out, bridges, tris))
+                    .any(|rows| fork::join(&join, rows, claimed, out, bridges, sc))
         } else {
             weld::join(&join, claimed, out, bridges, &mut self.scratch)
         }

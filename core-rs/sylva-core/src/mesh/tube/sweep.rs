@@ -158,8 +158,10 @@ fn sweep_with(
     let trunk = stem.parent.is_none();
     let cap = if trunk { stride + 1 } else { 0 };
     let extra = cap + if stem.cut_end { cut_face::rings(stem) * stride } else { 0 };
-    let mut ring_factor = vec![1.0f32; stride];
-    let mut plane_normal = vec![(0.0f32, 0.0f32); stride];
+    // Only a tube with factors (most are round) needs them: no allocation per round tube.
+    let room = if factor.is_some() { stride } else { 0 };
+    let mut ring_factor = vec![1.0f32; room];
+    let mut plane_normal = vec![(0.0f32, 0.0f32); room];
     let mut seg = (0, stem.segment(0));
     let (_, t0) = seg.1.eval(0.0);
     // `start`: a fork's clone takes its original's frame normal and `v` at the split.
