@@ -29,6 +29,7 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { buildVariety, type Variety } from './variety';
 import { placeForest } from './ecology';
+import { drawNow } from './frames';
 import { switchDistances } from '../lod/selection';
 import type { LodBuffers } from 'sylva-trees/worker';
 import {
@@ -51,8 +52,6 @@ export function drawCallBound(varieties: number): number {
 const SKY = '#dce6ec';
 const GROUND = '#8f9a6e';
 const FRAME_SAMPLES = 60;
-/** While trees arrive, the next frame waits this many times the last frame's time. */
-const ARRIVING_GAP = 2;
 /** Share of the pixel ratio a software renderer draws at while trees arrive. */
 const ARRIVING_RESOLUTION = 0.5;
 
@@ -142,6 +141,8 @@ export class ForestScene {
   private drawnAt = 0;
   /** Start and duration of the last frame drawn (ms). */
   private lastDraw = { at: 0, ms: 0 };
+  /** When the first tree was added (ms), for `drawNow`. */
+  private firstAddedAt = 0;
   /** Whether more trees are on their way (`setArriving`). */
   private arriving = false;
   /** Whether the renderer shades on the CPU (renderQuality.ts). */
@@ -192,8 +193,9 @@ export class ForestScene {
 
   /**
    * Tells the scene whether more trees are on their way. Meanwhile frames are spaced out
-   * (`ARRIVING_GAP`) and a software renderer draws at `ARRIVING_RESOLUTION`: it shades each pixel
-   * on the CPU the generation workers need (a forest frame at 1000×700 took 1.7-2 s on 2 cores).
+   * (`drawNow`, frames.ts) and a software renderer draws at `ARRIVING_RESOLUTION`: it shades each
+   * pixel on the CPU the generation workers need (a forest frame at 1000×700 took 1.7-2 s on 2
+   * cores).
    */
   setArriving(arriving: boolean): void {
     this.arriving = arriving;
@@ -214,6 +216,7 @@ export class ForestScene {
     for (const { lods, tree } of batch)
       this.varieties.push(buildVariety(lods, tree, this.renderer));
     this.rebuild();
+    if (this.loading) this.firstAddedAt = performance.now();
     this.loading = false;
     for (const { added } of batch) added();
   }
@@ -352,10 +355,10 @@ export class ForestScene {
       this.statsValue = { ...this.statsValue, frameMs: median(this.frameTimes) };
     }
     this.drawnAt = 0;
-    if (this.loading || !this.dirty) return;
     // While trees are arriving, the GPU (the CPU, in software) is left to the bakes and the
-    // generation workers two thirds of the time.
-    if (this.arriving && now - this.lastDraw.at < ARRIVING_GAP * this.lastDraw.ms) return;
+    // generation workers (frames.ts).
+    const { loading, dirty, arriving, software, firstAddedAt, lastDraw } = this;
+    if (!drawNow({ loading, dirty, arriving, software, now, firstAddedAt, lastDraw })) return;
     this.dirty = false;
     this.drawnAt = now;
     this.renderFrame();
