@@ -5,11 +5,31 @@
 //! envelope test. Each step is a method of [`Tracer`], which carries the running frame, position
 //! and split correction.
 
-use super::StemStart;
 use crate::math::{self, acos, rad, PI, TAU};
 use crate::params::{LevelParams, SkeletonParams};
 use crate::rng::Rng;
 use glam::{Quat, Vec3};
+
+/// Where and how a stem (or a clone made by a split) starts.
+pub(super) struct StemStart {
+    pub(super) level: usize,
+    pub(super) parent: Option<u32>,
+    /// Distance along the parent record where this record starts.
+    pub(super) offset: f32,
+    pub(super) base: Vec3,
+    /// Local +Y along the stem, local +X the axis positive Curve bends around.
+    pub(super) frame: Quat,
+    /// Full Weber & Penn length of the stem (for a clone: of the stem it split from).
+    pub(super) length: f32,
+    /// Base radius of the whole stem.
+    pub(super) radius: f32,
+    pub(super) down_angle: f32,
+    /// First segment this record covers (0, or the split boundary for a clone).
+    pub(super) first_seg: usize,
+    /// Per-segment turn back toward the original direction after splits (degrees).
+    pub(super) correction: f32,
+    pub(super) rng: Rng,
+}
 
 /// Trace the centre polyline of one record: segments `first_seg..curve_res` of a stem of
 /// `length`, bending by Curve/CurveBack/CurveV (or winding as a helix for negative CurveV),
