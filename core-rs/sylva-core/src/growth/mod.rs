@@ -265,18 +265,7 @@ fn skeleton_at(p: &SkeletonParams, growth: &Growth, fraction: f32) -> Skeleton {
             points,
         });
     }
-    Skeleton {
-        mode: GrowthMode::SpaceColonization,
-        stems,
-        scale: p.crown_base + p.crown_height,
-        crown_base: p.crown_base,
-        seed: p.seed,
-        levels: p.levels,
-        max_vertices: p.max_vertices,
-        age: p.age,
-        maturity: p.maturity,
-        life: None,
-    }
+    Skeleton::of(p, GrowthMode::SpaceColonization, stems, p.crown_base + p.crown_height, p.crown_base)
 }
 
 #[cfg(test)]

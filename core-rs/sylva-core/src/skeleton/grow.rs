@@ -51,18 +51,7 @@ pub fn build_with_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Result<Ske
         rng,
     })?;
     add_roots(p, &mut b.stems);
-    Ok(Skeleton {
-        mode: GrowthMode::Parametric,
-        stems: b.stems,
-        scale,
-        crown_base: b.crown_base,
-        seed: p.seed,
-        levels: p.levels,
-        max_vertices: p.max_vertices,
-        age: p.age,
-        maturity: p.maturity,
-        life: None,
-    })
+    Ok(Skeleton::of(p, GrowthMode::Parametric, b.stems, scale, b.crown_base))
 }
 
 struct Builder<'a> {

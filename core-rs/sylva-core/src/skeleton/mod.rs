@@ -95,6 +95,23 @@ pub(crate) fn drawn_crown(p: &SkeletonParams, crown: Option<&Crown>) -> Option<D
 }
 
 impl Skeleton {
+    /// The skeleton of `stems` made by `mode`, with `p`'s seed, levels, budget and ages and
+    /// no life record.
+    pub(crate) fn of(p: &SkeletonParams, mode: GrowthMode, stems: Vec<Stem>, scale: f32, crown_base: f32) -> Skeleton {
+        Skeleton {
+            mode,
+            stems,
+            scale,
+            crown_base,
+            seed: p.seed,
+            levels: p.levels,
+            max_vertices: p.max_vertices,
+            age: p.age,
+            maturity: p.maturity,
+            life: None,
+        }
+    }
+
     /// Index of the first root ([`StemKind::Root`]): roots come after every other stem, so
     /// `0..first_root()` are the tree's own stems (`stems.len()` when there is no root).
     pub fn first_root(&self) -> usize {
