@@ -182,9 +182,13 @@ pub(super) fn inside_prune_envelope(p: &SkeletonParams, scale: f32, q: Vec3) -> 
     if lateral >= 1.001 * p.prune_width {
         return false;
     }
-    let width =
-        p.prune_width * crate::crown::prune_envelope(ratio, p.prune_width_peak, p.prune_power_low, p.prune_power_high);
-    lateral < width
+    let (peak, low, high) = (p.prune_width_peak, p.prune_power_low, p.prune_power_high);
+    // Well inside a lower bound of the width (computed without the power, a software `powf`
+    // in wasm) is inside: most points of a stem that fits.
+    if lateral < 0.999 * p.prune_width * crate::crown::prune_envelope_floor(ratio, peak, low, high) {
+        return true;
+    }
+    lateral < p.prune_width * crate::crown::prune_envelope(ratio, peak, low, high)
 }
 
 /// Weber & Penn AttractionUp: turn the stem toward the sky by `attraction * declination / segs`
@@ -218,9 +222,15 @@ mod tests {
         let mut p = crate::TreeParams::default().skeleton;
         let mut rng = crate::rng::Rng::new(3, "prune_test");
         let scale = 12.0;
-        for (peak, low, high) in
-            [(0.5, 0.5, 0.5), (0.0, 0.0, 10.0), (1.0, 10.0, 0.0), (0.3, 1.0, 2.0), (0.999, 0.01, 7.0)]
-        {
+        for (peak, low, high) in [
+            (0.5, 0.5, 0.5),
+            (0.0, 0.0, 10.0),
+            (1.0, 10.0, 0.0),
+            (0.3, 1.0, 2.0),
+            (0.999, 0.01, 7.0),
+            (0.6, 0.001, 0.5),
+            (0.4, 3.0, 0.999),
+        ] {
             (p.prune_width_peak, p.prune_power_low, p.prune_power_high) = (peak, low, high);
             for width in [0.01, 0.5, 5.0] {
                 p.prune_width = width;
