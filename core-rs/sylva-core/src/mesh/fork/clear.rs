@@ -15,6 +15,7 @@
 
 use crate::math::max;
 use crate::skeleton::Stem;
+use std::cell::Cell;
 
 use super::{CLEARANCE, COARSE, STEPS};
 
@@ -31,6 +32,19 @@ pub(super) struct Search<'a> {
     pub bound: f32,
     pub min_s: f32,
     pub max_start: f32,
+    /// The last pair of segments' bound (see [`Search::rate`]): the search moves along both
+    /// stems a radius at a time, so it mostly asks for the same pair again.
+    pub memo: Cell<Option<Rate>>,
+}
+
+/// How fast the gap between two segments' points can grow per metre up the original, and the
+/// rounding allowed for, for segments `i_o` of the original and `i_c` of the clone.
+#[derive(Clone, Copy)]
+pub(super) struct Rate {
+    i_o: usize,
+    i_c: usize,
+    rate: f32,
+    slack: f32,
 }
 
 impl Search<'_> {
@@ -78,9 +92,28 @@ impl Search<'_> {
         if !(o.radius_never_grows() && c.radius_never_grows()) {
             return until;
         }
+        let Rate { rate, slack, .. } = self.rate(i_o, i_c);
+        let (_, t_om, t_cm) = self.at_step(m);
+        let room = 0.5 * self.clearance(t_om, t_cm) - gap - slack;
+        if room <= 0.0 {
+            return until;
+        }
+        let s_k = self.at_step(k).0;
+        let reach = if rate > 0.0 { 0.99 * room / rate } else { f32::INFINITY };
+        self.last_within(k, m, |s| s - s_k <= reach).max(until)
+    }
+
+    /// The bound on the gap's growth between segment `i_o` of the original and `i_c` of the
+    /// clone, from the last call when it asked for the same pair.
+    fn rate(&self, i_o: usize, i_c: usize) -> Rate {
+        if let Some(r) = self.memo.get().filter(|r| (r.i_o, r.i_c) == (i_o, i_c)) {
+            return r;
+        }
+        let (o, c) = (self.o, self.c);
+        let (n_o, n_c) = (o.segments() as f32, c.segments() as f32);
         let (seg_o, seg_c) = (o.segment(i_o), c.segment(i_c));
         // Per metre up the original, each segment's parameter moves n / l.
-        let (ko, kc) = (n_o / lo, n_c / lc);
+        let (ko, kc) = (n_o / self.lo, n_c / self.lc);
         let (ho, hc) = (seg_o.hodograph(), seg_c.hodograph());
         let mut rate = 0.0f32;
         for a in ho {
@@ -94,15 +127,9 @@ impl Search<'_> {
         // parameters' (each `t` within a unit in the last place of 1).
         let slack =
             16.0 * f32::EPSILON * (seg_o.magnitude() + seg_c.magnitude()) + 4.0 * f32::EPSILON * (n_o * bo + n_c * bc);
-        let rate = rate + 1e-3 * (ko * bo + kc * bc);
-        let (_, t_om, t_cm) = self.at_step(m);
-        let room = 0.5 * self.clearance(t_om, t_cm) - gap - slack;
-        if room <= 0.0 {
-            return until;
-        }
-        let s_k = self.at_step(k).0;
-        let reach = if rate > 0.0 { 0.99 * room / rate } else { f32::INFINITY };
-        self.last_within(k, m, |s| s - s_k <= reach).max(until)
+        let r = Rate { i_o, i_c, rate: rate + 1e-3 * (ko * bo + kc * bc), slack };
+        self.memo.set(Some(r));
+        r
     }
 
     /// The last coarse step in `k..=m` up to which `ok` holds for every step's distance `s`

@@ -41,6 +41,7 @@ use crate::math::PI;
 use crate::params::MeshParams;
 use crate::skeleton::Stem;
 use glam::Vec3;
+use std::cell::Cell;
 
 /// Largest sine of the clone's angle to its original that makes a fork (30°); steeper clones
 /// are welded into the original's side ([`super::weld`]).
@@ -122,7 +123,8 @@ fn search(
     // one forking one step up gets a quarter more length (more makes its side patch fold).
     let min_s = (r0 + c.radius_at(0.0)) * if ahead > 0.0 { 1.25 } else { 1.0 };
     let lc = c.length.max(1e-6);
-    let walk = clear::Search { o, c, lo, lc, t_split, ahead, step, bound, min_s, max_start: MAX_START };
+    let walk =
+        clear::Search { o, c, lo, lc, t_split, ahead, step, bound, min_s, max_start: MAX_START, memo: Cell::new(None) };
     let (mut on_o, mut on_c) = (o.points(), c.points());
     // The gap between the centres at step `k` and whether it separates the tubes; None past
     // the search's end.
