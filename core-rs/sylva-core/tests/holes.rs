@@ -7,7 +7,7 @@ use common::{assert_mesh_invariants, edge_uses};
 use glam::Vec3;
 use sylva_core::mesh::holes::{candidates, cut, Source};
 use sylva_core::mesh::topology::topology;
-use sylva_core::mesh::tube::build_blocks;
+use sylva_core::mesh::tube::build_laid_out;
 use sylva_core::mesh::{TreeMesh, WIND_STRIDE};
 use sylva_core::params::{MeshParams, SkeletonParams};
 use sylva_core::{generate, skeleton, TreeParams};
@@ -28,9 +28,9 @@ fn pos(m: &TreeMesh, v: usize) -> Vec3 {
 /// The mesh without holes, the same mesh with them cut, and the holes (same densified plan).
 fn before_after(p: &TreeParams) -> (TreeMesh, TreeMesh, Vec<sylva_core::mesh::holes::Hole>) {
     let sk = skeleton::build(&p.skeleton).unwrap();
-    let (before, blocks) = build_blocks(&sk, &p.mesh).unwrap();
+    let (before, layout) = build_laid_out(&sk, &p.mesh).unwrap();
     let mut after = before.clone();
-    let holes = cut(&mut after, &blocks, &sk, &p.mesh);
+    let holes = cut(&mut after, &layout, &sk, &p.mesh);
     (before, after, holes)
 }
 
@@ -130,8 +130,8 @@ fn surface_candidates_come_from_concave_clusters_on_a_fluted_trunk() {
         ..thick(1)
     };
     let sk = skeleton::build(&p.skeleton).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
-    let cands = candidates(&mesh, &blocks, &sk, &p.mesh);
+    let (mesh, layout) = build_laid_out(&sk, &p.mesh).unwrap();
+    let cands = candidates(&mesh, &layout.blocks, &sk, &p.mesh);
     let surface: Vec<_> = cands.iter().filter(|c| c.source == Source::Surface && c.stem == 0).collect();
     assert!(surface.len() >= 6, "six flutes give concave valleys: {}", surface.len());
     // Each is concave: its neighbours lie, on average, above its tangent plane (computed here
@@ -170,8 +170,10 @@ fn surface_candidates_come_from_concave_clusters_on_a_fluted_trunk() {
         ..thick(1)
     };
     let sk = skeleton::build(&round.skeleton).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &round.mesh).unwrap();
-    assert!(candidates(&mesh, &blocks, &sk, &round.mesh).iter().all(|c| c.source != Source::Surface || c.stem != 0));
+    let (mesh, layout) = build_laid_out(&sk, &round.mesh).unwrap();
+    assert!(candidates(&mesh, &layout.blocks, &sk, &round.mesh)
+        .iter()
+        .all(|c| c.source != Source::Surface || c.stem != 0));
 }
 
 #[test]
@@ -179,8 +181,8 @@ fn structural_candidates_sit_below_big_junctions_and_between_roots() {
     let p =
         TreeParams { skeleton: SkeletonParams { root_count: 4, root_spread: 0.0, ..thick(1).skeleton }, ..thick(1) };
     let sk = skeleton::build(&p.skeleton).unwrap();
-    let (mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
-    let cands = candidates(&mesh, &blocks, &sk, &p.mesh);
+    let (mesh, layout) = build_laid_out(&sk, &p.mesh).unwrap();
+    let cands = candidates(&mesh, &layout.blocks, &sk, &p.mesh);
     let junctions: Vec<_> = cands.iter().filter(|c| c.source == Source::Junction).collect();
     let roots: Vec<_> = cands.iter().filter(|c| c.source == Source::Root).collect();
     assert!(!junctions.is_empty(), "no junction candidates");
@@ -214,12 +216,12 @@ fn structural_candidates_sit_below_big_junctions_and_between_roots() {
 fn new_vertices_get_wind_from_the_rim() {
     let p = thick(2);
     let sk = skeleton::build(&p.skeleton).unwrap();
-    let (mut mesh, blocks) = build_blocks(&sk, &p.mesh).unwrap();
+    let (mut mesh, layout) = build_laid_out(&sk, &p.mesh).unwrap();
     // Fake wind data: each vertex's own index in every float, so copies are traceable.
     let n = mesh.vertex_count();
     mesh.wind = (0..n).flat_map(|v| [v as f32; WIND_STRIDE]).collect();
     let before = mesh.clone();
-    let holes = cut(&mut mesh, &blocks, &sk, &p.mesh);
+    let holes = cut(&mut mesh, &layout, &sk, &p.mesh);
     assert_eq!(holes.len(), 2);
     assert_eq!(mesh.wind.len(), mesh.vertex_count() * WIND_STRIDE);
     // Every vertex whose wind changed copied the entry of an untouched vertex used by the cut

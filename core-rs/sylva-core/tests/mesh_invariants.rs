@@ -297,7 +297,8 @@ fn twig_rings_follow_the_bezier_span_and_its_radii() {
     assert_eq!(span.point(0.0), stem.base());
     assert!((span.point(1.0) - stem.tip()).length() < 1e-5);
     // The twig's first ring is the control circle R0 around the base, across the first leg.
-    let (mesh, blocks) = sylva_core::mesh::tube::build_blocks(&g.skeleton, &p.mesh).unwrap();
+    let (mesh, layout) = sylva_core::mesh::tube::build_laid_out(&g.skeleton, &p.mesh).unwrap();
+    let blocks = layout.blocks;
     let sides = twig::sides(stem.radius, p.mesh.mesh_quality, p.mesh.twig_detail) as usize;
     let d0 = (span.p[1] - span.p[0]).normalize();
     for v in blocks[i].start as usize..blocks[i].start as usize + sides + 1 {

@@ -87,7 +87,7 @@ const PREVIEW_MIN_TEXTURE_LEVEL: u32 = 4;
 pub(super) fn full_bark(skeleton: &Skeleton, p: &MeshParams) -> Result<Bark, SylvaError> {
     let built = mesh::tube::build_with_stats(skeleton, p)?;
     let mut mesh = built.mesh;
-    let holes = mesh::holes::cut(&mut mesh, &built.blocks, skeleton, p);
+    let holes = mesh::holes::cut(&mut mesh, &built.layout, skeleton, p);
     let bounds = mesh.bounds();
     Ok(Bark { mesh, welds: built.welds, holes, bounds, preview: false, shade_stale: false, hash: None })
 }

@@ -224,6 +224,11 @@ impl MeshBuilder {
         }
     }
 
+    /// Triangles written so far (indices / 3).
+    pub fn triangle_count(&self) -> u32 {
+        (self.mesh.indices.len() / 3) as u32
+    }
+
     /// Vertex `i`'s position and normal.
     #[inline]
     pub fn vertex_at(&self, i: u32) -> (glam::Vec3, glam::Vec3) {

@@ -34,6 +34,7 @@ mod cavity;
 mod cut;
 mod patch;
 
+use super::tube::Layout;
 use super::TreeMesh;
 use crate::math::TAU;
 use crate::params::MeshParams;
@@ -187,23 +188,23 @@ pub fn dense_sides(sides: u32, p: &MeshParams) -> u32 {
 pub fn candidates(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &MeshParams) -> Vec<Candidate> {
     let twigs = super::twig::mask(skeleton);
     let eligible = eligible(skeleton, p, &twigs);
-    let patches = patches(mesh, blocks, skeleton, &eligible);
+    let patches = patches(mesh, blocks, skeleton, &eligible, None);
     all_candidates(mesh, &patches, skeleton, p, &children(skeleton, &patches))
 }
 
-/// Cut `p.hole_count` holes into `mesh` (the bark, `blocks[i]` the vertices swept for stem `i`).
-/// Returns the holes actually cut (fewer when there are not enough valid places).
-pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &MeshParams) -> Vec<Hole> {
+/// Cut `p.hole_count` holes into `mesh`, the bark as the sweep laid it out (`layout`: each
+/// stem's vertices and triangles, and the stems swept for holes). Returns the holes actually
+/// cut (fewer when there are not enough valid places).
+pub fn cut(mesh: &mut TreeMesh, layout: &Layout, skeleton: &Skeleton, p: &MeshParams) -> Vec<Hole> {
     if p.hole_count == 0 || mesh.indices.is_empty() {
         return Vec::new();
     }
-    let twigs = super::twig::mask(skeleton);
-    let eligible = eligible(skeleton, p, &twigs);
-    let mut patches = patches(mesh, blocks, skeleton, &eligible);
+    let mut patches = patches(mesh, &layout.blocks, skeleton, &layout.eligible, Some(layout));
     if patches.is_empty() {
         return Vec::new();
     }
-    let mut cands: Vec<Candidate> = all_candidates(mesh, &patches, skeleton, p, &children(skeleton, &patches))
+    let kids = children(skeleton, &patches);
+    let mut cands: Vec<Candidate> = all_candidates(mesh, &patches, skeleton, p, &kids)
         .into_iter()
         .filter(|c| c.local_radius >= p.hole_min_radius && c.local_radius > 0.0)
         .collect();
@@ -212,7 +213,6 @@ pub fn cut(mesh: &mut TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p: &
         let j = (rng.next_u32() as usize) % (i + 1);
         cands.swap(i, j);
     }
-    let kids = children(skeleton, &patches);
     let mut regions: Vec<(Region, Cavity)> = Vec::new();
     // Cavities add vertices: a hole that would take the mesh past the vertex budget is skipped,
     // so the budget holds with holes too (fewer holes, never a bigger mesh).

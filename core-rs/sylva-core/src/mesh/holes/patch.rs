@@ -4,6 +4,7 @@
 //! outside the block (junction bridges), on no open edge, and sharing their position with no other
 //! vertex (UV seam, cap ring, welded copies).
 
+use crate::mesh::tube::Layout;
 use crate::mesh::TreeMesh;
 use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;
@@ -78,8 +79,38 @@ pub(super) fn bits(mesh: &TreeMesh, v: u32) -> [u32; 3] {
     [mesh.positions[k].to_bits(), mesh.positions[k + 1].to_bits(), mesh.positions[k + 2].to_bits()]
 }
 
-/// Build the patches of the eligible stems: one pass over all triangles.
-pub(super) fn patches(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, eligible: &[bool]) -> Vec<Patch> {
+/// The triangles that may use an eligible stem's vertices, in order: with a [`Layout`], the
+/// eligible stems' own triangles, the junctions of the eligible stems and of their children,
+/// and the faces after every junction's; without one, every triangle.
+fn near_eligible(mesh: &TreeMesh, skeleton: &Skeleton, eligible: &[bool], layout: Option<&Layout>) -> Vec<Range<u32>> {
+    let all = (mesh.indices.len() / 3) as u32;
+    let Some(l) = layout else { return std::iter::once(0..all).collect() };
+    let is = |i: usize| eligible.get(i).copied().unwrap_or(false);
+    let mut ranges: Vec<Range<u32>> = Vec::new();
+    for (i, s) in skeleton.stems.iter().enumerate() {
+        if is(i) {
+            ranges.extend(l.tubes.get(i).cloned());
+        }
+        if is(i) || s.parent.is_some_and(|p| is(p as usize)) {
+            ranges.extend(l.junctions.get(i).cloned());
+        }
+    }
+    ranges.push(l.rest.min(all)..all);
+    ranges.retain(|r| !r.is_empty());
+    ranges.sort_by_key(|r| r.start);
+    ranges
+}
+
+/// Build the patches of the eligible stems: one pass over the triangles that may use their
+/// vertices ([`near_eligible`]: with the sweep's [`Layout`] a few per cent of a large tree's,
+/// else all of them; the same patches either way).
+pub(super) fn patches(
+    mesh: &TreeMesh,
+    blocks: &[Range<u32>],
+    skeleton: &Skeleton,
+    eligible: &[bool],
+    layout: Option<&Layout>,
+) -> Vec<Patch> {
     let nv = mesh.vertex_count();
     let mut list: Vec<Patch> = eligible
         .iter()
@@ -112,14 +143,17 @@ pub(super) fn patches(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleto
     let owner = |v: u32| list.partition_point(|p| p.block.end <= v);
     let mut foreign: Vec<(usize, u32)> = Vec::new();
     let mut local: Vec<(usize, u32)> = Vec::new();
-    for (k, t) in mesh.indices.chunks_exact(3).enumerate() {
+    let triangles = near_eligible(mesh, skeleton, eligible, layout)
+        .into_iter()
+        .flat_map(|r| mesh.indices[3 * r.start as usize..3 * r.end as usize].chunks_exact(3).zip(r));
+    for (t, k) in triangles {
         let (a, b, c) = (t[0], t[1], t[2]);
         if !(hit(a) || hit(b) || hit(c)) {
             continue;
         }
         let o = [a, b, c].map(|v| if hit(v) { owner(v) } else { usize::MAX });
         if o[0] != usize::MAX && o[0] == o[1] && o[1] == o[2] {
-            local.push((o[0], k as u32));
+            local.push((o[0], k));
         } else {
             for (v, ov) in [a, b, c].into_iter().zip(o) {
                 if ov != usize::MAX {
@@ -198,4 +232,40 @@ pub(super) fn patches(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleto
         }
     }
     list
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::params::{MeshParams, SkeletonParams};
+    use crate::TreeParams;
+
+    #[test]
+    fn the_layout_gives_the_patches_of_every_triangle() {
+        let thick = TreeParams {
+            skeleton: SkeletonParams { ratio: 0.035, ..Default::default() },
+            mesh: MeshParams { hole_count: 3, hole_min_radius: 0.1, ..Default::default() },
+            ..TreeParams::default()
+        };
+        let oak = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
+        for p in [thick, oak] {
+            let sk = crate::skeleton::build(&p.skeleton).unwrap();
+            let built = crate::mesh::tube::build_with_stats(&sk, &p.mesh).unwrap();
+            let (mesh, l) = (&built.mesh, &built.layout);
+            assert!(l.eligible.iter().any(|&e| e));
+            let near = near_eligible(mesh, &sk, &l.eligible, Some(l));
+            let scanned: u32 = near.iter().map(|r| r.len() as u32).sum();
+            assert!(scanned * 4 < (mesh.indices.len() / 3) as u32, "{scanned} triangles read");
+            let (a, b) =
+                (patches(mesh, &l.blocks, &sk, &l.eligible, None), patches(mesh, &l.blocks, &sk, &l.eligible, Some(l)));
+            assert_eq!(a.len(), b.len());
+            for (a, b) in a.iter().zip(&b) {
+                assert_eq!(
+                    (a.stem, &a.block, &a.faces, &a.vf_start, &a.vf, &a.free),
+                    (b.stem, &b.block, &b.faces, &b.vf_start, &b.vf, &b.free)
+                );
+                assert!(!a.faces.is_empty() && a.free.iter().any(|&f| f) && a.free.iter().any(|&f| !f));
+            }
+        }
+    }
 }

@@ -67,9 +67,9 @@ pub fn build(skeleton: &Skeleton, p: &MeshParams) -> Result<TreeMesh, SylvaError
     build_with_stats(skeleton, p).map(|b| b.mesh)
 }
 
-/// [`build`] with each stem's block of vertices (skeleton order), which [`super::holes::cut`] needs.
-pub fn build_blocks(skeleton: &Skeleton, p: &MeshParams) -> Result<(TreeMesh, Vec<Range<u32>>), SylvaError> {
-    build_with_stats(skeleton, p).map(|b| (b.mesh, b.blocks))
+/// [`build`] with where each stem is in the mesh ([`Layout`], which [`super::holes::cut`] reads).
+pub fn build_laid_out(skeleton: &Skeleton, p: &MeshParams) -> Result<(TreeMesh, Layout), SylvaError> {
+    build_with_stats(skeleton, p).map(|b| (b.mesh, b.layout))
 }
 
 /// What [`build_with_stats`] returns.
@@ -78,8 +78,27 @@ pub struct Built {
     pub mesh: TreeMesh,
     /// Welded junctions and fallbacks.
     pub welds: WeldStats,
-    /// Each stem's contiguous block of vertices, in skeleton order.
+    /// Where each stem is in the mesh's buffers.
+    pub layout: Layout,
+}
+
+/// Where the sweep put each stem in the bark's buffers (skeleton order), what
+/// [`super::holes::cut`] reads besides the mesh: a pass over a few stems' faces need not read
+/// every triangle of the tree. Triangle ranges count triangles (index `3 k` starts triangle `k`).
+#[derive(Clone, Debug, Default)]
+pub struct Layout {
+    /// Each stem's contiguous block of vertices.
     pub blocks: Vec<Range<u32>>,
+    /// Each stem's own triangles (its quads, tip and base): they use only its block's vertices.
+    pub tubes: Vec<Range<u32>>,
+    /// The triangles joining each stem to its parent (a welded collar and zip, or a fork's
+    /// patches and crotch): they use only its own block's and its parent's block's vertices.
+    pub junctions: Vec<Range<u32>>,
+    /// The first triangle after every stem's and every junction's (the cut ends' faces).
+    pub rest: u32,
+    /// The stems swept densely enough for tree holes ([`super::holes::eligible`]); empty when
+    /// no holes are asked for.
+    pub eligible: Vec<bool>,
 }
 
 /// [`build`], also counting the welded junctions and the fallbacks, and returning the stems'
@@ -105,13 +124,17 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
     for &i in &order {
         sweep.stem(i);
     }
-    let Sweep { mut out, meshes, claimed, bridges, stats, blocks, .. } = sweep;
+    let Sweep { mut out, meshes, claimed, bridges, stats, blocks, junctions, plan, .. } = sweep;
     // The index pass runs on every thread, the one faulting in the buffers too.
     out.end_prefault();
-    emit_all(&meshes, &claimed, &mut out);
+    let tubes = emit_all(&meshes, &claimed, &mut out);
+    let bridges_at = out.triangle_count();
     out.extend_indices(&bridges);
+    let junctions = junctions.into_iter().map(|r| r.start + bridges_at..r.end + bridges_at).collect();
+    let rest = out.triangle_count();
     super::cut_face::emit_faces(&meshes, &mut out);
-    Ok(Built { mesh: out.finish(), welds: stats, blocks })
+    let layout = Layout { blocks, tubes, junctions, rest, eligible: plan.dense };
+    Ok(Built { mesh: out.finish(), welds: stats, layout })
 }
 
 /// Index writes below which [`emit_all`] stays on one thread.
@@ -119,11 +142,22 @@ const PARALLEL_INDICES: usize = 1 << 17;
 
 /// Every stem's indices ([`emit`]), in stem order: each stem's count first, then the stems'
 /// slices of one allocation written in runs of about equal size on [`crate::par::threads`]
-/// (the helper threads in wasm). The same indices on any number of threads.
-fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder) {
+/// (the helper threads in wasm). The same indices on any number of threads. Returns each stem's
+/// range of triangles ([`Layout::tubes`]).
+fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder) -> Vec<Range<u32>> {
     let stems: Vec<&StemMesh> = meshes.iter().flatten().collect();
     let counts: Vec<usize> = stems.iter().map(|m| index_count(m, claimed)).collect();
     let total: usize = counts.iter().sum();
+    let mut at = out.triangle_count();
+    let mut sized = counts.iter();
+    let tubes = meshes
+        .iter()
+        .map(|m| {
+            let n = if m.is_some() { sized.next().map_or(0, |&n| (n / 3) as u32) } else { 0 };
+            at += n;
+            at - n..at
+        })
+        .collect();
     let threads = if total >= PARALLEL_INDICES { crate::par::threads() } else { 1 };
     out.append_indices(&counts, |tails| {
         // Runs of stems, each about `total / parts` indices, with their tails.
@@ -144,6 +178,7 @@ fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder
             }
         });
     });
+    tubes
 }
 
 /// Circle tables ([`circle`]) by number of sides.
@@ -171,6 +206,8 @@ struct Sweep<'a> {
     stats: WeldStats,
     /// Each stem's block of vertices.
     blocks: Vec<Range<u32>>,
+    /// Each stem's triangles in `bridges` (counted in triangles).
+    junctions: Vec<Range<u32>>,
 }
 
 impl<'a> Sweep<'a> {
@@ -196,6 +233,7 @@ impl<'a> Sweep<'a> {
             fork_scratch: fork::Scratch::default(),
             stats: WeldStats::default(),
             blocks: vec![0..0; n],
+            junctions: vec![0..0; n],
             plan,
             out,
         }
@@ -205,6 +243,7 @@ impl<'a> Sweep<'a> {
     fn stem(&mut self, i: usize) {
         let (skeleton, p, tables, winds) = (self.skeleton, self.p, self.tables, self.winds);
         let block_start = self.out.next_index();
+        let bridges_start = (self.bridges.len() / 3) as u32;
         let table = tables[self.plan.stems[i].sides as usize].as_deref().expect("a table per planned sides");
         let stem = &skeleton.stems[i];
         let m = if self.plan.twigs[i] {
@@ -222,6 +261,7 @@ impl<'a> Sweep<'a> {
             m
         };
         self.finish(i, m, block_start);
+        self.junctions[i] = bridges_start..(self.bridges.len() / 3) as u32;
     }
 
     /// Sweeps tube `i` and welds it into its parent; where the weld fails, sweeps it again as a

@@ -32,7 +32,7 @@ pub(super) struct Plan {
     /// Stems meshed as Bezier twigs ([`twig`]).
     pub twigs: Vec<bool>,
     /// Stems swept densely enough for tree holes ([`holes::eligible`]; may be empty).
-    dense: Vec<bool>,
+    pub dense: Vec<bool>,
     /// The junctions of every parent's welded children, grouped by parent, sorted along it.
     feet: Vec<weld::Junction>,
     /// Each stem's range of `feet`.
