@@ -20,20 +20,33 @@ use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;
 
 /// Outside edge angle at `v` in degrees (180 flat, less when concave), or None for a vertex with
-/// fewer than three neighbours.
+/// fewer than three neighbours. A vertex certainly not concave gets 180 without the arc sines
+/// (a software `acosf` in wasm): for `|y| <= 1`, `asin y = y + y³/6 + 3y⁵/40 + ...` lies within
+/// `(π/2 - 1) |y|³` of `y`, so the mean of the `asin`s is at most the mean of `y + (π/2 - 1) |y|³`;
+/// where that is a ten-thousandth of a radian below the concave mean, the angle is above
+/// `180 - CONCAVE_DEG` whatever the rounding (only that comparison reads such an angle).
 fn edge_angle(mesh: &TreeMesh, patch: &Patch, v: u32, scratch: &mut Vec<u32>) -> Option<f32> {
     patch.neighbours(mesh, v, scratch);
     if scratch.len() < 3 {
         return None;
     }
     let (x, n) = (pos(mesh, v), nrm(mesh, v));
+    let count = scratch.len() as f32;
+    let mut bound = 0.0f32;
+    for &w in scratch.iter() {
+        let y = unit_or(pos(mesh, w) - x, || Vec3::ZERO).dot(n).clamp(-1.0, 1.0);
+        bound += y + (0.5 * PI - 1.0) * (y * y * y).abs();
+    }
+    if bound / count < 0.5 * CONCAVE_DEG.to_radians() - 1e-4 {
+        return Some(180.0);
+    }
     let mut sum = 0.0f32;
     for &w in scratch.iter() {
         let e = unit_or(pos(mesh, w) - x, || Vec3::ZERO);
         // asin(y) = π/2 - acos(y)
         sum += 0.5 * PI - acos(e.dot(n));
     }
-    Some(180.0 - 2.0 * (sum / scratch.len() as f32).to_degrees())
+    Some(180.0 - 2.0 * (sum / count).to_degrees())
 }
 
 fn surface_candidates(mesh: &TreeMesh, patch: &Patch, stem: &Stem, p: &MeshParams, out: &mut Vec<Candidate>) {
@@ -187,4 +200,53 @@ pub(super) fn all_candidates(
         surface_candidates(mesh, patch, stem, p, &mut out);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::holes::patch::patches;
+    use crate::params::SkeletonParams;
+    use crate::TreeParams;
+
+    /// [`edge_angle`] without its shortcut.
+    fn by_the_formula(mesh: &TreeMesh, patch: &Patch, v: u32, scratch: &mut Vec<u32>) -> Option<f32> {
+        patch.neighbours(mesh, v, scratch);
+        if scratch.len() < 3 {
+            return None;
+        }
+        let (x, n) = (pos(mesh, v), nrm(mesh, v));
+        let sum: f32 = scratch.iter().map(|&w| 0.5 * PI - acos(unit_or(pos(mesh, w) - x, || Vec3::ZERO).dot(n))).sum();
+        Some(180.0 - 2.0 * (sum / scratch.len() as f32).to_degrees())
+    }
+
+    #[test]
+    fn the_edge_angles_shortcut_keeps_every_concave_vertex_and_its_angle() {
+        let thick = TreeParams {
+            skeleton: SkeletonParams { ratio: 0.035, ..Default::default() },
+            mesh: MeshParams { hole_count: 3, hole_min_radius: 0.1, lobes: 5, lobe_depth: 0.1, ..Default::default() },
+            ..TreeParams::default()
+        };
+        let oak = crate::presets::find("ca_black_oak").unwrap().params().unwrap();
+        let (mut concave, mut skipped, mut scratch) = (0, 0, Vec::new());
+        for p in [thick, oak] {
+            let sk = crate::skeleton::build(&p.skeleton).unwrap();
+            let built = crate::mesh::tube::build_with_stats(&sk, &p.mesh).unwrap();
+            let (mesh, l) = (&built.mesh, &built.layout);
+            for patch in patches(mesh, &l.blocks, &sk, &l.eligible, Some(l)) {
+                for v in patch.block.clone() {
+                    let (a, b) =
+                        (edge_angle(mesh, &patch, v, &mut scratch), by_the_formula(mesh, &patch, v, &mut scratch));
+                    let limit = 180.0 - CONCAVE_DEG;
+                    assert_eq!(a.map(|a| a < limit), b.map(|b| b < limit), "vertex {v}: {a:?} {b:?}");
+                    if b.is_some_and(|b| b < limit) {
+                        assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits));
+                        concave += 1;
+                    }
+                    skipped += usize::from(a == Some(180.0) && b != Some(180.0));
+                }
+            }
+        }
+        assert!(concave > 100 && skipped > 5 * concave, "{concave} concave, {skipped} without the arc sines");
+    }
 }
