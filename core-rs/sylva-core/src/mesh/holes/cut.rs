@@ -135,7 +135,13 @@ pub(super) fn drop_coincident<T>(mesh: &TreeMesh, patches: &[Patch], regions: &m
         .iter()
         .fold((Vec3::splat(f32::INFINITY), Vec3::splat(f32::NEG_INFINITY)), |(a, b), x| (a.min(x.0), b.max(x.1)));
     let mut bad = vec![false; regions.len()];
+    // Every vertex of the tree is read, most of them outside the holes' box across x alone:
+    // that test first, the others only for the rest (the same vertices pass).
+    let (ux, vx) = (ulo.x, uhi.x);
     for (v, q) in mesh.positions.chunks_exact(3).enumerate() {
+        if q[0] < ux || q[0] > vx {
+            continue;
+        }
         let x = Vec3::new(q[0], q[1], q[2]);
         if x.cmplt(ulo).any() || x.cmpgt(uhi).any() {
             continue;
