@@ -119,8 +119,7 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
     let stems = &skeleton.stems;
-    let mut order: Vec<usize> = (0..stems.len()).collect();
-    order.sort_by_key(|&i| stems[i].level);
+    let order = by_level(stems);
     for &i in &order {
         sweep.stem(i);
     }
@@ -135,6 +134,25 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
     super::cut_face::emit_faces(&meshes, &mut out);
     let layout = Layout { blocks, tubes, junctions, rest, eligible: plan.dense };
     Ok(Built { mesh: out.finish(), welds: stats, layout })
+}
+
+/// The stems' indices level by level, each level in stem order (one stable sort by level, as
+/// a counting sort).
+fn by_level(stems: &[Stem]) -> Vec<usize> {
+    let levels = stems.iter().map(|s| s.level as usize + 1).max().unwrap_or(0);
+    let mut start = vec![0usize; levels + 1];
+    for s in stems {
+        start[s.level as usize + 1] += 1;
+    }
+    for l in 0..levels {
+        start[l + 1] += start[l];
+    }
+    let mut order = vec![0; stems.len()];
+    for (i, s) in stems.iter().enumerate() {
+        order[start[s.level as usize]] = i;
+        start[s.level as usize] += 1;
+    }
+    order
 }
 
 /// Index writes below which [`emit_all`] stays on one thread.
@@ -379,4 +397,19 @@ fn cap_base(stem: &Stem, tube: &Tube, ts: &[f32], frames: &[Frame], m: &StemMesh
     let record = tube.wind.record(stem, ts[m.ring0], r0);
     let centre = f.centre - f.tangent * (0.25 * r0);
     Base::Cap(out.vertex_with_wind(centre.to_array(), (-f.tangent).to_array(), [0.5, m.v0], &record))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn stems_go_level_by_level_as_a_stable_sort_puts_them() {
+        for preset in crate::presets::PRESETS {
+            let params = preset.params().expect("preset");
+            let Ok(sk) = crate::skeleton::build(&params.skeleton) else { continue };
+            let mut sorted: Vec<usize> = (0..sk.stems.len()).collect();
+            sorted.sort_by_key(|&i| sk.stems[i].level);
+            assert_eq!(super::by_level(&sk.stems), sorted, "{}", preset.name);
+        }
+        assert!(super::by_level(&[]).is_empty());
+    }
 }

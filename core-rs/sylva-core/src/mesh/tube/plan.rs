@@ -224,16 +224,25 @@ fn stem_sides(skeleton: &Skeleton, p: &MeshParams, dense: &[bool]) -> Vec<u32> {
 
 /// The junctions grouped by parent, sorted along it, and each stem's range of them.
 fn group_by_parent(junctions: &[Option<weld::Junction>], n: usize) -> (Vec<weld::Junction>, Vec<Range<usize>>) {
-    let mut feet: Vec<weld::Junction> = junctions.iter().flatten().copied().collect();
-    feet.sort_by(|a, b| a.parent.cmp(&b.parent).then(a.t_lo.total_cmp(&b.t_lo)));
-    let mut of = Vec::with_capacity(n);
-    let mut at = 0;
-    for i in 0..n as u32 {
-        let from = at;
-        while at < feet.len() && feet[at].parent == i {
-            at += 1;
-        }
-        of.push(from..at);
+    // Bucketed by parent in stem order (a counting sort), then each parent's sorted along it:
+    // the order of one stable sort by parent, then `t_lo`.
+    let mut start = vec![0usize; n + 1];
+    for j in junctions.iter().flatten() {
+        start[j.parent as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut at = start.clone();
+    let mut slots: Vec<Option<weld::Junction>> = vec![None; start[n]];
+    for j in junctions.iter().flatten() {
+        slots[at[j.parent as usize]] = Some(*j);
+        at[j.parent as usize] += 1;
+    }
+    let mut feet: Vec<weld::Junction> = slots.into_iter().flatten().collect();
+    let of: Vec<Range<usize>> = (0..n).map(|i| start[i]..start[i + 1]).collect();
+    for r in &of {
+        feet[r.clone()].sort_by(|a, b| a.t_lo.total_cmp(&b.t_lo));
     }
     (feet, of)
 }
@@ -267,5 +276,35 @@ mod tests {
             }
         }
         assert!(welded > 50_000, "{welded} welded stems");
+    }
+
+    /// The junctions grouped as one stable sort by parent, then along it, groups them, on every
+    /// preset (ties along a parent kept in stem order).
+    #[test]
+    fn the_junctions_are_grouped_as_a_stable_sort_groups_them() {
+        for preset in crate::presets::PRESETS {
+            let params = preset.params().expect("preset");
+            let Ok(sk) = crate::skeleton::build(&params.skeleton) else { continue };
+            let n = sk.stems.len();
+            let mut junctions = weld::plan(&sk, &params.mesh, &stem_sides(&sk, &params.mesh, &[]));
+            // A tie along a parent, where the stable sort keeps stem order.
+            if let Some(k) = (1..n).find(|&k| junctions[k].is_some() && junctions[k - 1].is_some()) {
+                junctions[k - 1] = junctions[k].map(|j| weld::Junction { fork: !j.fork, ..j });
+            }
+            let (feet, of) = group_by_parent(&junctions, n);
+            let mut sorted: Vec<weld::Junction> = junctions.iter().flatten().copied().collect();
+            sorted.sort_by(|a, b| a.parent.cmp(&b.parent).then(a.t_lo.total_cmp(&b.t_lo)));
+            let key = |j: &weld::Junction| (j.parent, j.t_lo.to_bits(), j.t_start.to_bits(), j.fork);
+            assert_eq!(
+                feet.iter().map(key).collect::<Vec<_>>(),
+                sorted.iter().map(key).collect::<Vec<_>>(),
+                "{}",
+                preset.name
+            );
+            assert_eq!(of.len(), n);
+            for (i, r) in of.iter().enumerate() {
+                assert!(feet[r.clone()].iter().all(|j| j.parent as usize == i), "{}", preset.name);
+            }
+        }
     }
 }
