@@ -9,6 +9,7 @@ pub mod fork;
 pub mod fork_rows;
 pub mod holes;
 mod junction;
+mod layout;
 pub mod shade;
 mod stem;
 pub mod topology;

@@ -34,7 +34,7 @@ mod cavity;
 mod cut;
 mod patch;
 
-use super::tube::Layout;
+use super::layout::Layout;
 use super::TreeMesh;
 use crate::math::TAU;
 use crate::params::MeshParams;

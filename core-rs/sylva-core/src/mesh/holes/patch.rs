@@ -4,7 +4,7 @@
 //! outside the block (junction bridges), on no open edge, and sharing their position with no other
 //! vertex (UV seam, cap ring, welded copies).
 
-use crate::mesh::tube::Layout;
+use crate::mesh::layout::Layout;
 use crate::mesh::TreeMesh;
 use crate::skeleton::{Skeleton, Stem};
 use glam::Vec3;

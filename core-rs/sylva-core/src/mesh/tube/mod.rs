@@ -18,6 +18,7 @@ mod plan;
 mod rings;
 mod sweep;
 
+pub use super::layout::Layout;
 pub use super::stem::{sides_for, StemWind};
 pub use sweep::stem_winds;
 
@@ -80,25 +81,6 @@ pub struct Built {
     pub welds: WeldStats,
     /// Where each stem is in the mesh's buffers.
     pub layout: Layout,
-}
-
-/// Where the sweep put each stem in the bark's buffers (skeleton order), what
-/// [`super::holes::cut`] reads besides the mesh: a pass over a few stems' faces need not read
-/// every triangle of the tree. Triangle ranges count triangles (index `3 k` starts triangle `k`).
-#[derive(Clone, Debug, Default)]
-pub struct Layout {
-    /// Each stem's contiguous block of vertices.
-    pub blocks: Vec<Range<u32>>,
-    /// Each stem's own triangles (its quads, tip and base): they use only its block's vertices.
-    pub tubes: Vec<Range<u32>>,
-    /// The triangles joining each stem to its parent (a welded collar and zip, or a fork's
-    /// patches and crotch): they use only its own block's and its parent's block's vertices.
-    pub junctions: Vec<Range<u32>>,
-    /// The first triangle after every stem's and every junction's (the cut ends' faces).
-    pub rest: u32,
-    /// The stems swept densely enough for tree holes ([`super::holes::eligible`]); empty when
-    /// no holes are asked for.
-    pub eligible: Vec<bool>,
 }
 
 /// [`build`], also counting the welded junctions and the fallbacks, and returning the stems'
