@@ -193,8 +193,9 @@ pub fn candidates(mesh: &TreeMesh, blocks: &[Range<u32>], skeleton: &Skeleton, p
 }
 
 /// Cut `p.hole_count` holes into `mesh`, the bark as the sweep laid it out (`layout`: each
-/// stem's vertices and triangles, and the stems swept for holes). Returns the holes actually
-/// cut (fewer when there are not enough valid places).
+/// stem's vertices and triangles, and the stems swept for holes), both from the same `p`: a
+/// bark swept without holes has no stems dense enough for them, and gets none. Returns the
+/// holes actually cut (fewer when there are not enough valid places).
 pub fn cut(mesh: &mut TreeMesh, layout: &Layout, skeleton: &Skeleton, p: &MeshParams) -> Vec<Hole> {
     if p.hole_count == 0 || mesh.indices.is_empty() {
         return Vec::new();
