@@ -10,11 +10,16 @@
 //!   of the local radius through the hole's rim), so the bark around the opening stays lit.
 //!
 //! Viewers multiply the bark colour by it (the viewer as an attribute, the GLB through `COLOR_0`).
+//! Natively a large bark is shared between the cores; in wasm four vertices read the light field
+//! at once, in `simd128` lanes (`lanes.rs`), with the same bytes.
 
 use super::holes::Hole;
 use super::TreeMesh;
 use crate::crown_shade::CrownLight;
 use glam::Vec3;
+
+#[cfg(target_arch = "wasm32")]
+mod lanes;
 
 /// Light left at the bottom of a cavity.
 pub const CAVITY_FLOOR: f32 = 0.06;
@@ -64,30 +69,70 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
         jobs.push((r, part));
         rest = tail;
     }
+    // Each hole's stem radius divided out once, not at every vertex.
+    let cavities: Vec<(&Hole, f32)> = holes.iter().map(|h| (h, h.radius / hole_size.max(1e-3))).collect();
+    // One vertex's byte from its light, the holes' cavities darkening it further.
+    let shade = |p: &[f32], light: f32| {
+        let p = Vec3::new(p[0], p[1], p[2]);
+        to_byte(cavities.iter().fold(light, |l, &(h, stem_radius)| l * cavity_light(h, stem_radius, p)))
+    };
     crate::par::run(jobs, threads, |(r, part)| {
         let positions = &mesh.positions[r.start * 3..r.end * 3];
-        match (crown, holes.is_empty()) {
+        match (crown, cavities.is_empty()) {
             // Most trees: no holes, the light field alone, read in one tight loop.
-            (Some(c), true) => {
-                for (p, o) in positions.chunks_exact(3).zip(part) {
-                    *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
+            (Some(c), true) => light_bytes(c, positions, part),
+            // Holes (an old tree): the light field's light, then each cavity's.
+            (Some(c), false) => {
+                let mut light = [0.0; 256];
+                for (p, o) in positions.chunks(3 * light.len()).zip(part.chunks_mut(light.len())) {
+                    let light = &mut light[..o.len()];
+                    lights(c, p, light);
+                    for ((p, o), &l) in p.chunks_exact(3).zip(o).zip(light.iter()) {
+                        *o = shade(p, l);
+                    }
                 }
             }
-            // Holes (an old tree), or no leaves: each hole's stem radius divided out once, not
-            // at every vertex.
-            _ => {
-                let cavities: Vec<(&Hole, f32)> = holes.iter().map(|h| (h, h.radius / hole_size.max(1e-3))).collect();
+            // No leaves: the open sky.
+            (None, _) => {
                 for (p, o) in positions.chunks_exact(3).zip(part) {
-                    let p = Vec3::new(p[0], p[1], p[2]);
-                    let light = crown.map_or(1.0, |c| CrownLight::light(c.sky_at_inline(p)));
-                    *o = to_byte(
-                        cavities.iter().fold(light, |l, &(h, stem_radius)| l * cavity_light(h, stem_radius, p)),
-                    );
+                    *o = shade(p, 1.0);
                 }
             }
         }
     });
     out
+}
+
+/// `to_byte(light(sky))` of the light field at every point of `positions` (`x, y, z` each) into
+/// `out`: four at a time in wasm (`shade/lanes.rs`).
+fn light_bytes(c: &CrownLight, positions: &[f32], out: &mut [u8]) {
+    #[cfg(target_arch = "wasm32")]
+    lanes::light_bytes(c, positions, out);
+    #[cfg(not(target_arch = "wasm32"))]
+    light_bytes_one_by_one(c, positions, out);
+}
+
+/// [`light_bytes`], one vertex at a time.
+fn light_bytes_one_by_one(c: &CrownLight, positions: &[f32], out: &mut [u8]) {
+    for (p, o) in positions.chunks_exact(3).zip(out) {
+        *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
+    }
+}
+
+/// The light (`CrownLight::light` of the sky) at every point of `positions` into `out`: four at a
+/// time in wasm (`shade/lanes.rs`).
+fn lights(c: &CrownLight, positions: &[f32], out: &mut [f32]) {
+    #[cfg(target_arch = "wasm32")]
+    lanes::lights(c, positions, out);
+    #[cfg(not(target_arch = "wasm32"))]
+    lights_one_by_one(c, positions, out);
+}
+
+/// [`lights`], one vertex at a time.
+fn lights_one_by_one(c: &CrownLight, positions: &[f32], out: &mut [f32]) {
+    for (p, o) in positions.chunks_exact(3).zip(out) {
+        *o = CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2])));
+    }
 }
 
 /// Barks of at least this many vertices are shaded on every core (natively).

@@ -7,9 +7,14 @@
 //! (Beer–Lambert through the foliage, `k` = 0.5 for randomly oriented leaves). A leaf's brightness
 //! is `MIN_LIGHT + (1 - MIN_LIGHT) · sky`, read trilinearly at its base, so inner and lower leaves
 //! are darker than the outer shell; the bark uses the same field ([`crate::mesh::shade`]).
-//! Deterministic: plain arithmetic and the portable `math::exp`, in a fixed order.
+//! Deterministic: plain arithmetic and the portable `math::exp`, in a fixed order. In wasm the
+//! bark's vertices and the leaves read the field four at a time in `simd128` lanes
+//! (`lanes.rs`), each lane the same operations as one lookup.
 
 use glam::Vec3;
+
+#[cfg(target_arch = "wasm32")]
+mod lanes;
 
 /// Brightness of a leaf (or bark) that sees no sky at all.
 pub const MIN_LIGHT: f32 = 0.3;
@@ -227,6 +232,15 @@ pub fn darken(matrices: &[f32], colors: &mut [f32]) {
 /// [`darken`] with the field of these leaves already built (`None`: no leaves, nothing to do).
 pub fn darken_with(field: Option<&CrownLight>, matrices: &[f32], colors: &mut [f32]) {
     let Some(field) = field else { return };
+    // In wasm four leaves at a time (`crown_shade/lanes.rs`), the same bits.
+    #[cfg(target_arch = "wasm32")]
+    lanes::darken(field, matrices, colors);
+    #[cfg(not(target_arch = "wasm32"))]
+    darken_one_by_one(field, matrices, colors);
+}
+
+/// [`darken_with`] of the leaves of `matrices`, one at a time.
+fn darken_one_by_one(field: &CrownLight, matrices: &[f32], colors: &mut [f32]) {
     for (m, c) in matrices.chunks_exact(16).zip(colors.chunks_exact_mut(3)) {
         let l = CrownLight::light(field.sky_at(Vec3::new(m[12], m[13], m[14]) + 0.5 * Vec3::new(m[4], m[5], m[6])));
         c.iter_mut().for_each(|v| *v *= l);
