@@ -139,18 +139,40 @@ const threaded = await runThreaded(threadedModule(), {
 });
 let passed = 0;
 let failed = 0;
+// The bounds the module reports (compared four floats at a time in wasm, `mesh/bounds.rs`)
+// against a plain scan of its positions, with the same comparisons: `-0` and `0` told apart.
+const scanBounds = (positions) => {
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i += 3) {
+    for (let k = 0; k < 3; k++) {
+      const x = positions[i + k];
+      if (x < min[k]) min[k] = x;
+      if (x > max[k]) max[k] = x;
+    }
+  }
+  return { min, max };
+};
+const sameBounds = (a, b) =>
+  ['min', 'max'].every((e) => a[e].every((v, k) => Object.is(v, b[e][k])));
 for (const [i, c] of cases.entries()) {
   const tree = wasm.generate(JSON.stringify(c.values));
-  const w = JSON.parse(tree.meta_json()).hash;
+  const meta = JSON.parse(tree.meta_json());
+  const scanned = scanBounds(tree.positions());
   tree.free();
+  const w = meta.hash;
   const n = native(c.args).hash;
   const t = threaded.metas[i].hash;
-  if (w === n && t === n) {
+  const bounds = sameBounds(meta.bounds, scanned);
+  if (w === n && t === n && bounds) {
     passed++;
     console.log(`ok   ${c.name}: ${w}`);
   } else {
     failed++;
     console.log(`FAIL ${c.name}: wasm ${w}, threaded wasm ${t}, native ${n}`);
+    if (!bounds) {
+      console.log(`     bounds ${JSON.stringify(meta.bounds)}, scanned ${JSON.stringify(scanned)}`);
+    }
   }
 }
 // Every case needs the bark and the leaves: each hands its placement to the helper.

@@ -3,6 +3,7 @@
 //! [`MeshBuilder`] (lyon's `GeometryBuilder` idea), so there is one layout to document and check.
 
 pub mod bark;
+mod bounds;
 mod builder;
 pub mod cut_face;
 pub mod fork;
@@ -17,6 +18,9 @@ pub mod trunk;
 pub mod tube;
 pub mod twig;
 pub mod weld;
+
+pub use bounds::Bounds;
+pub(crate) use bounds::{merge_ranges, ranges};
 
 use serde::Serialize;
 
@@ -58,58 +62,6 @@ pub struct MeshGroup {
     pub start: u32,
     /// Number of indices (a multiple of 3).
     pub count: u32,
-}
-
-/// Axis-aligned bounds of all positions (m).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Bounds {
-    /// Smallest x, y, z.
-    pub min: [f32; 3],
-    /// Largest x, y, z.
-    pub max: [f32; 3],
-}
-
-impl Bounds {
-    /// The box of points (3 floats each), a zero box when there are none. Plain comparisons
-    /// (NaN never wins): `f32::min` and `f32::max` are calls to `fminf` and `fmaxf` in wasm,
-    /// which cost the bounds of a big tree milliseconds there.
-    pub fn of(positions: &[f32]) -> Bounds {
-        if positions.len() < 3 {
-            return Bounds { min: [0.0; 3], max: [0.0; 3] };
-        }
-        // Four points per record: 12 lanes run as vector code where there is vector code.
-        let whole = positions.len() / 12 * 12;
-        let (lo4, hi4) = ranges::<12>(&positions[..whole]);
-        let mut r = ranges::<3>(&positions[whole..]);
-        for j in 0..4 {
-            let part = |x: &[f32; 12]| std::array::from_fn(|k| x[3 * j + k]);
-            r = merge_ranges(r, (part(&lo4), part(&hi4)));
-        }
-        Bounds { min: r.0, max: r.1 }
-    }
-}
-
-/// Per-lane smallest and largest values of records of `N` floats (infinities for none), with
-/// plain comparisons (NaN never wins).
-pub(crate) fn ranges<const N: usize>(v: &[f32]) -> ([f32; N], [f32; N]) {
-    let mut lo = [f32::INFINITY; N];
-    let mut hi = [f32::NEG_INFINITY; N];
-    for r in v.chunks_exact(N) {
-        for k in 0..N {
-            lo[k] = if r[k] < lo[k] { r[k] } else { lo[k] };
-            hi[k] = if r[k] > hi[k] { r[k] } else { hi[k] };
-        }
-    }
-    (lo, hi)
-}
-
-/// The smallest and largest of two [`ranges`], lane by lane (NaN never wins; on a tie the
-/// first's value).
-pub(crate) fn merge_ranges<const N: usize>(a: ([f32; N], [f32; N]), b: ([f32; N], [f32; N])) -> ([f32; N], [f32; N]) {
-    (
-        std::array::from_fn(|k| if b.0[k] < a.0[k] { b.0[k] } else { a.0[k] }),
-        std::array::from_fn(|k| if b.1[k] > a.1[k] { b.1[k] } else { a.1[k] }),
-    )
 }
 
 /// A generated tree as flat, typed buffers. Coordinates: metres, **Y up**, the tree's base at
