@@ -168,60 +168,55 @@ impl CrownLight {
 /// `sky`. Layer by layer from the top: a ray leaving a cell climbs one layer per step of
 /// `d / d.y`, so the depth above a cell is its own half plus the depth above the point it
 /// reaches in the next layer up (bilinear between that layer's cells; empty outside the grid).
+/// The layers are kept with a margin of empty cells wide enough for any step, so the cells a
+/// ray reaches outside the grid read 0 without a test.
 fn accumulate_sky(depth: &[f32], n: [usize; 3], d: Vec3, sky: &mut [f32]) {
     let step = d / d.y;
     let len = step.length();
     let (nx, ny, nz) = (n[0], n[1], n[2]);
     let at = |y: usize, x: usize, z: usize| (z * ny + y) * nx + x;
-    // Optical depth from the centre of each cell of the layer above out of the grid.
-    let mut above = vec![0.0f32; nx * nz];
-    let mut here = vec![0.0f32; nx * nz];
+    // The margin: a ray reaches at most `|step| + 1` cells beyond its own column.
+    let pad = step.x.abs().max(step.z.abs()).ceil() as usize + 2;
+    let (wx, wz) = (nx + 2 * pad, nz + 2 * pad);
+    // Optical depth from the centre of each cell of the layer above out of the grid (the
+    // margins stay 0).
+    let mut above = vec![0.0f32; wx * wz];
+    let mut here = vec![0.0f32; wx * wz];
     // Where the ray from a cell reaches the layer above depends on its x (or z) alone, the
-    // same for every layer: the two columns (None outside the grid) and the fraction between.
-    let xs: Vec<Reach> = (0..nx).map(|x| Reach::of(x as f32 + step.x, nx)).collect();
-    let zs: Vec<Reach> = (0..nz).map(|z| Reach::of(z as f32 + step.z, nz)).collect();
+    // same for every layer: the lower of the two cells (in the margined layer) and the fraction
+    // past it.
+    let xs: Vec<(usize, f32)> = (0..nx).map(|x| reach(x as f32 + step.x, pad)).collect();
+    let zs: Vec<(usize, f32)> = (0..nz).map(|z| reach(z as f32 + step.z, pad)).collect();
     for y in (0..ny).rev() {
-        for (z, rz) in zs.iter().enumerate() {
-            for (x, rx) in xs.iter().enumerate() {
-                let up = if y + 1 < ny { bilinear(&above, nx, rx, rz) } else { 0.0 };
+        for (z, &(z0, tz)) in zs.iter().enumerate() {
+            let (lo, hi) = (&above[z0 * wx..(z0 + 1) * wx], &above[(z0 + 1) * wx..(z0 + 2) * wx]);
+            let row = (z + pad) * wx + pad;
+            for (x, &(x0, tx)) in xs.iter().enumerate() {
+                let up = if y + 1 < ny {
+                    let a = lo[x0] + (lo[x0 + 1] - lo[x0]) * tx;
+                    let b = hi[x0] + (hi[x0 + 1] - hi[x0]) * tx;
+                    a + (b - a) * tz
+                } else {
+                    0.0
+                };
                 let own = depth[at(y, x, z)] * len;
                 // exp(-0) is 1 exactly: most cells (the margin, the air above and around the
                 // crown) see the open sky, and the software exp is the sweep's cost.
                 let optical = 0.5 * own + up;
                 sky[at(y, x, z)] += if optical == 0.0 { 1.0 } else { crate::math::exp(-optical) };
-                here[z * nx + x] = own + up;
+                here[row + x] = own + up;
             }
         }
         std::mem::swap(&mut above, &mut here);
     }
 }
 
-/// Where a ray reaches a layer along one axis: at fractional cell `f`, between cells
-/// `floor(f)` and the next (None outside the `n` cells), `t` past the first.
-struct Reach {
-    lo: Option<usize>,
-    hi: Option<usize>,
-    t: f32,
-}
-
-impl Reach {
-    fn of(f: f32, n: usize) -> Reach {
-        let f0 = f.floor();
-        let cell = |c: f32| (c >= 0.0 && c < n as f32).then_some(c as usize);
-        Reach { lo: cell(f0), hi: cell(f0 + 1.0), t: f - f0 }
-    }
-}
-
-/// `layer` (`nx` cells along x) at the fractional cell (`x`, `z`), 0 outside.
-#[inline]
-fn bilinear(layer: &[f32], nx: usize, x: &Reach, z: &Reach) -> f32 {
-    let get = |x: Option<usize>, z: Option<usize>| match (x, z) {
-        (Some(x), Some(z)) => layer[z * nx + x],
-        _ => 0.0,
-    };
-    let a = get(x.lo, z.lo) + (get(x.hi, z.lo) - get(x.lo, z.lo)) * x.t;
-    let b = get(x.lo, z.hi) + (get(x.hi, z.hi) - get(x.lo, z.hi)) * x.t;
-    a + (b - a) * z.t
+/// Where a ray reaches a layer along one axis, at fractional cell `f`: the lower of the two
+/// cells it falls between, counted in a layer with `pad` empty cells before the grid's first,
+/// and the fraction past it.
+fn reach(f: f32, pad: usize) -> (usize, f32) {
+    let f0 = f.floor();
+    ((f0 as i64 + pad as i64) as usize, f - f0)
 }
 
 /// Multiplies each leaf's RGB tint (3 floats per leaf, matching `matrices`) by its crown light.
