@@ -328,7 +328,7 @@ pub fn place_lit_by(
             // Size, brightness and yellowing of each of the site's leaves, in the stream's order.
             let mut draws = [[0.0; 3]; 3];
             for d in &mut draws[..per_site as usize] {
-                let s = (1.0 + rng.var(p.foliage_size_v)).max(0.05);
+                let s = math::max(1.0 + rng.var(p.foliage_size_v), 0.05);
                 let b = 1.0 + rng.var(0.5 * v);
                 *d = [s, b, 0.5 * v * rng.next_f32()];
             }

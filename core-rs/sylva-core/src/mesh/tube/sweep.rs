@@ -7,7 +7,7 @@
 //! wind constants the sweep records, and the index pass writing each stem's quads (skipping
 //! claimed ones) and fans.
 
-use crate::math::{cos, sin, unit_or, TAU};
+use crate::math::{self, cos, sin, unit_or, TAU};
 use crate::mesh::stem::{Base, Frame, StemMesh, StemWind};
 use crate::mesh::trunk::{ring_circles, union_outline};
 use crate::mesh::{cut_face, MeshBuilder, Tail, VertexBlock, VertexSink, WIND_STRIDE};
@@ -187,11 +187,11 @@ fn sweep_with(
             let binormal = tan.cross(normal);
             frames[r] = Frame { centre: c, tangent: tan, normal };
             // Never thinner than 5% of the base radius: the last ring before a pointed tip stays a ring.
-            let radius = stem.radius_at(t).max(0.05 * stem.radius);
+            let radius = math::max(stem.radius_at(t), 0.05 * stem.radius);
             let slope = stem.radius_slope(t);
             let inv = 1.0 / (1.0 + slope * slope).sqrt();
             if let Some((pt, pr)) = prev {
-                v += (t - pt) * stem.length / (TAU * (0.5 * (radius + pr)).max(0.25 * stem.radius));
+                v += (t - pt) * stem.length / (TAU * math::max(0.5 * (radius + pr), 0.25 * stem.radius));
             }
             if let Some(factor) = factor {
                 for (j, f) in ring_factor.iter_mut().enumerate() {
@@ -393,7 +393,7 @@ pub(super) fn sweep_trunk(
     let mut rho = Vec::with_capacity(circle.len());
     let mut rings: Vec<Vec<f32>> = Vec::with_capacity(ts.len());
     for &t in ts {
-        let radius = stem.radius_at(t).max(0.05 * stem.radius);
+        let radius = math::max(stem.radius_at(t), 0.05 * stem.radius);
         tp.jitter_at(t, &mut jitter);
         let circles = ring_circles(radius, tp.offset, tp.radius, tp.phase, &jitter);
         union_outline(&circles, &dirs, &mut rho);

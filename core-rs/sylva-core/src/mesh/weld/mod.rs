@@ -44,7 +44,7 @@ pub(crate) use super::junction::{Join, Junction, MAX_START};
 pub(crate) use footprint::Scratch;
 pub(crate) use join::join;
 
-use crate::math::{atan2, unit_or, TAU};
+use crate::math::{atan2, max, unit_or, TAU};
 use crate::params::MeshParams;
 use crate::skeleton::{Skeleton, Stem, StemKind};
 
@@ -98,14 +98,14 @@ fn geometry(stems: &[Stem], i: usize, p: &MeshParams) -> Option<Junction> {
     let (pc, tan) = par.sample(tc);
     let (_, d0) = s.sample(0.0);
     let cos = d0.dot(tan).clamp(-1.0, 1.0);
-    let sin = (1.0 - cos * cos).max(0.0).sqrt();
+    let sin = max(1.0 - cos * cos, 0.0).sqrt();
     if sin < MIN_SIN {
         return None;
     }
     let rc = s.radius_at(0.0);
-    let r_axis = par.radius_at(tc).max(1e-6);
+    let r_axis = max(par.radius_at(tc), 1e-6);
     // The collar flares less on a child nearly as thick as its parent (none on an even fork).
-    let foot = rc * (1.0 + 0.5 * p.weld_collar * (1.0 - rc / r_axis).max(0.0));
+    let foot = rc * (1.0 + 0.5 * p.weld_collar * max(1.0 - rc / r_axis, 0.0));
     let off_axis = s.base() - pc;
     let t_base = tc + off_axis.dot(tan) / lp;
     let t_mid = t_base + r_axis * cos / sin / lp;
@@ -115,7 +115,7 @@ fn geometry(stems: &[Stem], i: usize, p: &MeshParams) -> Option<Junction> {
         return None;
     }
     let bound = if par.lobed { surface_bound(p) } else { 1.0 };
-    let r_max = r_axis.max(par.radius_at(t_lo)).max(par.radius_at(t_hi)) * bound * 1.05 + off_axis.length();
+    let r_max = max(max(r_axis, par.radius_at(t_lo)), par.radius_at(t_hi)) * bound * 1.05 + off_axis.length();
     let s_out = (r_max + rc * cos.abs()) / sin;
     let t_start = (s_out + 0.5 * p.weld_collar * rc) / s.length.max(1e-6);
     if t_start > MAX_START {
@@ -126,9 +126,9 @@ fn geometry(stems: &[Stem], i: usize, p: &MeshParams) -> Option<Junction> {
     let (jc, jt) = s.sample(t_start);
     let ring_mid = tc + (jc - pc).dot(tan) / lp;
     let ct = jt.dot(tan);
-    let ring_half = (rc * (1.0 - ct * ct).max(0.0).sqrt() + (foot - rc) + 0.25 * rc) / lp;
+    let ring_half = (rc * max(1.0 - ct * ct, 0.0).sqrt() + (foot - rc) + 0.25 * rc) / lp;
     t_lo = t_lo.min(ring_mid - ring_half);
-    t_hi = t_hi.max(ring_mid + ring_half);
+    t_hi = max(t_hi, ring_mid + ring_half);
     if t_lo <= 1e-3 || t_hi >= 0.95 {
         return None;
     }
