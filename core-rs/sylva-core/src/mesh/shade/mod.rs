@@ -71,31 +71,14 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
     }
     // Each hole's stem radius divided out once, not at every vertex.
     let cavities: Vec<(&Hole, f32)> = holes.iter().map(|h| (h, h.radius / hole_size.max(1e-3))).collect();
-    // One vertex's byte from its light, the holes' cavities darkening it further.
-    let shade = |p: &[f32], light: f32| {
-        let p = Vec3::new(p[0], p[1], p[2]);
-        to_byte(cavities.iter().fold(light, |l, &(h, stem_radius)| l * cavity_light(h, stem_radius, p)))
-    };
     crate::par::run(jobs, threads, |(r, part)| {
         let positions = &mesh.positions[r.start * 3..r.end * 3];
-        match (crown, cavities.is_empty()) {
-            // Most trees: no holes, the light field alone, read in one tight loop.
-            (Some(c), true) => light_bytes(c, positions, part),
-            // Holes (an old tree): the light field's light, then each cavity's.
-            (Some(c), false) => {
-                let mut light = [0.0; 256];
-                for (p, o) in positions.chunks(3 * light.len()).zip(part.chunks_mut(light.len())) {
-                    let light = &mut light[..o.len()];
-                    lights(c, p, light);
-                    for ((p, o), &l) in p.chunks_exact(3).zip(o).zip(light.iter()) {
-                        *o = shade(p, l);
-                    }
-                }
-            }
-            // No leaves: the open sky.
-            (None, _) => {
+        match crown {
+            Some(c) => light_bytes(c, &cavities, positions, part),
+            // No leaves: the open sky, darkened in the cavities.
+            None => {
                 for (p, o) in positions.chunks_exact(3).zip(part) {
-                    *o = shade(p, 1.0);
+                    *o = shade(&cavities, p, 1.0);
                 }
             }
         }
@@ -103,35 +86,34 @@ pub fn occlusion_with(mesh: &TreeMesh, holes: &[Hole], crown: Option<&CrownLight
     out
 }
 
-/// `to_byte(light(sky))` of the light field at every point of `positions` (`x, y, z` each) into
-/// `out`: four at a time in wasm (`shade/lanes.rs`).
-fn light_bytes(c: &CrownLight, positions: &[f32], out: &mut [u8]) {
+/// A vertex's byte from its `light`, darkened further by each of `cavities` (a hole and the
+/// radius of the stem it is cut into).
+#[inline]
+fn shade(cavities: &[(&Hole, f32)], p: &[f32], light: f32) -> u8 {
+    let p = Vec3::new(p[0], p[1], p[2]);
+    to_byte(cavities.iter().fold(light, |l, &(h, stem_radius)| l * cavity_light(h, stem_radius, p)))
+}
+
+/// Each vertex's byte (`positions`: `x, y, z` each) into `out`: the light field's light there,
+/// darkened in `cavities`. In wasm four vertices at a time (`shade/lanes.rs`).
+fn light_bytes(c: &CrownLight, cavities: &[(&Hole, f32)], positions: &[f32], out: &mut [u8]) {
     #[cfg(target_arch = "wasm32")]
-    lanes::light_bytes(c, positions, out);
+    lanes::light_bytes(c, cavities, positions, out);
     #[cfg(not(target_arch = "wasm32"))]
-    light_bytes_one_by_one(c, positions, out);
+    light_bytes_one_by_one(c, cavities, positions, out);
 }
 
-/// [`light_bytes`], one vertex at a time.
-fn light_bytes_one_by_one(c: &CrownLight, positions: &[f32], out: &mut [u8]) {
-    for (p, o) in positions.chunks_exact(3).zip(out) {
-        *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
-    }
-}
-
-/// The light (`CrownLight::light` of the sky) at every point of `positions` into `out`: four at a
-/// time in wasm (`shade/lanes.rs`).
-fn lights(c: &CrownLight, positions: &[f32], out: &mut [f32]) {
-    #[cfg(target_arch = "wasm32")]
-    lanes::lights(c, positions, out);
-    #[cfg(not(target_arch = "wasm32"))]
-    lights_one_by_one(c, positions, out);
-}
-
-/// [`lights`], one vertex at a time.
-fn lights_one_by_one(c: &CrownLight, positions: &[f32], out: &mut [f32]) {
-    for (p, o) in positions.chunks_exact(3).zip(out) {
-        *o = CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2])));
+/// [`light_bytes`], one vertex at a time; most trees have no holes: the light alone, in its own
+/// tight loop.
+fn light_bytes_one_by_one(c: &CrownLight, cavities: &[(&Hole, f32)], positions: &[f32], out: &mut [u8]) {
+    if cavities.is_empty() {
+        for (p, o) in positions.chunks_exact(3).zip(out) {
+            *o = to_byte(CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
+        }
+    } else {
+        for (p, o) in positions.chunks_exact(3).zip(out) {
+            *o = shade(cavities, p, CrownLight::light(c.sky_at_inline(Vec3::new(p[0], p[1], p[2]))));
+        }
     }
 }
 
