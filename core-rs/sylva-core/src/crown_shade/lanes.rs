@@ -36,10 +36,13 @@ impl CrownLight {
             &self.corners[i32x4_extract_lane::<2>(at) as usize],
             &self.corners[i32x4_extract_lane::<3>(at) as usize],
         ];
-        let corner = |s: usize| f32x4(rec[0][s], rec[1][s], rec[2][s], rec[3][s]);
+        // Each record's two halves as vectors, turned into one vector per corner (lane k the
+        // corner of record k): a 4 × 4 transpose of each half.
+        let half = |h: usize| transpose(rec.map(|r| &r[4 * h..4 * h + 4]));
+        let ([c0, c1, c2, c3], [c4, c5, c6, c7]) = (half(0), half(1));
         let lerp = |a: v128, b: v128, t: v128| f32x4_add(a, f32x4_mul(f32x4_sub(b, a), t));
-        let (x00, x10) = (lerp(corner(0), corner(1), tx), lerp(corner(2), corner(3), tx));
-        let (x01, x11) = (lerp(corner(4), corner(5), tx), lerp(corner(6), corner(7), tx));
+        let (x00, x10) = (lerp(c0, c1, tx), lerp(c2, c3, tx));
+        let (x01, x11) = (lerp(c4, c5, tx), lerp(c6, c7, tx));
         let sky = lerp(lerp(x00, x10, ty), lerp(x01, x11, ty), tz);
         v128_bitselect(f32x4_splat(1.0), sky, above)
     }
@@ -50,12 +53,11 @@ impl CrownLight {
 pub(super) fn darken(field: &CrownLight, matrices: &[f32], colors: &mut [f32]) {
     let n = colors.len() / 3 / 4 * 4;
     for (m, c) in matrices.chunks_exact(64).zip(colors[..3 * n].chunks_exact_mut(12)) {
-        // The leaf's base plus half its length axis (`y`): where its light is read.
-        let axis = |a: usize| {
-            let base = f32x4(m[12 + a], m[28 + a], m[44 + a], m[60 + a]);
-            let y = f32x4(m[4 + a], m[20 + a], m[36 + a], m[52 + a]);
-            f32x4_add(base, f32x4_mul(f32x4_splat(0.5), y))
-        };
+        // The leaf's base plus half its length axis (`y`): where its light is read. Each
+        // matrix's column as a vector, the four leaves' columns transposed into lanes.
+        let columns = |at: usize| transpose(std::array::from_fn(|k| &m[16 * k + at..16 * k + at + 4]));
+        let (base, y) = (columns(12), columns(4));
+        let axis = |a: usize| f32x4_add(base[a], f32x4_mul(f32x4_splat(0.5), y[a]));
         let sky = field.sky_at_lanes(axis(0), axis(1), axis(2));
         let l = f32x4_add(f32x4_splat(super::MIN_LIGHT), f32x4_mul(f32x4_splat(1.0 - super::MIN_LIGHT), sky));
         let l = [
@@ -69,4 +71,24 @@ pub(super) fn darken(field: &CrownLight, matrices: &[f32], colors: &mut [f32]) {
         }
     }
     super::darken_one_by_one(field, &matrices[16 * n..], &mut colors[3 * n..]);
+}
+
+/// Four runs of four floats as four vectors, one per position in the runs (lane `k` from run
+/// `k`): a 4 × 4 transpose, four loads and eight shuffles.
+#[target_feature(enable = "simd128")]
+#[inline]
+fn transpose(runs: [&[f32]; 4]) -> [v128; 4] {
+    let v = |k: usize| {
+        let r: &[f32; 4] = runs[k].try_into().expect("runs of four");
+        f32x4(r[0], r[1], r[2], r[3])
+    };
+    let (a, b, c, d) = (v(0), v(1), v(2), v(3));
+    let (ab_lo, ab_hi) = (i32x4_shuffle::<0, 4, 1, 5>(a, b), i32x4_shuffle::<2, 6, 3, 7>(a, b));
+    let (cd_lo, cd_hi) = (i32x4_shuffle::<0, 4, 1, 5>(c, d), i32x4_shuffle::<2, 6, 3, 7>(c, d));
+    [
+        i32x4_shuffle::<0, 1, 4, 5>(ab_lo, cd_lo),
+        i32x4_shuffle::<2, 3, 6, 7>(ab_lo, cd_lo),
+        i32x4_shuffle::<0, 1, 4, 5>(ab_hi, cd_hi),
+        i32x4_shuffle::<2, 3, 6, 7>(ab_hi, cd_hi),
+    ]
 }

@@ -49,11 +49,11 @@ fn bytes4(light: v128) -> [u8; 4] {
 #[target_feature(enable = "simd128")]
 #[inline]
 fn cavity4(h: &Hole, stem_radius: f32, p: &[f32]) -> v128 {
-    let axis = |a: usize| f32x4(p[a], p[3 + a], p[6 + a], p[9 + a]);
+    let [x, y, z] = xyz(p);
     let (rx, ry, rz) = (
-        f32x4_sub(axis(0), f32x4_splat(h.centre.x)),
-        f32x4_sub(axis(1), f32x4_splat(h.centre.y)),
-        f32x4_sub(axis(2), f32x4_splat(h.centre.z)),
+        f32x4_sub(x, f32x4_splat(h.centre.x)),
+        f32x4_sub(y, f32x4_splat(h.centre.y)),
+        f32x4_sub(z, f32x4_splat(h.centre.z)),
     );
     let n = h.normal;
     // -(rel · normal), glam's `dot` order.
@@ -85,7 +85,22 @@ fn cavity4(h: &Hole, stem_radius: f32, p: &[f32]) -> v128 {
 #[target_feature(enable = "simd128")]
 #[inline]
 fn light4(c: &CrownLight, p: &[f32]) -> v128 {
-    let axis = |a: usize| f32x4(p[a], p[3 + a], p[6 + a], p[9 + a]);
-    let sky = c.sky_at_lanes(axis(0), axis(1), axis(2));
+    let [x, y, z] = xyz(p);
+    let sky = c.sky_at_lanes(x, y, z);
     f32x4_add(f32x4_splat(MIN_LIGHT), f32x4_mul(f32x4_splat(1.0 - MIN_LIGHT), sky))
+}
+
+/// Four points (`x, y, z` each: 12 floats) as their `x`, `y` and `z` lanes: three loads and
+/// two shuffles per axis.
+#[target_feature(enable = "simd128")]
+#[inline]
+fn xyz(p: &[f32]) -> [v128; 3] {
+    let p: &[f32; 12] = p.try_into().expect("four points");
+    let v = |k: usize| f32x4(p[k], p[k + 1], p[k + 2], p[k + 3]);
+    let (a, b, c) = (v(0), v(4), v(8));
+    [
+        i32x4_shuffle::<0, 1, 2, 5>(i32x4_shuffle::<0, 3, 6, 0>(a, b), c),
+        i32x4_shuffle::<0, 1, 2, 6>(i32x4_shuffle::<1, 4, 7, 0>(a, b), c),
+        i32x4_shuffle::<0, 1, 4, 7>(i32x4_shuffle::<2, 5, 0, 0>(a, b), c),
+    ]
 }
