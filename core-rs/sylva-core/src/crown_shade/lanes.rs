@@ -1,8 +1,9 @@
 //! [`CrownLight::sky_at_lanes`]: the light field read at four points at once, in the lanes of
 //! wasm `simd128` vectors, for the bark's occlusion (every bark vertex reads it,
-//! [`crate::mesh::shade`]). The same IEEE operations in the same order as
-//! [`CrownLight::sky_at`], lane by lane (no fused multiply-add, nothing reordered), so the same
-//! bits; `scripts/wasm-parity.mjs` compares the occlusion of every preset with the native one.
+//! [`crate::mesh::shade`]) and the leaves' tints ([`super::darken_with`], four leaves at a time).
+//! The same IEEE operations in the same order as [`CrownLight::sky_at`], lane by lane (no fused
+//! multiply-add, nothing reordered), so the same bits; `scripts/wasm-parity.mjs` compares every
+//! case's hash, which holds the occlusion and the tints, with the native one.
 
 use super::CrownLight;
 use core::arch::wasm32::*;
