@@ -43,6 +43,7 @@
 use super::noise::{cells, fbm, lattice, smoothstep, value};
 use super::{unorm8, BarkType, Texture};
 use crate::math::{atan2, cos, pow, sin, PI, TAU};
+use crate::par;
 
 /// The two maps of one bark type's end grain.
 #[derive(Clone, Debug, PartialEq)]
@@ -182,43 +183,85 @@ fn ring_at(bounds: &[f32], t: f32) -> (usize, f32) {
     (k, ((t - a) / (b - a)).clamp(0.0, 1.0))
 }
 
-/// Distance (stem radii) from the point at `(ρ, θ)` to the radial checks, and the check's
-/// relative width there: `(distance / half width)`, large away from every check.
-fn checks(rho: f32, theta: f32, seed: u32) -> f32 {
-    let count = 3 + (lattice(0, 0, 1, 1, seed + 61) * 2.0) as i32;
-    let mut best = f32::MAX;
-    for i in 0..count {
-        let len = 0.28 + 0.4 * lattice(i, 0, 16, 1, seed + 63);
-        if rho > len {
-            continue;
-        }
-        let base = TAU * (i as f32 + 0.25 + 0.5 * lattice(i, 0, 16, 1, seed + 65)) / count as f32;
-        // The crack wanders a little as it runs out.
-        let wander = (value(rho, i as f32 / 16.0, 3, 16, seed + 67) - 0.5) * 0.14;
-        let mut d = theta - base - wander;
-        d -= TAU * ((d + PI) / TAU).floor();
-        if d.abs() > 0.5 * PI {
-            continue;
-        }
-        let r = rho / len;
-        let half = 0.02 * pow(r.max(0.0), 0.4) * pow((1.0 - r).max(0.0), 1.2) * smoothstep(0.0, 0.03, rho);
-        if half > 0.0 {
-            best = best.min(rho * sin(d.abs()) / half);
-        }
+/// The radial checks of one bake (drying cracks from the pith): each one's length (stem radii)
+/// and its angle at the pith, from the bake's seed.
+struct Checks {
+    /// `(len, base)` of each check, 3 or 4 of them.
+    each: Vec<(f32, f32)>,
+    seed: u32,
+}
+
+/// Above this `ρ sin |d|` a point is more than 1.05 half widths from a check: the largest half
+/// width is `0.02 max r^0.4 (1 − r)^1.2 = 0.02 × 0.4066 = 0.00813` (at `r = 0.25`; tested), so
+/// there the check's term is over 1.05 and its crack, `1 − smoothstep(0.6, 1, ·)`, exactly 0.
+const CHECK_FAR: f32 = 0.0086;
+
+impl Checks {
+    fn new(seed: u32) -> Checks {
+        let count = 3 + (lattice(0, 0, 1, 1, seed + 61) * 2.0) as i32;
+        let each = (0..count)
+            .map(|i| {
+                let len = 0.28 + 0.4 * lattice(i, 0, 16, 1, seed + 63);
+                let base = TAU * (i as f32 + 0.25 + 0.5 * lattice(i, 0, 16, 1, seed + 65)) / count as f32;
+                (len, base)
+            })
+            .collect();
+        Checks { each, seed }
     }
-    best
+
+    /// Distance (stem radii) from the point at `(ρ, θ)` to the checks, over the check's half
+    /// width there: large away from every check (a term known to be over 1.05, [`CHECK_FAR`], is
+    /// left out: it cannot change the crack).
+    fn at(&self, rho: f32, theta: f32) -> f32 {
+        let mut best = f32::MAX;
+        for (i, &(len, base)) in self.each.iter().enumerate() {
+            if rho > len {
+                continue;
+            }
+            // The crack wanders a little as it runs out.
+            let wander = (value(rho, i as f32 / 16.0, 3, 16, self.seed + 67) - 0.5) * 0.14;
+            let mut d = theta - base - wander;
+            d -= TAU * ((d + PI) / TAU).floor();
+            if d.abs() > 0.5 * PI {
+                continue;
+            }
+            let across = rho * sin(d.abs());
+            if across > CHECK_FAR {
+                continue;
+            }
+            let r = rho / len;
+            let half = 0.02 * pow(r.max(0.0), 0.4) * pow((1.0 - r).max(0.0), 1.2) * smoothstep(0.0, 0.03, rho);
+            if half > 0.0 {
+                best = best.min(across / half);
+            }
+        }
+        best
+    }
+}
+
+/// What every texel of one bake shares: the style, rings, checks and colours that depend on the
+/// bark type and seed alone.
+struct Bake<'a> {
+    style: &'a WoodStyle,
+    bounds: &'a [f32],
+    seed: u32,
+    /// The rings' lean (radians).
+    lean: f32,
+    checks: Checks,
+    /// The inner bark (phloem) colour, sRGB.
+    inner: [f32; 3],
 }
 
 /// One texel: sRGB colour and height (0..1) at disc offset `(x, y)` in stem radii.
-fn sample(kind: BarkType, style: &WoodStyle, bounds: &[f32], x: f32, y: f32, seed: u32) -> ([f32; 3], f32) {
+fn sample(b: &Bake, x: f32, y: f32) -> ([f32; 3], f32) {
+    let (style, bounds, seed) = (b.style, b.bounds, b.seed);
     let rho = (x * x + y * y).sqrt();
     let theta = atan2(y, x);
     let (u, v) = (0.5 + x * 0.5, 0.5 + y * 0.5);
     // Eccentric, wobbly rings: an angular displacement, largest half way out, zero at the pith
     // and at the cambium.
     let a = theta / TAU + 0.5;
-    let lean = TAU * lattice(0, 0, 1, 1, seed + 1);
-    let wob = 0.22 * cos(theta - lean)
+    let wob = 0.22 * cos(theta - b.lean)
         + (value(a, rho * 0.5, 7, 2, seed + 3) - 0.5) * 0.3
         + (fbm(a, rho * 0.5, 3, 1, seed + 5) - 0.5) * 0.3;
     let s = (rho / CAMBIUM).min(1.0);
@@ -253,12 +296,11 @@ fn sample(kind: BarkType, style: &WoodStyle, bounds: &[f32], x: f32, y: f32, see
     wood = mix3(wood, scale3(style.heart_rgb, 0.55), pith);
     height -= 0.2 * pith;
     // Radial checks: dark, deep.
-    let crack = 1.0 - smoothstep(0.6, 1.0, checks(rho, theta, seed + 19));
+    let crack = 1.0 - smoothstep(0.6, 1.0, b.checks.at(rho, theta));
     wood = mix3(wood, scale3(style.heart_rgb, 0.25), crack);
     height *= 1.0 - crack * 0.95;
     // Cambium, inner bark, outer bark.
-    let young = to_srgb(kind.style().young_rgb);
-    let inner = mix3(young, style.sap, 0.45);
+    let inner = b.inner;
     let outer = style.bark_rgb;
     let fibres = value(a, rho, 220, 4, seed + 21);
     let phloem = mix3(inner, scale3(inner, 0.85), fibres);
@@ -285,15 +327,30 @@ pub fn bake(kind: BarkType, size: usize) -> EndGrainMaps {
     let bounds = ring_bounds(&style, seed);
     let texel = 1.0 / (size as f32 * UV_RADIUS);
     let offset = |i: usize| ((i as f32 + 0.5) / size as f32 - 0.5) / UV_RADIUS;
-    let samples: Vec<([f32; 3], f32)> = (0..size * size)
-        .map(|i| {
-            let (x, y) = (offset(i % size), offset(i / size));
-            // Outside the disc: the colour at the disc's edge in the same direction.
-            let rho = (x * x + y * y).sqrt();
-            let k = if rho > 1.0 { 1.0 / rho } else { 1.0 };
-            sample(kind, &style, &bounds, x * k, y * k, seed)
-        })
-        .collect();
+    let young = to_srgb(kind.style().young_rgb);
+    let b = Bake {
+        style: &style,
+        bounds: &bounds,
+        seed,
+        lean: TAU * lattice(0, 0, 1, 1, seed + 1),
+        checks: Checks::new(seed + 19),
+        inner: mix3(young, style.sap, 0.45),
+    };
+    // Rows side by side where there are threads (each texel on its own: the same bytes).
+    let rows = par::ranges(size, 4 * par::threads());
+    let samples: Vec<([f32; 3], f32)> = par::map(rows, par::threads(), |rows| {
+        let texels = rows.start * size..rows.end * size;
+        texels
+            .map(|i| {
+                let (x, y) = (offset(i % size), offset(i / size));
+                // Outside the disc: the colour at the disc's edge in the same direction.
+                let rho = (x * x + y * y).sqrt();
+                let k = if rho > 1.0 { 1.0 / rho } else { 1.0 };
+                sample(&b, x * k, y * k)
+            })
+            .collect::<Vec<_>>()
+    })
+    .concat();
     let at = |x: usize, y: usize| samples[y.min(size - 1) * size + x.min(size - 1)].1;
     // Relief depth: 0.6 % of the face's diameter per unit of height.
     let strength = 0.006 * size as f32 * 0.5;

@@ -4,7 +4,12 @@
 
 /// Integer hash of a lattice point (periodic with periods `px`, `py`) to [0, 1).
 pub fn lattice(x: i32, y: i32, px: i32, py: i32, seed: u32) -> f32 {
-    let (x, y) = (x.rem_euclid(px) as u32, y.rem_euclid(py) as u32);
+    hash(x.rem_euclid(px) as u32, y.rem_euclid(py) as u32, seed)
+}
+
+/// [`lattice`] of a point already within its periods.
+#[inline]
+fn hash(x: u32, y: u32, seed: u32) -> f32 {
     let mut h = x.wrapping_mul(0x8da6_b343) ^ y.wrapping_mul(0xd816_3841) ^ seed.wrapping_mul(0xcb1a_b31f);
     h ^= h >> 13;
     h = h.wrapping_mul(0x5bd1_e995);
@@ -19,9 +24,14 @@ pub fn value(u: f32, v: f32, px: i32, py: i32, seed: u32) -> f32 {
     let (fx, fy) = (x - xi as f32, y - yi as f32);
     let s = |t: f32| t * t * (3.0 - 2.0 * t);
     let (sx, sy) = (s(fx), s(fy));
-    let l = |dx: i32, dy: i32| lattice(xi + dx, yi + dy, px, py, seed);
-    let a = l(0, 0) + (l(1, 0) - l(0, 0)) * sx;
-    let b = l(0, 1) + (l(1, 1) - l(0, 1)) * sx;
+    // The cell's corners within the periods: one remainder per axis (a division), the next
+    // corner by a step.
+    let (x0, y0) = (xi.rem_euclid(px), yi.rem_euclid(py));
+    let step = |c: i32, p: i32| if c + 1 == p { 0 } else { c + 1 };
+    let (x1, y1) = (step(x0, px), step(y0, py));
+    let l = |x: i32, y: i32| hash(x as u32, y as u32, seed);
+    let a = l(x0, y0) + (l(x1, y0) - l(x0, y0)) * sx;
+    let b = l(x0, y1) + (l(x1, y1) - l(x0, y1)) * sx;
     a + (b - a) * sy
 }
 

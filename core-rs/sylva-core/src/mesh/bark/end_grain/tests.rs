@@ -179,3 +179,23 @@ fn bytes_are_colour_then_normal() {
     assert_eq!(b.len(), 8 * 32 * 32);
     assert_eq!((&b[..4 * 32 * 32], &b[4 * 32 * 32..]), (&m.color.rgba[..], &m.normal.rgba[..]));
 }
+
+/// FNV-1a (64 bits) of `bytes`.
+fn fnv(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+}
+
+/// The maps the viewer and the exports show, pinned byte for byte at the viewer's size (a change
+/// of the bake's speed must not change a texel; a change of its look updates these on purpose).
+#[test]
+fn the_maps_keep_their_bytes() {
+    let pinned = [
+        (BarkType::Furrowed, 0x0df8_8e20_cdd6_baeb),
+        (BarkType::Plated, 0x6e1f_4f41_98bf_7b15),
+        (BarkType::SmoothBanded, 0xd6d3_5b16_7e1c_ace6),
+        (BarkType::Fibrous, 0x5f0c_fb95_7cc7_58e5),
+    ];
+    for (kind, hash) in pinned {
+        assert_eq!(fnv(&bake(kind, SIZE).to_bytes()), hash, "{kind:?}");
+    }
+}
