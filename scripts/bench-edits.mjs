@@ -194,9 +194,11 @@ export async function benchCut(browser, url) {
     }
     if (process.env.SYLVA_BENCH_VERBOSE) {
       const m = (k) => median(parts.map((p) => p[k]))?.toFixed(1);
+      const f = (k) => parts[0]?.[k]?.toFixed(1);
       console.error(
         `bench: cut ${firsts.map((t) => t.toFixed(1)).join(' ')}\n` +
-          `  medians: input to request ${m(0)}, request to answer ${m(2)} (core ${m(1)}), viewer ${m(3)} ms`,
+          `  medians: input to request ${m(0)}, request to answer ${m(2)} (core ${m(1)}), viewer ${m(3)} ms\n` +
+          `  first cut: input to request ${f(0)}, request to answer ${f(2)} (core ${f(1)}), viewer ${f(3)} ms`,
       );
     }
     return {

@@ -12,6 +12,7 @@ interface Window {
     leafPullCheck?(): { covered: number; differing: number } | null;
     growth?(): { markers: number; volumes: number; dragging: boolean };
     view?(from: [number, number, number], to: [number, number, number]): void;
+    endGrainKind?(): number;
     edits?(): {
       tool: string | null;
       dragging: boolean;

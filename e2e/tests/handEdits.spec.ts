@@ -2,7 +2,8 @@
  * Shape by hand on the real app, with Playwright's mouse: a paint stroke beside the tree makes
  * it grow there (the bounds and the pixels), a click cuts a branch (fewer vertices), the share
  * link reproduces the edited tree's hash in a fresh page (a younger Age has the branch whole, an
- * older one a callus over the cut), and undo restores the hash.
+ * older one a callus over the cut), and undo restores the hash. The cut faces' end grain is in
+ * the viewer as soon as the Cut tool is chosen.
  *
  * Needs a core that reads the edit list (`SkeletonParams::edits`, the `"edits"` key of the
  * generate JSON): a core without it rejects the key and the edited tree never comes.
@@ -129,7 +130,12 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
   const vertices = await statNumber(page, 'stat-vertices');
   const branch = await findBranch(page);
 
+  // Choosing the Cut tool has the worker bake the end grain while the user aims (it once took
+  // the first cut 0.25-0.3 s): it is in the viewer before any cut.
+  const endGrain = () => page.evaluate(() => window.__sylva?.endGrainKind?.() ?? null);
+  expect(await endGrain()).toBe(-1);
   await page.keyboard.press('c');
+  await expect.poll(endGrain).toBeGreaterThanOrEqual(0);
   await page.mouse.click(branch.x, branch.y);
   const cut = await waitForNewTree(page, original);
   expect(await statNumber(page, 'stat-vertices')).toBeLessThan(vertices);

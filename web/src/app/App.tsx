@@ -72,7 +72,7 @@ export function App() {
   });
   const growth = useGrowthEditor(viewerRef, params, volumes, editor.change);
   const addNotice = useCallback((text: string) => setNotices((list) => [...list, text]), []);
-  const hand = useHandEdits(viewerRef, editor, addNotice);
+  const hand = useHandEdits(viewerRef, editor, addNotice, generatorRef);
   useViewerDebugHook(viewerRef);
   useSettleOnRelease(generatorRef);
 

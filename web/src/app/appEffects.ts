@@ -25,6 +25,7 @@ export function useViewerDebugHook(viewerRef: RefObject<TreeViewer | null>): voi
         probeFrame: () => viewerRef.current?.probeFrame() ?? null,
         leafPullCheck: () => viewerRef.current?.leafPullCheck() ?? null,
         organs: () => viewerRef.current?.organs() ?? null,
+        endGrainKind: () => viewerRef.current?.endGrainKind ?? -1,
         setOrgansVisible: (visible) => viewerRef.current?.setOrgansVisible(visible),
         view: (from, to) => {
           const host = viewerRef.current?.overlayHost();

@@ -91,6 +91,8 @@ export interface SylvaDebugHook {
   leafPullCheck(): LeafPullCheck | null;
   /** Size of the bark colour map, null before it arrived. */
   barkTexture(): { width: number; height: number } | null;
+  /** The bark type of the cut faces' end grain in the viewer, -1 before the worker sent one. */
+  endGrainKind(): number;
   /** Flowers, fruit, catkins and buds drawn (one InstancedMesh per set) and the fallen leaves. */
   organs(): OrganDebug | null;
   /** Shows or hides the organ meshes (e2e: a frame with and without them). */

@@ -29,6 +29,11 @@ export interface Generator {
   progress: number | null;
   /** Cancels the generation in flight (fresh worker; the last tree stays). */
   cancel(): void;
+  /**
+   * The Cut tool was chosen: the last tree is asked for again with its end grain, so the worker
+   * bakes it while the user aims and the first cut answers without the bake.
+   */
+  prepareCut(): void;
 }
 
 /** What a request carries beside the params. */
@@ -59,6 +64,8 @@ export function useGenerator(
   const [error, setError] = useState<SylvaError | null>(null);
   const [restarts, setRestarts] = useState(0);
   const schedulerRef = useRef<GenerationScheduler | null>(null);
+  /** The last tree asked for (the worker's, once answered). */
+  const lastRef = useRef<{ params: Params; shape: TreeShape } | null>(null);
   const onReadyRef = useRef(onReady);
   const [log] = useState(() => new RequestLog());
 
@@ -77,7 +84,9 @@ export function useGenerator(
             announced = true;
             const params = onReadyRef.current(info);
             const edits = initial?.editsRef.current ?? [];
-            log.requested(scheduler.request(params, initial?.volumesRef.current, { edits }));
+            const volumes = initial?.volumesRef.current;
+            lastRef.current = { params, shape: { volumes, edits } };
+            log.requested(scheduler.request(params, volumes, { edits }));
           }
         },
         onResult: (result) => {
@@ -120,11 +129,21 @@ export function useGenerator(
     (params: Params, frame: boolean, shape: TreeShape = {}) => {
       const scheduler = schedulerRef.current;
       if (!scheduler) return;
+      lastRef.current = { params, shape };
       const { volumes, edits, interactive = false } = shape;
       log.requested(scheduler.request(params, volumes, { interactive, edits }), frame);
     },
     [log],
   );
+
+  const prepareCut = useCallback(() => {
+    const scheduler = schedulerRef.current;
+    const last = lastRef.current;
+    if (!scheduler || !last) return;
+    // At full quality: a drag not yet settled settles here.
+    const { volumes, edits } = last.shape;
+    log.requested(scheduler.request(last.params, volumes, { edits, endGrain: true }));
+  }, [log]);
 
   const settle = useCallback(() => {
     const id = schedulerRef.current?.settle();
@@ -137,5 +156,5 @@ export function useGenerator(
     schedulerRef.current?.cancel();
   }, []);
 
-  return { stats, error, restarts, request, settle, clearError, progress, cancel };
+  return { stats, error, restarts, request, settle, clearError, progress, cancel, prepareCut };
 }

@@ -21,6 +21,7 @@ import { HandEditTools, type Brush, type EditTool } from '../viewer/HandEditTool
 import type { TreeViewer } from '../viewer/TreeViewer';
 import { installDebugHook } from './debugHook';
 import type { Editor } from './useEditor';
+import type { Generator } from './useGenerator';
 import { withQueryEntry } from './queryEntry';
 
 /** What the edit panel sees. */
@@ -164,11 +165,15 @@ function useToolsInViewer(
   return toolsRef;
 }
 
-/** See the module comment. `onNotice` shows a message in the app's banner. */
+/**
+ * See the module comment. `onNotice` shows a message in the app's banner; `generatorRef`'s worker
+ * bakes the cut faces' end grain as soon as the Cut tool is chosen.
+ */
 export function useHandEdits(
   viewerRef: RefObject<TreeViewer | null>,
   editor: Editor,
   onNotice: (text: string) => void,
+  generatorRef?: RefObject<Generator | null>,
 ): HandEdits {
   const [tool, setTool] = useState<EditTool | null>(null);
   const [brush, setBrush] = useState<Brush>({ ...DEFAULT_BRUSH });
@@ -182,6 +187,10 @@ export function useHandEdits(
   const toolsRef = useToolsInViewer(viewerRef, latest, setReports);
 
   useEffect(() => toolsRef.current?.set(tool, brush), [toolsRef, tool, brush]);
+  // The Cut tool chosen: the worker bakes the end grain while the user aims, not at the first cut.
+  useEffect(() => {
+    if (tool === 'cut') generatorRef?.current?.prepareCut();
+  }, [tool, generatorRef]);
 
   useEffect(() => {
     const onKey = (event: KeyboardEvent) => {

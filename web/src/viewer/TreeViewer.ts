@@ -365,6 +365,11 @@ export class TreeViewer {
     return this.tree.barkTexture;
   }
 
+  /** The bark type of the cut faces' end grain, -1 before the worker sent one (debug hook). */
+  get endGrainKind(): number {
+    return this.tree.endGrainKind;
+  }
+
   private requestRender(): void {
     if (this.frameRequested || !this.rendering) return;
     if (this.tree.barkMesh === null && !this.drawEmpty) {

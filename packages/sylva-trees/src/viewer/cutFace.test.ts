@@ -67,6 +67,33 @@ describe('end grain from the worker', () => {
     expect(h.tree().endGrain?.kind).toBe(1);
   });
 
+  it('comes ahead of the first cut when asked for, so that the cut answers without the bake', () => {
+    const wasm = loadWasm();
+    const bakes: number[] = [];
+    const counted = {
+      ...wasm,
+      end_grain_maps: (kind: number, size: number) => {
+        bakes.push(kind);
+        return wasm.end_grain_maps!(kind, size);
+      },
+    };
+    const h = harness(counted);
+    h.handle({ type: 'generate', id: 1, params: {} });
+    // The Cut tool chosen: the same tree again, with its end grain and nothing else.
+    h.handle({ type: 'generate', id: 2, params: {}, endGrain: true });
+    // The first cut: no bake, no end grain in its answer (the viewer has it).
+    h.handle({ type: 'generate', id: 3, params: {}, edits: [CUT] });
+    const r = h.results();
+    expect(r.map((x) => x.endGrain?.kind)).toEqual([undefined, 0, undefined]);
+    expect(r[1]!.bark).toBeUndefined();
+    expect(hasCutFaces(r[2]!.meta)).toBe(true);
+    expect(bakes).toEqual([0]);
+    // Asked for again: already sent for this bark type.
+    h.handle({ type: 'generate', id: 4, params: {}, edits: [CUT], endGrain: true });
+    expect(bakes).toEqual([0]);
+    expect(h.tree().endGrain?.kind).toBe(0);
+  });
+
   it('splits the core buffer into colour then normal, the disc opaque inside', () => {
     const wasm = loadWasm();
     const g = endGrainOf(wasm, 2)!;

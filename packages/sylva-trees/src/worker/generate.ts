@@ -174,7 +174,7 @@ export class SessionGenerator {
       this.postOwedHash();
       throw thrown;
     }
-    const update = this.collect(meta);
+    const update = this.collect(meta, request.endGrain === true);
     this.post({ type: 'result', id: request.id, ...update }, transferOf(update));
     this.hashOwed = meta.preview ? null : request.id;
     if (this.hashOwed !== null) {
@@ -216,8 +216,11 @@ export class SessionGenerator {
     if (hash) this.post({ type: 'hash', id, hash }, []);
   }
 
-  /** The arrays `meta.changes` names, copied out of the module (one copy each). */
-  private collect(meta: TreeMeta): TreeUpdate {
+  /**
+   * The arrays `meta.changes` names, copied out of the module (one copy each); the end grain
+   * too when the tree has cut faces or `grain` asks for it, unless already sent for its type.
+   */
+  private collect(meta: TreeMeta, grain: boolean): TreeUpdate {
     const s = this.session;
     const all = {
       skeleton: true,
@@ -278,8 +281,9 @@ export class SessionGenerator {
       const bark = baked?.kind === kind ? baked : barkOf(this.wasm, kind);
       if (bark) update.barkTextures = bark;
     }
-    // The end grain only once a tree has cut faces (about 100 ms to bake), again for a new type.
-    if (this.grainSent !== kind && hasCutFaces(meta)) {
+    // The end grain once a tree has cut faces or the request asks for it ahead of a cut (about
+    // 0.1 s to bake the first time in the browser), again for a new type.
+    if (this.grainSent !== kind && (grain || hasCutFaces(meta))) {
       this.grainSent = kind;
       const grain = endGrainOf(this.wasm, kind);
       if (grain) update.endGrain = grain;

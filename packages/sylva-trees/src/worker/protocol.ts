@@ -31,6 +31,12 @@ export interface GenerateRequest {
    * would take longer than a frame (the full tree follows when the drag settles).
    */
   preview?: boolean;
+  /**
+   * Send the end grain of the tree's bark type with this answer even if the tree has no cut
+   * yet (the app's Cut tool is active): the bake (about 0.1 s) then happens before the first
+   * cut, whose answer needs none. Sent once per bark type either way.
+   */
+  endGrain?: boolean;
 }
 
 /** Ask the worker for the leaf inspector's drawing of the `leaf_*` params after growth `step` (-1: finished). */

@@ -75,4 +75,23 @@ describe('GenerationScheduler edits', () => {
     expect(current().posted.at(-1)).toMatchObject({ id: c, edits: [stroke, cut] });
     expect(current().posted.filter((p) => p.type === 'generate')).toHaveLength(2);
   });
+
+  it('asks for the end grain only when told (the Cut tool chosen), at full quality', () => {
+    const { scheduler, current } = setup();
+    const a = scheduler.request({ seed: 1 }, undefined, { interactive: true });
+    current().emit(result(a));
+    const b = scheduler.request({ seed: 1 }, undefined, { edits: [stroke], endGrain: true });
+    expect(current().posted.at(-1)).toEqual({
+      type: 'generate',
+      id: b,
+      params: { seed: 1 },
+      edits: [stroke],
+      endGrain: true,
+    });
+    current().emit(result(b));
+    // Nothing left to settle: the request for the end grain was the full tree.
+    expect(scheduler.settle()).toBeNull();
+    const c = scheduler.request({ seed: 2 });
+    expect(current().posted.at(-1)).toEqual({ type: 'generate', id: c, params: { seed: 2 } });
+  });
 });

@@ -59,6 +59,8 @@ export interface RequestOptions {
    * skeleton stage in the worker's session); sent only when non-empty.
    */
   edits?: readonly Edit[];
+  /** Ask for the end grain of the tree's bark type ahead of a first cut ([`GenerateRequest`]). */
+  endGrain?: boolean;
 }
 
 /** Default longest run of one request before the worker is stopped and recreated (ms). */
@@ -199,6 +201,7 @@ export class GenerationScheduler {
       ...(volumes?.length ? { volumes } : {}),
       ...(options.edits?.length ? { edits: [...options.edits] } : {}),
       ...(interactive ? { preview: true } : {}),
+      ...(options.endGrain ? { endGrain: true } : {}),
     });
     return id;
   }
