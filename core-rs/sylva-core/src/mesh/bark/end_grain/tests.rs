@@ -199,3 +199,16 @@ fn the_maps_keep_their_bytes() {
         assert_eq!(fnv(&bake(kind, SIZE).to_bytes()), hash, "{kind:?}");
     }
 }
+
+/// [`CHECK_FAR`]: no check is wider than its bound, and a point that far from a check (or
+/// farther) gets no crack from it, exactly, so the bake may leave its term out.
+#[test]
+fn a_check_is_never_wider_than_its_far_bound() {
+    let mut widest = 0.0f32;
+    for k in 0..=1_000_000 {
+        let r = k as f32 / 1e6;
+        widest = widest.max(0.02 * pow(r, 0.4) * pow(1.0 - r, 1.2));
+    }
+    assert!(widest > 0.0081 && widest < 0.00814, "{widest}");
+    assert_eq!(1.0 - smoothstep(0.6, 1.0, CHECK_FAR / (widest * 1.001)), 0.0);
+}
