@@ -105,9 +105,40 @@ pub fn hash_into(kind: BarkType, h: u64) -> u64 {
     (h ^ (0xb4_0000 | kind as u64)).wrapping_mul(0x0000_0100_0000_01b3)
 }
 
-/// Linear 0..1 to an sRGB byte.
+/// Linear 0..1 to an sRGB byte: [`srgb8_by_power`]'s byte, found among the smallest input of
+/// each byte ([`srgb_steps`]) instead of through a power (libm's `powf`, in software in wasm,
+/// three per texel). The byte never falls as the input grows, so the count of steps at or below
+/// the input is that byte (tested around every step and over the whole range; NaN: 0 both ways).
 fn srgb8(c: f32) -> u8 {
+    srgb_steps().partition_point(|&step| step <= c) as u8
+}
+
+/// Linear 0..1 to an sRGB byte, through the power: `c^(1/2.2) 255 + ½`, clamped, through `u8`.
+fn srgb8_by_power(c: f32) -> u8 {
     (pow(c.clamp(0.0, 1.0), 1.0 / 2.2) * 255.0 + 0.5) as u8
+}
+
+/// For each byte from 1 to 255, the smallest input in 0..=1 that [`srgb8_by_power`] takes to it
+/// or above: a bisection over the floats' bits (in that range they order like the floats), once
+/// per process.
+fn srgb_steps() -> &'static [f32; 255] {
+    static STEPS: std::sync::OnceLock<[f32; 255]> = std::sync::OnceLock::new();
+    STEPS.get_or_init(|| {
+        std::array::from_fn(|k| {
+            let byte = k as u8 + 1;
+            // 0 gives byte 0, below `byte`; 1 gives 255, at least `byte`.
+            let (mut below, mut at) = (0u32, 1.0f32.to_bits());
+            while at - below > 1 {
+                let mid = below + (at - below) / 2;
+                if srgb8_by_power(f32::from_bits(mid)) >= byte {
+                    at = mid;
+                } else {
+                    below = mid;
+                }
+            }
+            f32::from_bits(at)
+        })
+    })
 }
 
 fn unorm8(c: f32) -> u8 {
@@ -118,9 +149,14 @@ fn unorm8(c: f32) -> u8 {
 pub fn bake(kind: BarkType, size: usize) -> BarkMaps {
     let size = size.next_power_of_two().max(16);
     let seed = 1 + kind as u32 * 101;
-    let samples: Vec<patterns::Sample> = (0..size * size)
-        .map(|i| patterns::sample(kind, (i % size) as f32 / size as f32, (i / size) as f32 / size as f32, seed))
-        .collect();
+    // Rows side by side where there are threads (each texel on its own: the same bytes).
+    let rows = crate::par::ranges(size, 4 * crate::par::threads());
+    let samples: Vec<patterns::Sample> = crate::par::map(rows, crate::par::threads(), |rows| {
+        (rows.start * size..rows.end * size)
+            .map(|i| patterns::sample(kind, (i % size) as f32 / size as f32, (i / size) as f32 / size as f32, seed))
+            .collect::<Vec<_>>()
+    })
+    .concat();
     let at = |x: usize, y: usize| samples[(y % size) * size + (x % size)].height;
     let strength = kind.depth() * size as f32 * 0.5;
     let n = size * size * 4;

@@ -56,18 +56,21 @@ pub fn cells(u: f32, v: f32, px: i32, py: i32, seed: u32) -> (f32, f32, f32) {
     let (mut f1, mut f2, mut id) = (f32::MAX, f32::MAX, 0.0);
     for dx in -1..=1 {
         let cx = xi + dx;
-        let shift = lattice(cx, 0, px, 1, seed + 53);
+        // The cell within the periods once (a remainder is a division), for its three hashes.
+        let xw = cx.rem_euclid(px) as u32;
+        let shift = hash(xw, 0, seed + 53);
         let yi = (y - shift).floor() as i32;
         for dy in -1..=1 {
             let cy = yi + dy;
-            let fx = cx as f32 + 0.1 + 0.8 * lattice(cx, cy, px, py, seed);
-            let fy = cy as f32 + shift + 0.1 + 0.8 * lattice(cx, cy, px, py, seed + 17);
+            let yw = cy.rem_euclid(py) as u32;
+            let fx = cx as f32 + 0.1 + 0.8 * hash(xw, yw, seed);
+            let fy = cy as f32 + shift + 0.1 + 0.8 * hash(xw, yw, seed + 17);
             let (ex, ey) = (fx - x, (fy - y) / aspect);
             let d = (ex * ex + ey * ey).sqrt();
             if d < f1 {
                 f2 = f1;
                 f1 = d;
-                id = lattice(cx, cy, px, py, seed + 31);
+                id = hash(xw, yw, seed + 31);
             } else if d < f2 {
                 f2 = d;
             }

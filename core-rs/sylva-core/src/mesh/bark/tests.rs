@@ -112,3 +112,56 @@ fn plate_cracks_never_ring_the_stem() {
     // Aligned rows of cells: one row 0.78 crack (mean 0.16); staggered: 0.40 (mean 0.15).
     assert!(worst < 0.5 && worst < 3.0 * mean, "a row of the plated map is {worst:.2} crack (mean {mean:.2})");
 }
+
+/// The sRGB bytes through the steps are the bytes through the power: around every step (4,096
+/// floats either side), over the whole range 0..=1 (every 61st float here; every float of it
+/// was compared once, in 34 s), outside it and for NaN.
+#[test]
+fn srgb_bytes_by_steps_are_the_bytes_by_the_power() {
+    let same = |c: f32| assert_eq!(srgb8(c), srgb8_by_power(c), "{c:e} ({:#x})", c.to_bits());
+    for &step in srgb_steps() {
+        let bits = step.to_bits();
+        for b in bits.saturating_sub(4096)..=bits + 4096 {
+            same(f32::from_bits(b));
+        }
+    }
+    for b in (0..=1.0f32.to_bits()).step_by(61) {
+        same(f32::from_bits(b));
+    }
+    for c in [
+        f32::NAN,
+        -f32::NAN,
+        -0.0,
+        -1e-30,
+        -1.0,
+        1.0,
+        1.000_000_1,
+        2.0,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::MIN_POSITIVE,
+    ] {
+        same(c);
+    }
+    // Every byte is some input's.
+    assert!(srgb_steps().windows(2).all(|w| w[0] < w[1]));
+}
+
+/// The maps the viewer shows (256 texels square), pinned byte for byte: a faster bake must not
+/// change a texel; a change of the look updates these on purpose.
+#[test]
+fn the_maps_keep_their_bytes() {
+    let pinned = [
+        (BarkType::Furrowed, 0x763b_9dae_3c89_90ab),
+        (BarkType::Plated, 0x375f_5f05_e283_7ad0),
+        (BarkType::SmoothBanded, 0x3db9_757f_69d9_f2de),
+        (BarkType::Fibrous, 0xca58_84b5_f0c8_96bc),
+    ];
+    for (kind, hash) in pinned {
+        let m = bake(kind, 256);
+        let bytes = [&m.color.rgba[..], &m.normal.rgba[..], &m.orm.rgba[..]].concat();
+        let fnv =
+            bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3));
+        assert_eq!(fnv, hash, "{kind:?}");
+    }
+}
