@@ -101,6 +101,12 @@ impl Session {
     pub fn wind(&self) -> Result<js_sys::Float32Array, JsValue> {
         Ok(self.current()?.bark.mesh.wind.as_slice().into())
     }
+    /// The bark's pick boxes: 6 floats per run of 64 triangles, `min x, y, z, max x, y, z`
+    /// (`sylva_core::mesh::pick`).
+    pub fn pick_boxes(&self) -> Result<js_sys::Float32Array, JsValue> {
+        let mesh = &self.current()?.bark.mesh;
+        Ok(sylva_core::mesh::pick::pick_boxes(&mesh.positions, &mesh.indices).as_slice().into())
+    }
     /// Bark occlusion, one byte per vertex ([`crate::GeneratedTree::shade`]), or empty (a preview).
     pub fn shade(&self) -> Result<js_sys::Uint8Array, JsValue> {
         Ok(self.current()?.bark.mesh.shade.as_slice().into())

@@ -11,6 +11,7 @@ pub mod fork_rows;
 pub mod holes;
 mod junction;
 mod layout;
+pub mod pick;
 pub mod shade;
 mod stem;
 pub mod topology;

@@ -1,10 +1,12 @@
 /**
  * Boxes for picking the bark with a ray: the bark's triangles in index order, in runs of
  * [`PICK_RUN`] (the core writes them stem by stem, so a run is a compact piece of bark), each
- * with its axis-aligned box. The worker computes them from the arrays it transfers
- * ([`pickBoxes`]); the viewer tests a ray against the boxes and only the triangles of the boxes
- * it passes through (`viewer/barkPick.ts`), instead of every triangle as three.js's
- * `Mesh.raycast` does: the brush, cut and bend tools pick on every pointer move.
+ * with its axis-aligned box. The core computes them (`sylva_core::mesh::pick`, the session's
+ * `pick_boxes`) and the worker sends them with the bark; [`pickBoxes`] is the same in
+ * TypeScript (the worker's fallback for a core without them, and the tests' reference). The
+ * viewer tests a ray against the boxes and only the triangles of the boxes it passes through
+ * (`viewer/barkPick.ts`), instead of every triangle as three.js's `Mesh.raycast` does: the
+ * brush, cut and bend tools pick on every pointer move.
  *
  * Layout: 6 floats per run, `min x, min y, min z, max x, max y, max z` (tree space, m); run `k`
  * holds triangles `k * PICK_RUN` to `min((k + 1) * PICK_RUN, triangles) - 1`.

@@ -348,6 +348,11 @@ export interface WasmSession {
   /** Bark occlusion, one byte per vertex (empty for a preview). */
   shade(): Uint8Array;
   /**
+   * The bark's pick boxes (`pickBoxes`' layout), computed in the core (optional: test fakes and
+   * older builds lack it, and the worker computes them itself).
+   */
+  pick_boxes?(): Float32Array;
+  /**
    * The organ sets (optional: test fakes and older builds lack them): their count, then
    * `[{kind, name, color, roughness, count}]` as JSON and set `i`'s arrays.
    */

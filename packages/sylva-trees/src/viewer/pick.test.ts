@@ -20,6 +20,8 @@ import {
   type Intersection,
 } from 'three';
 import { pickBoxes, PICK_RUN } from '../core/pickBoxes';
+import { loadWasm } from '../testing/realWasm';
+import { harness } from '../testing/workerHarness';
 import { mulberry32 as rng } from '../core/random';
 import { pickBark } from './barkPick';
 import { wrapInstances } from './instances';
@@ -56,6 +58,23 @@ function rays(count: number, seed: number): Raycaster[] {
 }
 
 describe('bark picking through pick boxes', () => {
+  it("the core's boxes of a real tree are the TypeScript function's, and the worker sends them", () => {
+    const wasm = loadWasm();
+    const session = new wasm.Session();
+    for (const params of [{}, { seed: 7, l1_branches: 30 }]) {
+      session.update(JSON.stringify(params), -1);
+      const core = session.pick_boxes!();
+      const ts = pickBoxes(session.positions(), session.indices());
+      expect(core.length).toBe(ts.length);
+      expect(Buffer.from(core.buffer).equals(Buffer.from(ts.buffer))).toBe(true);
+    }
+    session.free?.();
+    const h = harness(wasm);
+    h.handle({ type: 'generate', id: 1, params: {} });
+    const bark = h.lastResult().bark!;
+    expect(Array.from(bark.pick!)).toEqual(Array.from(pickBoxes(bark.positions, bark.indices)));
+  });
+
   it('boxes hold every triangle of their run', () => {
     const g = soup(1000, 1);
     const pos = g.getAttribute('position').array as Float32Array;
