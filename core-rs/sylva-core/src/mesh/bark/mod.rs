@@ -105,8 +105,8 @@ pub fn hash_into(kind: BarkType, h: u64) -> u64 {
     (h ^ (0xb4_0000 | kind as u64)).wrapping_mul(0x0000_0100_0000_01b3)
 }
 
-/// Linear 0..1 to an sRGB byte: [`srgb8_by_power`]'s byte, found among the smallest input of
-/// each byte ([`srgb_steps`]) instead of through a power (libm's `powf`, in software in wasm,
+/// Linear 0..1 to an sRGB byte: [`srgb8_by_power`]'s byte, found among the smallest inputs of
+/// the bytes ([`srgb_steps`]) instead of through a power (libm's `powf`, in software in wasm,
 /// three per texel). The byte never falls as the input grows, so the count of steps at or below
 /// the input is that byte (tested around every step and over the whole range; NaN: 0 both ways).
 fn srgb8(c: f32) -> u8 {
@@ -177,6 +177,12 @@ pub fn bake(kind: BarkType, size: usize) -> BarkMaps {
     }
     let tex = |rgba| Texture { size, rgba };
     BarkMaps { color: tex(color), normal: tex(normal), orm: tex(orm) }
+}
+
+/// FNV-1a (64 bits) of `bytes`: the tests' fingerprint of a map's bytes.
+#[cfg(test)]
+fn fnv64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
 }
 
 #[cfg(test)]

@@ -180,11 +180,6 @@ fn bytes_are_colour_then_normal() {
     assert_eq!((&b[..4 * 32 * 32], &b[4 * 32 * 32..]), (&m.color.rgba[..], &m.normal.rgba[..]));
 }
 
-/// FNV-1a (64 bits) of `bytes`.
-fn fnv(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
-}
-
 /// The maps the viewer and the exports show, pinned byte for byte at the viewer's size (a change
 /// of the bake's speed must not change a texel; a change of its look updates these on purpose).
 #[test]
@@ -196,7 +191,7 @@ fn the_maps_keep_their_bytes() {
         (BarkType::Fibrous, 0x5f0c_fb95_7cc7_58e5),
     ];
     for (kind, hash) in pinned {
-        assert_eq!(fnv(&bake(kind, SIZE).to_bytes()), hash, "{kind:?}");
+        assert_eq!(super::super::fnv64(&bake(kind, SIZE).to_bytes()), hash, "{kind:?}");
     }
 }
 
