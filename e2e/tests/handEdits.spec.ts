@@ -182,3 +182,33 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
   expect(new URL(page.url()).searchParams.get('e')).toBeNull();
   expect(errors).toEqual([]);
 });
+
+test("with the Cut tool on, another preset's bark brings its end grain before any cut", async ({
+  page,
+}) => {
+  const errors = watchErrors(page);
+  await page.goto('/?debug=1');
+  const original = await waitForTree(page);
+  const endGrain = () => page.evaluate(() => window.__sylva?.endGrainKind?.() ?? null);
+  const barkType = async () =>
+    Number(await page.locator('select[data-param-id="bark_type"]').inputValue());
+  await page.keyboard.press('c');
+  const first = await barkType();
+  await expect.poll(endGrain).toBe(first);
+  // A preset of another bark type (its maps and its end grain, still no cut).
+  const names = await page
+    .getByTestId('preset-picker')
+    .locator('option')
+    .evaluateAll((options) => options.map((o) => (o as HTMLOptionElement).value));
+  let shown = original;
+  for (const name of names.filter((n) => n && n !== 'default')) {
+    await page.getByTestId('preset-picker').selectOption(name);
+    shown = await waitForNewTree(page, shown);
+    if ((await barkType()) !== first) break;
+  }
+  const other = await barkType();
+  expect(other).not.toBe(first);
+  await expect.poll(endGrain).toBe(other);
+  await expect(page.getByTestId('edit-row')).toHaveCount(0);
+  expect(errors).toEqual([]);
+});

@@ -187,10 +187,12 @@ export function useHandEdits(
   const toolsRef = useToolsInViewer(viewerRef, latest, setReports);
 
   useEffect(() => toolsRef.current?.set(tool, brush), [toolsRef, tool, brush]);
-  // The Cut tool chosen: the worker bakes the end grain while the user aims, not at the first cut.
+  // The Cut tool chosen (or the bark type changed while it is): the worker bakes the end grain
+  // while the user aims, not at the first cut.
+  const barkType = editor.state.params?.bark_type;
   useEffect(() => {
     if (tool === 'cut') generatorRef?.current?.prepareCut();
-  }, [tool, generatorRef]);
+  }, [tool, barkType, generatorRef]);
 
   useEffect(() => {
     const onKey = (event: KeyboardEvent) => {
