@@ -28,6 +28,11 @@ async function editsState(page: Page) {
   return state;
 }
 
+/** The bark type of the end grain in the viewer (-1: none yet; the debug hook). */
+function endGrainKind(page: Page): Promise<number | null> {
+  return page.evaluate(() => window.__sylva?.endGrainKind?.() ?? null);
+}
+
 /** Client pixel of tree-space point `p`. */
 async function project(page: Page, p: Point): Promise<[number, number]> {
   return page.evaluate((q) => window.__sylva?.project?.(q) ?? [0, 0], p);
@@ -132,10 +137,9 @@ test('click-cut a branch: fewer vertices; the share link gives the same tree; un
 
   // Choosing the Cut tool has the worker bake the end grain while the user aims (it once took
   // the first cut 0.25-0.3 s): it is in the viewer before any cut.
-  const endGrain = () => page.evaluate(() => window.__sylva?.endGrainKind?.() ?? null);
-  expect(await endGrain()).toBe(-1);
+  expect(await endGrainKind(page)).toBe(-1);
   await page.keyboard.press('c');
-  await expect.poll(endGrain).toBeGreaterThanOrEqual(0);
+  await expect.poll(() => endGrainKind(page)).toBeGreaterThanOrEqual(0);
   await page.mouse.click(branch.x, branch.y);
   const cut = await waitForNewTree(page, original);
   expect(await statNumber(page, 'stat-vertices')).toBeLessThan(vertices);
@@ -189,12 +193,11 @@ test("with the Cut tool on, another preset's bark brings its end grain before an
   const errors = watchErrors(page);
   await page.goto('/?debug=1');
   const original = await waitForTree(page);
-  const endGrain = () => page.evaluate(() => window.__sylva?.endGrainKind?.() ?? null);
   const barkType = async () =>
     Number(await page.locator('select[data-param-id="bark_type"]').inputValue());
   await page.keyboard.press('c');
   const first = await barkType();
-  await expect.poll(endGrain).toBe(first);
+  await expect.poll(() => endGrainKind(page)).toBe(first);
   // A preset of another bark type (its maps and its end grain, still no cut).
   const names = await page
     .getByTestId('preset-picker')
@@ -208,7 +211,7 @@ test("with the Cut tool on, another preset's bark brings its end grain before an
   }
   const other = await barkType();
   expect(other).not.toBe(first);
-  await expect.poll(endGrain).toBe(other);
+  await expect.poll(() => endGrainKind(page)).toBe(other);
   await expect(page.getByTestId('edit-row')).toHaveCount(0);
   expect(errors).toEqual([]);
 });

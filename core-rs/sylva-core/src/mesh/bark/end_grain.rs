@@ -43,7 +43,6 @@
 use super::noise::{cells, fbm, lattice, smoothstep, value};
 use super::{unorm8, BarkType, Texture};
 use crate::math::{atan2, cos, pow, sin, PI, TAU};
-use crate::par;
 
 /// The two maps of one bark type's end grain.
 #[derive(Clone, Debug, PartialEq)]
@@ -336,21 +335,13 @@ pub fn bake(kind: BarkType, size: usize) -> EndGrainMaps {
         checks: Checks::new(seed + 19),
         inner: mix3(young, style.sap, 0.45),
     };
-    // Rows side by side where there are threads (each texel on its own: the same bytes).
-    let rows = par::ranges(size, 4 * par::threads());
-    let samples: Vec<([f32; 3], f32)> = par::map(rows, par::threads(), |rows| {
-        let texels = rows.start * size..rows.end * size;
-        texels
-            .map(|i| {
-                let (x, y) = (offset(i % size), offset(i / size));
-                // Outside the disc: the colour at the disc's edge in the same direction.
-                let rho = (x * x + y * y).sqrt();
-                let k = if rho > 1.0 { 1.0 / rho } else { 1.0 };
-                sample(&b, x * k, y * k)
-            })
-            .collect::<Vec<_>>()
-    })
-    .concat();
+    let samples = super::texels(size, |i| {
+        let (x, y) = (offset(i % size), offset(i / size));
+        // Outside the disc: the colour at the disc's edge in the same direction.
+        let rho = (x * x + y * y).sqrt();
+        let k = if rho > 1.0 { 1.0 / rho } else { 1.0 };
+        sample(&b, x * k, y * k)
+    });
     let at = |x: usize, y: usize| samples[y.min(size - 1) * size + x.min(size - 1)].1;
     // Relief depth: 0.6 % of the face's diameter per unit of height.
     let strength = 0.006 * size as f32 * 0.5;

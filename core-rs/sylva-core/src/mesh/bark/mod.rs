@@ -141,6 +141,18 @@ fn srgb_steps() -> &'static [f32; 255] {
     })
 }
 
+/// `texel(i)` of every texel `i` of a `size` × `size` map, row after row, the rows side by side
+/// where there are threads ([`crate::par`]; each texel on its own, so the same values).
+fn texels<T: Send>(size: usize, texel: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    let rows = crate::par::ranges(size, 4 * crate::par::threads());
+    crate::par::map(rows, crate::par::threads(), |rows| {
+        (rows.start * size..rows.end * size).map(&texel).collect::<Vec<_>>()
+    })
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
 fn unorm8(c: f32) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
 }
@@ -149,14 +161,9 @@ fn unorm8(c: f32) -> u8 {
 pub fn bake(kind: BarkType, size: usize) -> BarkMaps {
     let size = size.next_power_of_two().max(16);
     let seed = 1 + kind as u32 * 101;
-    // Rows side by side where there are threads (each texel on its own: the same bytes).
-    let rows = crate::par::ranges(size, 4 * crate::par::threads());
-    let samples: Vec<patterns::Sample> = crate::par::map(rows, crate::par::threads(), |rows| {
-        (rows.start * size..rows.end * size)
-            .map(|i| patterns::sample(kind, (i % size) as f32 / size as f32, (i / size) as f32 / size as f32, seed))
-            .collect::<Vec<_>>()
-    })
-    .concat();
+    let samples = texels(size, |i| {
+        patterns::sample(kind, (i % size) as f32 / size as f32, (i / size) as f32 / size as f32, seed)
+    });
     let at = |x: usize, y: usize| samples[(y % size) * size + (x % size)].height;
     let strength = kind.depth() * size as f32 * 0.5;
     let n = size * size * 4;
