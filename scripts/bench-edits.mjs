@@ -131,7 +131,7 @@ export async function benchPaint(browser, url) {
     if (process.env.SYLVA_BENCH_VERBOSE) {
       const m = (k) => median(parts.map((p) => p[k]))?.toFixed(1);
       console.error(
-        `bench: paint press ${press?.first.toFixed(1)}, moves ${times.map((t) => t.toFixed(1)).join(' ')} (skipped ${skipped})\n` +
+        `bench: paint press ${press?.first.toFixed(1)} (${press?.parts.map((x) => x.toFixed(1)).join(' / ')}), moves ${times.map((t) => t.toFixed(1)).join(' ')} (skipped ${skipped})\n` +
           `  medians: input to request ${m(0)}, request to answer ${m(2)} (core ${m(1)}), viewer ${m(3)} ms`,
       );
     }
