@@ -104,6 +104,32 @@ fn cutting_keeps_the_surface_closed_and_manifold() {
     }
 }
 
+/// A cut where another vertex shares a position with the hole's faces could open a welded
+/// surface: such a hole is dropped (`drop_coincident`, which reads every vertex of the tree), the
+/// others are cut as before.
+#[test]
+fn a_hole_is_not_cut_where_a_vertex_outside_its_stem_shares_its_positions() {
+    let p = thick(4);
+    let sk = skeleton::build(&p.skeleton).unwrap();
+    let (mesh, layout) = build_laid_out(&sk, &p.mesh).unwrap();
+    let holes = cut(&mut mesh.clone(), &layout, &sk, &p.mesh);
+    assert!(holes.len() >= 2, "{holes:?}");
+    let first = holes[0];
+    // Copies of the stem's vertices near the first hole's centre, after the bark, in no stem's
+    // block (no triangle uses them): as a welded copy would be.
+    let mut copied = mesh.clone();
+    let block = layout.blocks[first.stem as usize].clone();
+    for v in block.map(|v| v as usize).filter(|&v| (pos(&mesh, v) - first.centre).length() < 1.2 * first.radius) {
+        copied.positions.extend_from_within(3 * v..3 * v + 3);
+        copied.normals.extend_from_within(3 * v..3 * v + 3);
+        copied.uvs.extend_from_within(2 * v..2 * v + 2);
+        copied.wind.extend_from_within(WIND_STRIDE * v..WIND_STRIDE * (v + 1));
+    }
+    assert!(copied.vertex_count() > mesh.vertex_count());
+    let kept = cut(&mut copied, &layout, &sk, &p.mesh);
+    assert_eq!(kept, holes[1..], "the first hole dropped, the others cut as before");
+}
+
 #[test]
 fn holes_are_deterministic_and_follow_their_seed() {
     let a = generate(&thick(2)).unwrap();

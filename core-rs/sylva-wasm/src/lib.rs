@@ -114,6 +114,17 @@ pub fn debug_panic_on_helper() {
     );
 }
 
+/// The vertices of `positions` (3 floats each) that `sylva_core::mesh::holes::near_x` hands its
+/// test, in order, after the number of vertices it scanned: `[n, v...]` (its `simd128` lanes,
+/// checked against the scalar rule by a test). Only with the `debug-hooks` feature.
+#[cfg(feature = "debug-hooks")]
+#[wasm_bindgen]
+pub fn debug_near_x(positions: Vec<f32>, lo: f32, hi: f32) -> Vec<u32> {
+    let mut seen = Vec::new();
+    let n = sylva_core::mesh::holes::near_x(&positions, lo, hi, &mut |v| seen.push(v as u32));
+    std::iter::once(n as u32).chain(seen).collect()
+}
+
 /// Version of the core.
 #[wasm_bindgen]
 pub fn core_version() -> String {

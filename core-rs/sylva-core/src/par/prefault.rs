@@ -348,21 +348,30 @@ mod tests {
 
     /// A bark swept while another thread faults in its buffers is the bark swept alone, and the
     /// other thread did fault in pages (Weeping Willow: thousands of stems, 61 MB of buffers).
+    /// Up to eight rounds each: on a loaded machine (the other tests running on every core) the
+    /// other thread may not be scheduled before the sweep stops it (session 19: once in a run).
     #[test]
     fn a_bark_swept_beside_a_toucher_is_the_same_bark() {
         for name in ["default", "weeping_willow"] {
             let params = crate::presets::find(name).expect("preset").params().expect("params");
             let sk = crate::skeleton::build(&params.skeleton).expect("skeleton");
             let alone = crate::mesh::tube::build_with_stats(&sk, &params.mesh).expect("bark").mesh;
-            let mb = Arc::new(Mailbox::default());
-            let (beside, touched) = std::thread::scope(|s| {
-                let runner = s.spawn(|| mb.run());
-                let built = offering(&mb, || crate::mesh::tube::build_with_stats(&sk, &params.mesh));
-                (built.expect("bark").mesh, runner.join().expect("runner"))
-            });
-            assert!(touched > 0, "{name}: no page touched");
-            assert_eq!(beside.content_hash(), alone.content_hash(), "{name}");
-            assert!(beside.positions == alone.positions && beside.indices == alone.indices, "{name}");
+            let mut touched = 0;
+            for _ in 0..8 {
+                let mb = Arc::new(Mailbox::default());
+                let (beside, pages) = std::thread::scope(|s| {
+                    let runner = s.spawn(|| mb.run());
+                    let built = offering(&mb, || crate::mesh::tube::build_with_stats(&sk, &params.mesh));
+                    (built.expect("bark").mesh, runner.join().expect("runner"))
+                });
+                assert_eq!(beside.content_hash(), alone.content_hash(), "{name}");
+                assert!(beside.positions == alone.positions && beside.indices == alone.indices, "{name}");
+                touched += pages;
+                if touched > 0 {
+                    break;
+                }
+            }
+            assert!(touched > 0, "{name}: no page touched in any round");
         }
     }
 

@@ -42,6 +42,7 @@ use crate::rng::Rng;
 use crate::skeleton::{Skeleton, Stem};
 use candidates::{all_candidates, children};
 use cavity::{plan_cavity, Cavity};
+pub use cut::near_x;
 use cut::{commit, drop_coincident, drop_rings, select, write_triangles};
 use glam::Vec3;
 use patch::{nrm, patches, pos};
