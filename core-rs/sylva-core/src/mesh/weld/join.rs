@@ -184,12 +184,6 @@ fn open_and_zip(
 ) -> bool {
     let collar_tris = sc.tris.len();
     let nr = collar.columns;
-    // Only the first row's triangles touch the footprint loop, whose normals each try sets: the
-    // rows above it are checked once (none of the tries passes where they fail).
-    let row0 = 6 * nr;
-    if !well_wound(out, &sc.tris[row0..collar_tris]) {
-        return false;
-    }
     for w in [0.5, 0.25, 0.75, 0.0] {
         for k in 0..collar.stride() {
             let m = wrap(k, nr);
@@ -197,7 +191,7 @@ fn open_and_zip(
             out.set_normal(collar.first + k as u32, n);
             out.set_normal(collar.uv_seam + k as u32, n);
         }
-        if !well_wound(out, &sc.tris[..row0]) {
+        if !well_wound(out, &sc.tris[..collar_tris]) {
             continue;
         }
         for grow in [false, true] {
