@@ -3,8 +3,8 @@
 # Idempotent: each step checks before it acts, so a second run with nothing changed takes seconds.
 #   scripts/setup.sh            npm deps, wasm32 target, pinned wasm-bindgen CLI, release wasm build,
 #                               and the same with threads (scripts/wasm-threads.sh: a pinned nightly)
-#   scripts/setup.sh --test     the same, plus the debug wasm builds (the test hooks `debug_panic` and
-#                               `debug_panic_on_helper`, in packages/sylva-trees/src/wasm-debug and
+#   scripts/setup.sh --test     the same, plus the debug wasm builds (the test hooks `debug_panic`,
+#                               `debug_panic_on_helper`, `debug_near_x`, in packages/sylva-trees/src/wasm-debug and
 #                               wasm-threads-debug), Chromium for the Playwright tests
 #                               and the Python package's venv and wheel (scripts/python.sh)
 #   scripts/setup.sh --native   the same as plain (the bench also builds the native CLI itself)

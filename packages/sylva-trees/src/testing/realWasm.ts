@@ -18,7 +18,7 @@ export function loadWasm(): WasmApi {
 }
 
 /**
- * The core built with the `debug-hooks` feature (`debug_panic`), from `src/wasm-debug`, which
+ * The core built with the `debug-hooks` feature (`debug_panic`, `debug_near_x`), from `src/wasm-debug`, which
  * `scripts/setup.sh --test` builds (one instance: after a panic it is unusable).
  */
 export async function loadDebugWasm(): Promise<WasmApi> {
