@@ -172,8 +172,8 @@ pub(super) fn drop_coincident<T>(mesh: &TreeMesh, patches: &[Patch], regions: &m
 /// multiple of 4, is returned) whose `x` may lie in `lo..=hi`, in order; the vertices left out
 /// are certainly outside (`x < lo` or `x > hi`, as `test` itself finds first). The caller tests
 /// the vertices from `n` on. In wasm four vertices' `x` are compared at once in `simd128` lanes
-/// (the same comparisons; [`drop_coincident`]'s scan of every vertex of a big tree took 14 ms
-/// there, now 4); elsewhere `n` is 0.
+/// (the same comparisons): [`drop_coincident`]'s scan of CA Black Oak's 5.9 M vertices took
+/// 14 ms there one by one, 6 to 10 ms less in lanes. Elsewhere `n` is 0.
 pub fn near_x(positions: &[f32], lo: f32, hi: f32, test: &mut dyn FnMut(usize)) -> usize {
     #[cfg(target_arch = "wasm32")]
     {
