@@ -6,7 +6,7 @@ use std::ops::Range;
 /// Where the sweep put each stem in the bark's buffers (skeleton order), what
 /// [`super::holes::cut`] reads besides the mesh: a pass over a few stems' faces need not read
 /// every triangle of the tree. Triangle ranges count triangles (index `3 k` starts triangle `k`).
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Layout {
     /// Each stem's contiguous block of vertices.
     pub blocks: Vec<Range<u32>>,

@@ -44,6 +44,19 @@ pub(crate) struct CutEnd {
 }
 
 impl StemMesh {
+    /// The same stem's mesh with its vertices moved to start at `first` (a block swept by
+    /// another builder and copied in: [`super::MeshBuilder::append_copy`]).
+    pub(crate) fn moved(self, first: u32) -> StemMesh {
+        let to = |v: u32| v.wrapping_sub(self.first).wrapping_add(first);
+        let base = match self.base {
+            Base::Trunk(c) => Base::Trunk(to(c)),
+            Base::Cap(c) => Base::Cap(to(c)),
+            b => b,
+        };
+        let cut = self.cut.map(|c| CutEnd { first: to(c.first), ..c });
+        StemMesh { first, apex: to(self.apex), base, cut, ..self }
+    }
+
     /// The seam twin of ring vertex `i` a whole turn of `u` on (`turns` = 1: a ring's first
     /// vertex, `u` 0, to its last, `u` 1; -1 the other way), if `i` is one of this stem's.
     pub(crate) fn seam_twin(&self, i: u32, turns: i32) -> Option<u32> {

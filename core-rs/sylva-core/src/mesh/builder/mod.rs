@@ -23,6 +23,44 @@ pub struct MeshBuilder {
     wind: bool,
     /// [`MeshBuilder::unwrap_u`]'s copies, kept for its next call (no allocation per call).
     seam_copies: Vec<(u32, i32, u32)>,
+    /// The number of this builder's first vertex: 0, or for a builder made by
+    /// [`MeshBuilder::beside`] the next number of the builder it continues, whose vertices
+    /// before it it reads through `prefix`.
+    base: u32,
+    /// The vertices numbered below `base`, read in another builder's buffers.
+    prefix: Option<Prefix>,
+    /// Whether another builder reads this one's vertices ([`MeshBuilder::beside`]): its
+    /// buffers must not move until that builder is absorbed.
+    pinned: bool,
+}
+
+/// Another builder's vertex buffers, read-only: the first `len` vertices' positions, normals,
+/// uvs and wind records (`wind` is null when that builder keeps none).
+#[derive(Clone, Copy)]
+struct Prefix {
+    positions: *const f32,
+    normals: *const f32,
+    uvs: *const f32,
+    wind: *const f32,
+    len: u32,
+}
+
+// SAFETY: a `Prefix` only reads memory that its owner neither writes nor moves while the
+// builder holding it exists (`MeshBuilder::beside`, `MeshBuilder::absorb`).
+#[allow(unsafe_code, reason = "a read-only view of another builder's vertices, sent to another thread")]
+unsafe impl Send for Prefix {}
+
+impl Prefix {
+    /// Element `k` of a buffer of the prefix (`k` below its length).
+    #[inline]
+    fn at(p: *const f32, k: usize) -> f32 {
+        // SAFETY: the buffers hold `len` vertices, which the owner does not write or move
+        // while this view exists (`MeshBuilder::beside`); callers index below `len`.
+        #[allow(unsafe_code, reason = "reads of another builder's pinned vertices")]
+        unsafe {
+            *p.add(k)
+        }
+    }
 }
 
 /// The buffers [`MeshBuilder::prefault`] hands to another thread, as regions of a [`Prefault`].
@@ -73,7 +111,51 @@ impl MeshBuilder {
             wind: false,
             prefault: None,
             seam_copies: Vec::new(),
+            base: 0,
+            prefix: None,
+            pinned: false,
         }
+    }
+
+    /// A builder that continues this one beside it, on another thread: its vertices are
+    /// numbered from this one's next number on, and the vertices before that are read from this
+    /// builder. This builder may go on adding vertices (numbered the same; never past the room it
+    /// was made with, which would move its buffers: that panics) but must not change those
+    /// before, until [`MeshBuilder::absorb`] takes the other's vertices in after its own.
+    pub(crate) fn beside(&mut self, vertices: usize) -> MeshBuilder {
+        let mut b = Self::with_capacity(vertices, 0);
+        if self.wind {
+            b.mesh.wind = Vec::with_capacity(vertices * WIND_STRIDE);
+            b.wind = true;
+        }
+        let m = &self.mesh;
+        let wind = if self.wind { m.wind.as_ptr() } else { std::ptr::null() };
+        let len = self.next_index();
+        b.prefix = Some(Prefix {
+            positions: m.positions.as_ptr(),
+            normals: m.normals.as_ptr(),
+            uvs: m.uvs.as_ptr(),
+            wind,
+            len,
+        });
+        b.base = len;
+        self.pinned = true;
+        b
+    }
+
+    /// Drops `other`, made by [`MeshBuilder::beside`] from this builder, without its vertices:
+    /// this builder may move its buffers again.
+    pub(crate) fn forgo(&mut self, other: MeshBuilder) {
+        drop(other);
+        self.pinned = false;
+    }
+
+    /// Takes in the vertices of `other`, made by [`MeshBuilder::beside`] from this builder, after
+    /// this builder's own ([`MeshBuilder::append_copy`]). Returns the number of the first.
+    pub(crate) fn absorb(&mut self, other: MeshBuilder) -> u32 {
+        // `other` reads nothing of this builder's while it is copied.
+        self.pinned = false;
+        self.append_copy(&other, other.base..other.next_index())
     }
 
     /// Like [`MeshBuilder::with_capacity`], with a [`TreeMesh::wind`] record for every vertex.
@@ -123,6 +205,9 @@ impl MeshBuilder {
     /// prefaulting thread, or that thread stopped if the buffers must move.
     #[inline]
     fn grow_vertices(&mut self, n: usize) {
+        if self.pinned {
+            self.check_room(n);
+        }
         let Some(pf) = &mut self.prefault else { return };
         let m = &self.mesh;
         let fits = n * 3 <= m.positions.capacity().min(m.normals.capacity()) && n * 2 <= m.uvs.capacity();
@@ -138,6 +223,15 @@ impl MeshBuilder {
         }
     }
 
+    /// Panics if the buffers of a pinned builder ([`MeshBuilder::beside`]) would have to move
+    /// to hold `n` vertices.
+    #[cold]
+    fn check_room(&self, n: usize) {
+        let m = &self.mesh;
+        let fits = n * 3 <= m.positions.capacity().min(m.normals.capacity()) && n * 2 <= m.uvs.capacity();
+        assert!(fits && (!self.wind || n * WIND_STRIDE <= m.wind.capacity()), "a pinned builder outgrew its room");
+    }
+
     /// [`MeshBuilder::grow_vertices`] for the indices, to `n` of them.
     #[inline]
     fn grow_indices(&mut self, n: usize) {
@@ -149,9 +243,14 @@ impl MeshBuilder {
         pf.claim(INDICES, self.mesh.indices.as_ptr() as usize + n * 4);
     }
 
+    /// The number of this builder's first vertex (0 unless made by [`MeshBuilder::beside`]).
+    pub(crate) fn base(&self) -> u32 {
+        self.base
+    }
+
     /// Index the next vertex will get.
     pub fn next_index(&self) -> u32 {
-        (self.mesh.positions.len() / 3) as u32
+        self.base + (self.mesh.positions.len() / 3) as u32
     }
 
     /// Append one vertex (with a zero wind record if the builder keeps wind); returns its index.
@@ -187,8 +286,9 @@ impl MeshBuilder {
     pub fn block_from(&mut self, first: u32, n: usize) -> VertexBlock<'_> {
         let end = self.next_index() as usize + n;
         self.grow_vertices(end);
+        let end = end - self.base as usize;
         let m = &mut self.mesh;
-        let k = first as usize;
+        let k = (first - self.base) as usize;
         m.positions.resize(3 * end, 0.0);
         m.normals.resize(3 * end, 0.0);
         m.uvs.resize(2 * end, 0.0);
@@ -204,6 +304,29 @@ impl MeshBuilder {
         }
     }
 
+    /// Appends copies of `from`'s vertices `range`, with their wind records (zeros if `from`
+    /// keeps none) and the tube rings among them renumbered: a block another builder swept
+    /// ahead of time, on another thread. Returns the index of the first copy.
+    pub fn append_copy(&mut self, from: &MeshBuilder, range: std::ops::Range<u32>) -> u32 {
+        let first = self.next_index();
+        let (a, b) = ((range.start - from.base) as usize, (range.end - from.base) as usize);
+        self.grow_vertices(first as usize + (b - a));
+        let (m, f) = (&mut self.mesh, &from.mesh);
+        m.positions.extend_from_slice(&f.positions[3 * a..3 * b]);
+        m.normals.extend_from_slice(&f.normals[3 * a..3 * b]);
+        m.uvs.extend_from_slice(&f.uvs[2 * a..2 * b]);
+        if self.wind {
+            match f.wind.get(WIND_STRIDE * a..WIND_STRIDE * b) {
+                Some(w) if from.wind => m.wind.extend_from_slice(w),
+                _ => m.wind.resize(m.wind.len() + WIND_STRIDE * (b - a), 0.0),
+            }
+        }
+        let lo = f.rings.partition_point(|r| r[0] < range.start);
+        let moved = f.rings[lo..].iter().take_while(|r| r[0] < range.end);
+        m.rings.extend(moved.map(|r| [r[0].wrapping_sub(range.start).wrapping_add(first), r[1]]));
+        first
+    }
+
     /// Record `count` tube rings of `stride` vertices each (`sides + 1`, see [`TreeMesh::rings`]),
     /// the first starting at vertex `first`, the others following it back to back.
     pub fn rings(&mut self, first: u32, count: u32, stride: u32) {
@@ -215,7 +338,7 @@ impl MeshBuilder {
     pub fn truncate_vertices(&mut self, first: u32) {
         let keep = self.mesh.rings.partition_point(|r| r[0] + r[1] <= first);
         self.mesh.rings.truncate(keep);
-        let n = first as usize;
+        let n = (first - self.base) as usize;
         self.mesh.positions.truncate(n * 3);
         self.mesh.normals.truncate(n * 3);
         self.mesh.uvs.truncate(n * 2);
@@ -232,7 +355,12 @@ impl MeshBuilder {
     /// Vertex `i`'s position and normal.
     #[inline]
     pub fn vertex_at(&self, i: u32) -> (glam::Vec3, glam::Vec3) {
-        let k = i as usize * 3;
+        if let Some(p) = self.prefix.filter(|p| i < p.len) {
+            let k = i as usize * 3;
+            let v = |b| glam::Vec3::new(Prefix::at(b, k), Prefix::at(b, k + 1), Prefix::at(b, k + 2));
+            return (v(p.positions), v(p.normals));
+        }
+        let k = (i - self.base) as usize * 3;
         let (p, n) = (&self.mesh.positions[k..k + 3], &self.mesh.normals[k..k + 3]);
         (glam::Vec3::new(p[0], p[1], p[2]), glam::Vec3::new(n[0], n[1], n[2]))
     }
@@ -254,28 +382,43 @@ impl MeshBuilder {
     /// Replace vertex `i`'s normal.
     #[inline]
     pub fn set_normal(&mut self, i: u32, n: glam::Vec3) {
-        let k = i as usize * 3;
+        let k = (i - self.base) as usize * 3;
         self.mesh.normals[k..k + 3].copy_from_slice(&n.to_array());
     }
 
     /// Vertex `i`'s wind record (zeros when this builder has no wind attributes).
     #[inline]
     pub fn wind_at(&self, i: u32) -> [f32; WIND_STRIDE] {
-        let k = i as usize * WIND_STRIDE;
+        if let Some(p) = self.prefix.filter(|p| i < p.len) {
+            let k = i as usize * WIND_STRIDE;
+            return if p.wind.is_null() {
+                [0.0; WIND_STRIDE]
+            } else {
+                std::array::from_fn(|c| Prefix::at(p.wind, k + c))
+            };
+        }
+        let k = (i - self.base) as usize * WIND_STRIDE;
         self.mesh.wind.get(k..k + WIND_STRIDE).map_or([0.0; WIND_STRIDE], |w| w.try_into().expect("stride"))
     }
 
     /// Vertex `i`'s uv.
     #[inline]
     pub fn uv_at(&self, i: u32) -> [f32; 2] {
-        let k = i as usize * 2;
+        if let Some(p) = self.prefix.filter(|p| i < p.len) {
+            let k = i as usize * 2;
+            return [Prefix::at(p.uvs, k), Prefix::at(p.uvs, k + 1)];
+        }
+        let k = (i - self.base) as usize * 2;
         [self.mesh.uvs[k], self.mesh.uvs[k + 1]]
     }
 
     /// Component `k` of the flat positions buffer written so far.
     #[inline]
     pub fn position(&self, k: usize) -> f32 {
-        self.mesh.positions[k]
+        match self.prefix.filter(|p| k < 3 * p.len as usize) {
+            Some(p) => Prefix::at(p.positions, k),
+            None => self.mesh.positions[k - 3 * self.base as usize],
+        }
     }
 
     /// Append one triangle (counter-clockwise seen from outside).
@@ -305,5 +448,81 @@ impl MeshBuilder {
         self.close_group();
         self.mesh.groups.retain(|g| g.count > 0);
         self.mesh
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    /// Vertex `k`'s position, normal, uv and wind in these tests.
+    fn nth(k: u32) -> ([f32; 3], [f32; 3], [f32; 2], [f32; WIND_STRIDE]) {
+        let f = k as f32;
+        ([f, 2.0 * f, 3.0 * f], [0.0, 1.0, f], [f / 10.0, f], [f + 0.5; WIND_STRIDE])
+    }
+
+    fn push(b: &mut MeshBuilder, k: u32) -> u32 {
+        let (p, n, uv, w) = nth(k);
+        b.vertex_with_wind(p, n, uv, &w)
+    }
+
+    #[test]
+    fn a_builder_beside_reads_the_vertices_before_it_and_is_absorbed_renumbered() {
+        let mut main = MeshBuilder::with_wind(16, 0);
+        (0..4).for_each(|k| assert_eq!(push(&mut main, k), k));
+        let mut other = main.beside(8);
+        assert_eq!((other.base(), other.next_index()), (4, 4));
+        // The other's reads of the vertices before it, and of its own.
+        for k in 0..4 {
+            let (p, n, uv, w) = nth(k);
+            assert_eq!(other.vertex_at(k), (Vec3::from(p), Vec3::from(n)));
+            assert_eq!((other.uv_at(k), other.wind_at(k)), (uv, w));
+            assert_eq!(other.position(3 * k as usize + 1), p[1]);
+        }
+        // Both go on from vertex 4: this builder with 2, the other with 3 and a ring.
+        assert_eq!((push(&mut main, 10), push(&mut main, 11)), (4, 5));
+        (20..23).for_each(|k| assert_eq!(push(&mut other, k), k - 16));
+        other.rings(4, 1, 2);
+        let block = other.block_from(6, 1);
+        assert_eq!((block.first, block.positions[0], block.positions.len()), (6, 22.0, 6));
+        assert_eq!(other.vertex_at(5).0, Vec3::from(nth(21).0));
+        other.set_normal(4, Vec3::X);
+        other.truncate_vertices(7);
+        assert_eq!(main.absorb(other), 6);
+        let m = main.finish();
+        assert_eq!(m.vertex_count(), 9);
+        let at = |i: usize| [m.positions[3 * i], m.normals[3 * i], m.uvs[2 * i + 1], m.wind[WIND_STRIDE * i]];
+        let want = |k: u32, nx: f32| {
+            let (p, n, uv, w) = nth(k);
+            [p[0], if nx > 0.0 { nx } else { n[0] }, uv[1], w[0]]
+        };
+        let order = [0, 1, 2, 3, 10, 11, 20, 21, 22];
+        for (i, &k) in order.iter().enumerate() {
+            assert_eq!(at(i), want(k, if i == 6 { 1.0 } else { 0.0 }), "vertex {i}");
+        }
+        assert_eq!(m.rings, vec![[6, 2]], "the other's ring, renumbered");
+    }
+
+    #[test]
+    fn a_builder_forgoing_the_other_may_grow_again() {
+        let mut main = MeshBuilder::with_capacity(2, 0);
+        push(&mut main, 0);
+        let mut other = main.beside(4);
+        push(&mut other, 1);
+        main.forgo(other);
+        (1..40).for_each(|k| assert_eq!(push(&mut main, k), k));
+        assert_eq!(main.next_index(), 40);
+    }
+
+    #[test]
+    #[should_panic(expected = "a pinned builder outgrew its room")]
+    fn a_pinned_builder_never_moves_its_vertices() {
+        let mut main = MeshBuilder::with_capacity(2, 0);
+        push(&mut main, 0);
+        let _other = main.beside(4);
+        (1..40).for_each(|k| {
+            push(&mut main, k);
+        });
     }
 }

@@ -14,6 +14,7 @@
 //! right after its sweep, or sweeping it again as a capped tube), then write every stem's
 //! indices (skipping claimed quads) and the junctions' triangles.
 
+mod halves;
 mod plan;
 mod rings;
 mod sweep;
@@ -49,6 +50,15 @@ pub struct WeldStats {
 }
 
 impl WeldStats {
+    /// Adds `other`'s counts.
+    fn add(&mut self, other: WeldStats) {
+        self.welds += other.welds;
+        self.weld_fallbacks += other.weld_fallbacks;
+        self.split_welds += other.split_welds;
+        self.split_fallbacks += other.split_fallbacks;
+        self.forks += other.forks;
+    }
+
     /// Counts one junction: welded or fallen back, of a split clone or not, forked or not.
     fn count(&mut self, welded: bool, clone: bool, fork: bool) {
         if welded {
@@ -87,6 +97,15 @@ pub struct Built {
 /// vertex blocks. The deepest level's simple stems become Bezier twigs ([`twig`]) unless they are
 /// welded; stems that may get tree holes are swept densely enough for them ([`super::holes::densify`]).
 pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, SylvaError> {
+    let threads = halves::threads();
+    build_on(skeleton, p, threads, (threads > 1).then_some(halves::MIN_VERTICES))
+}
+
+/// [`build_with_stats`] on up to `threads` threads, the deepest level in two halves
+/// ([`halves`]) when it plans at least `halves` vertices (never without): side by side if the
+/// second half starts before the first ends, else the second after the first on this thread.
+/// The same bytes either way.
+fn build_on(skeleton: &Skeleton, p: &MeshParams, threads: usize, halves: Option<usize>) -> Result<Built, SylvaError> {
     let plan = Plan::new(skeleton, p)?;
     let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
     out.prefault(plan.indices as usize);
@@ -97,13 +116,41 @@ pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, Sy
         tables[s.sides as usize].get_or_insert_with(|| circle(s.sides));
     }
     let winds = stem_winds(skeleton, skeleton.seed);
-    let mut sweep = Sweep::new(skeleton, p, plan, out, &tables, &winds);
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
-    let stems = &skeleton.stems;
-    let order = by_level(stems);
-    for &i in &order {
-        sweep.stem(i);
+    let order = by_level(&skeleton.stems);
+    let split = halves.and_then(|min| halves::split(skeleton, &plan, &order, min));
+    let mut sweep = Sweep::new(skeleton, p, plan, out, &tables, &winds);
+    match split {
+        Some((level, from)) => {
+            order[..level].iter().for_each(|&i| sweep.stem(i));
+            let (here, there) = (&order[level..from], &order[from..]);
+            let (mut other, at) = sweep.beside(there);
+            // The second half is swept beside only if it starts before the first half ends; a
+            // half taken back by this thread (every helper busy) is swept here, as on one thread.
+            let first_done = std::sync::atomic::AtomicBool::new(false);
+            let (_, beside) = crate::par::join(
+                threads,
+                || {
+                    here.iter().for_each(|&i| sweep.stem(i));
+                    first_done.store(true, std::sync::atomic::Ordering::Release);
+                },
+                || {
+                    let late = first_done.load(std::sync::atomic::Ordering::Acquire);
+                    if !late {
+                        there.iter().for_each(|&i| other.stem(i));
+                    }
+                    !late
+                },
+            );
+            if beside {
+                sweep.absorb(other, there, at);
+            } else {
+                sweep.out.forgo(other.out);
+                there.iter().for_each(|&i| sweep.stem(i));
+            }
+        }
+        None => order.iter().for_each(|&i| sweep.stem(i)),
     }
     let Sweep { mut out, meshes, claimed, bridges, stats, blocks, junctions, plan, .. } = sweep;
     // The index pass runs on every thread, the one faulting in the buffers too.
@@ -181,6 +228,13 @@ fn emit_all(meshes: &[Option<StemMesh>], claimed: &[bool], out: &mut MeshBuilder
     tubes
 }
 
+/// A copy of `v` with room for `more` elements after them.
+fn grown<T: Copy>(v: &[T], more: usize) -> Vec<T> {
+    let mut c = Vec::with_capacity(v.len() + more);
+    c.extend_from_slice(v);
+    c
+}
+
 /// Circle tables ([`circle`]) by number of sides.
 type Tables = [Option<Vec<(f32, f32, f32)>>];
 
@@ -237,6 +291,81 @@ impl<'a> Sweep<'a> {
             plan,
             out,
         }
+    }
+
+    /// A sweep that goes on beside this one, on another thread, with the stems `there` (the
+    /// second half of the deepest level, [`halves`]): it reads the bark swept so far and numbers
+    /// its vertices from this one's next on. Returns it with where this sweep stood (rings
+    /// planned, quads reserved), for [`Sweep::absorb`].
+    fn beside(&mut self, there: &[usize]) -> (Sweep<'a>, (usize, usize)) {
+        let n = self.skeleton.stems.len();
+        // Room for everything the other sweep writes, made here: its own vertices (a collar's
+        // and a fallback's rings more per stem), rings planned again for fallbacks (as many
+        // again), its quads and its junctions' triangles (this sweep's room left). Vectors
+        // grown on the other thread come from that thread's allocator arena, which natively
+        // gives its memory back between trees (twice the page faults of the whole bark).
+        let (mut room, mut rings, mut quads) = (0, 0, 0);
+        for &i in there {
+            let s = &self.plan.stems[i];
+            room += (s.rings.len() + 3) * (s.sides as usize + 1) + 2;
+            rings += 2 * s.rings.len();
+            quads += 2 * s.rings.len() * s.sides as usize;
+        }
+        let mut plan = self.plan.clone();
+        plan.ts = grown(&self.plan.ts, rings);
+        let other = Sweep {
+            skeleton: self.skeleton,
+            p: self.p,
+            plan,
+            out: self.out.beside(room),
+            tables: self.tables,
+            winds: self.winds,
+            frames: grown(&self.frames, rings),
+            meshes: self.meshes.clone(),
+            claimed: grown(&self.claimed, quads),
+            bridges: Vec::with_capacity(self.bridges.capacity() - self.bridges.len()),
+            scratch: weld::Scratch::default(),
+            fork_scratch: fork::Scratch::default(),
+            stats: WeldStats::default(),
+            blocks: vec![0..0; n],
+            junctions: vec![0..0; n],
+        };
+        (other, (self.plan.ts.len(), self.claimed.len()))
+    }
+
+    /// Takes in `other`'s stems `there` ([`Sweep::beside`], made when this sweep had planned
+    /// `at.0` rings and reserved `at.1` quads) after this sweep's: its vertices copied after
+    /// this sweep's and its numbers moved by as many (vertices, junction triangles, quads,
+    /// rings planned again for fallbacks), its claims on its parents' quads merged.
+    fn absorb(&mut self, other: Sweep, there: &[usize], at: (usize, usize)) {
+        let (r0, c0) = at;
+        let Sweep { plan, out, frames, meshes, claimed, bridges, stats, blocks, junctions, .. } = other;
+        let base = out.base();
+        let first = self.out.absorb(out);
+        let v = |x: u32| if x >= base { x - base + first } else { x };
+        // Claims only ever set a quad, and each half claims only its own parents' quads.
+        for (a, &b) in self.claimed[..c0].iter_mut().zip(&claimed[..c0]) {
+            *a |= b;
+        }
+        let dc = self.claimed.len() - c0;
+        self.claimed.extend_from_slice(&claimed[c0..]);
+        let dr = self.plan.ts.len() - r0;
+        self.plan.ts.extend_from_slice(&plan.ts[r0..]);
+        self.frames.extend_from_slice(&frames[r0..]);
+        let ring = |k: usize| if k >= r0 { k + dr } else { k };
+        let tri0 = (self.bridges.len() / 3) as u32;
+        self.bridges.extend(bridges.iter().map(|&x| v(x)));
+        for &i in there {
+            let planned = self.plan.stems[i].rings.clone();
+            self.frames[planned.clone()].copy_from_slice(&frames[planned]);
+            let rings = plan.stems[i].rings.clone();
+            self.plan.stems[i].rings = ring(rings.start)..ring(rings.end);
+            self.meshes[i] =
+                meshes[i].map(|m| StemMesh { claim: m.claim + dc, ring0: ring(m.ring0), ..m.moved(v(m.first)) });
+            self.blocks[i] = v(blocks[i].start)..v(blocks[i].end);
+            self.junctions[i] = junctions[i].start + tri0..junctions[i].end + tri0;
+        }
+        self.stats.add(stats);
     }
 
     /// Sweeps stem `i` (a twig, or a tube welded into its parent, or a closed tube).
@@ -393,5 +522,26 @@ mod tests {
             assert_eq!(super::by_level(&sk.stems), sorted, "{}", preset.name);
         }
         assert!(super::by_level(&[]).is_empty());
+    }
+
+    #[test]
+    fn the_deepest_level_in_two_halves_is_the_same_bark() {
+        let mut split = 0;
+        for preset in crate::presets::PRESETS {
+            let params = preset.params().expect("preset");
+            let Ok(sk) = crate::skeleton::build(&params.skeleton) else { continue };
+            let one = super::build_on(&sk, &params.mesh, 1, None).expect("bark");
+            // Side by side (the second half's thread starts before the first half ends, as a
+            // thread of its own does at once), and in order (the second half taken back).
+            for threads in [2, 1] {
+                let two = super::build_on(&sk, &params.mesh, threads, Some(0)).expect("bark");
+                assert_eq!(one.mesh, two.mesh, "{} on {threads}", preset.name);
+                assert_eq!(one.welds, two.welds, "{} on {threads}", preset.name);
+                assert_eq!(one.layout, two.layout, "{} on {threads}", preset.name);
+            }
+            let plan = super::Plan::new(&sk, &params.mesh).expect("plan");
+            split += usize::from(super::halves::split(&sk, &plan, &super::by_level(&sk.stems), 0).is_some());
+        }
+        assert!(split >= 10, "the presets' deepest levels split in two ({split})");
     }
 }

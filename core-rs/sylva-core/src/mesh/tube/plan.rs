@@ -16,6 +16,7 @@ use std::ops::Range;
 const MAX_ROWS_BOUND: u64 = 8;
 
 /// How one stem will be meshed: its ring positions along the stem and its number of sides.
+#[derive(Clone)]
 pub(super) struct StemPlan {
     /// Range into the shared ring-parameter buffer ([`Plan::ts`]).
     pub rings: Range<usize>,
@@ -24,6 +25,7 @@ pub(super) struct StemPlan {
 }
 
 /// The plan of a whole tree's bark.
+#[derive(Clone)]
 pub(super) struct Plan {
     /// Sides per stem, as planned for tubes (a twig's own count is in its [`StemPlan`]).
     pub sides: Vec<u32>,
