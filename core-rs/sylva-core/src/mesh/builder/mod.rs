@@ -27,22 +27,42 @@ pub struct MeshBuilder {
     /// [`MeshBuilder::beside`] the next number of the builder it continues, whose vertices
     /// before it it reads through `prefix`.
     base: u32,
-    /// The vertices numbered below `base`, read in another builder's buffers.
-    prefix: Option<Prefix>,
+    /// The vertices numbered below `base`, read in another builder's buffers (all null when
+    /// `base` is 0).
+    prefix: Prefix,
     /// Whether another builder reads this one's vertices ([`MeshBuilder::beside`]): its
     /// buffers must not move until that builder is absorbed.
     pinned: bool,
+    /// `pinned` or a `prefault` running: whether growing the vertex buffers needs a look first
+    /// (one test on the path every append takes).
+    watched: bool,
 }
 
-/// Another builder's vertex buffers, read-only: the first `len` vertices' positions, normals,
-/// uvs and wind records (`wind` is null when that builder keeps none).
+/// Whether this build continues builders beside others ([`MeshBuilder::beside`]): the threaded
+/// wasm module, whose bark sweeps its deepest level in two halves (`mesh/tube/halves.rs`), and
+/// the tests. Elsewhere every vertex read skips the test for a continued builder's earlier
+/// vertices, which cost the single-threaded module 2 to 3% of its skeleton + mesh.
+const BESIDE: bool = cfg!(any(test, all(target_arch = "wasm32", target_feature = "atomics")));
+
+/// Another builder's vertex buffers, read-only: the positions, normals, uvs and wind records of
+/// the vertices numbered below the reading builder's `base` (`wind` is null when that builder
+/// keeps none).
 #[derive(Clone, Copy)]
 struct Prefix {
     positions: *const f32,
     normals: *const f32,
     uvs: *const f32,
     wind: *const f32,
-    len: u32,
+}
+
+impl Prefix {
+    /// No buffers: a builder that continues none.
+    const NONE: Prefix = Prefix {
+        positions: std::ptr::null(),
+        normals: std::ptr::null(),
+        uvs: std::ptr::null(),
+        wind: std::ptr::null(),
+    };
 }
 
 // SAFETY: a `Prefix` only reads memory that its owner neither writes nor moves while the
@@ -54,7 +74,7 @@ impl Prefix {
     /// Element `k` of a buffer of the prefix (`k` below its length).
     #[inline]
     fn at(p: *const f32, k: usize) -> f32 {
-        // SAFETY: the buffers hold `len` vertices, which the owner does not write or move
+        // SAFETY: the buffers hold the reader's `base` vertices, which the owner does not write or move
         // while this view exists (`MeshBuilder::beside`); callers index below `len`.
         #[allow(unsafe_code, reason = "reads of another builder's pinned vertices")]
         unsafe {
@@ -112,8 +132,9 @@ impl MeshBuilder {
             prefault: None,
             seam_copies: Vec::new(),
             base: 0,
-            prefix: None,
+            prefix: Prefix::NONE,
             pinned: false,
+            watched: false,
         }
     }
 
@@ -123,6 +144,10 @@ impl MeshBuilder {
     /// was made with, which would move its buffers: that panics) but must not change those
     /// before, until [`MeshBuilder::absorb`] takes the other's vertices in after its own.
     pub(crate) fn beside(&mut self, vertices: usize) -> MeshBuilder {
+        #[allow(clippy::assertions_on_constants, reason = "false in builds whose reads skip the prefix")]
+        {
+            assert!(BESIDE, "a builder beside another in a build without them");
+        }
         let mut b = Self::with_capacity(vertices, 0);
         if self.wind {
             b.mesh.wind = Vec::with_capacity(vertices * WIND_STRIDE);
@@ -130,16 +155,10 @@ impl MeshBuilder {
         }
         let m = &self.mesh;
         let wind = if self.wind { m.wind.as_ptr() } else { std::ptr::null() };
-        let len = self.next_index();
-        b.prefix = Some(Prefix {
-            positions: m.positions.as_ptr(),
-            normals: m.normals.as_ptr(),
-            uvs: m.uvs.as_ptr(),
-            wind,
-            len,
-        });
-        b.base = len;
+        b.prefix = Prefix { positions: m.positions.as_ptr(), normals: m.normals.as_ptr(), uvs: m.uvs.as_ptr(), wind };
+        b.base = self.next_index();
         self.pinned = true;
+        self.watch();
         b
     }
 
@@ -148,6 +167,7 @@ impl MeshBuilder {
     pub(crate) fn forgo(&mut self, other: MeshBuilder) {
         drop(other);
         self.pinned = false;
+        self.watch();
     }
 
     /// Takes in the vertices of `other`, made by [`MeshBuilder::beside`] from this builder, after
@@ -155,6 +175,7 @@ impl MeshBuilder {
     pub(crate) fn absorb(&mut self, other: MeshBuilder) -> u32 {
         // `other` reads nothing of this builder's while it is copied.
         self.pinned = false;
+        self.watch();
         self.append_copy(&other, other.base..other.next_index())
     }
 
@@ -192,6 +213,7 @@ impl MeshBuilder {
         }
         let (pf, toucher) = Prefault::new(&regions);
         self.prefault = Some(pf);
+        self.watch();
         prefault::offer(toucher);
     }
 
@@ -199,12 +221,21 @@ impl MeshBuilder {
     /// for other work; the buffers' later pages are faulted in by their writers.
     pub fn end_prefault(&mut self) {
         self.prefault = None;
+        self.watch();
+    }
+
+    /// Sets `watched` from what it stands for.
+    fn watch(&mut self) {
+        self.watched = self.pinned || self.prefault.is_some();
     }
 
     /// Before the vertex buffers grow to `n` vertices: the pages they reach claimed from the
     /// prefaulting thread, or that thread stopped if the buffers must move.
     #[inline]
     fn grow_vertices(&mut self, n: usize) {
+        if !self.watched {
+            return;
+        }
         if self.pinned {
             self.check_room(n);
         }
@@ -213,6 +244,7 @@ impl MeshBuilder {
         let fits = n * 3 <= m.positions.capacity().min(m.normals.capacity()) && n * 2 <= m.uvs.capacity();
         if !fits || (self.wind && n * WIND_STRIDE > m.wind.capacity()) {
             self.prefault = None;
+            self.watch();
             return;
         }
         pf.claim(POSITIONS, m.positions.as_ptr() as usize + n * 12);
@@ -238,19 +270,25 @@ impl MeshBuilder {
         let Some(pf) = &mut self.prefault else { return };
         if n > self.mesh.indices.capacity() {
             self.prefault = None;
+            self.watch();
             return;
         }
         pf.claim(INDICES, self.mesh.indices.as_ptr() as usize + n * 4);
     }
 
     /// The number of this builder's first vertex (0 unless made by [`MeshBuilder::beside`]).
+    #[inline(always)]
     pub(crate) fn base(&self) -> u32 {
-        self.base
+        if BESIDE {
+            self.base
+        } else {
+            0
+        }
     }
 
     /// Index the next vertex will get.
     pub fn next_index(&self) -> u32 {
-        self.base + (self.mesh.positions.len() / 3) as u32
+        self.base() + (self.mesh.positions.len() / 3) as u32
     }
 
     /// Append one vertex (with a zero wind record if the builder keeps wind); returns its index.
@@ -286,9 +324,10 @@ impl MeshBuilder {
     pub fn block_from(&mut self, first: u32, n: usize) -> VertexBlock<'_> {
         let end = self.next_index() as usize + n;
         self.grow_vertices(end);
-        let end = end - self.base as usize;
+        let base = self.base();
+        let end = end - base as usize;
         let m = &mut self.mesh;
-        let k = (first - self.base) as usize;
+        let k = (first - base) as usize;
         m.positions.resize(3 * end, 0.0);
         m.normals.resize(3 * end, 0.0);
         m.uvs.resize(2 * end, 0.0);
@@ -309,7 +348,7 @@ impl MeshBuilder {
     /// ahead of time, on another thread. Returns the index of the first copy.
     pub fn append_copy(&mut self, from: &MeshBuilder, range: std::ops::Range<u32>) -> u32 {
         let first = self.next_index();
-        let (a, b) = ((range.start - from.base) as usize, (range.end - from.base) as usize);
+        let (a, b) = ((range.start - from.base()) as usize, (range.end - from.base()) as usize);
         self.grow_vertices(first as usize + (b - a));
         let (m, f) = (&mut self.mesh, &from.mesh);
         m.positions.extend_from_slice(&f.positions[3 * a..3 * b]);
@@ -338,12 +377,38 @@ impl MeshBuilder {
     pub fn truncate_vertices(&mut self, first: u32) {
         let keep = self.mesh.rings.partition_point(|r| r[0] + r[1] <= first);
         self.mesh.rings.truncate(keep);
-        let n = (first - self.base) as usize;
+        let n = (first - self.base()) as usize;
         self.mesh.positions.truncate(n * 3);
         self.mesh.normals.truncate(n * 3);
         self.mesh.uvs.truncate(n * 2);
         if self.wind {
             self.mesh.wind.truncate(n * WIND_STRIDE);
+        }
+    }
+
+    /// Vertex `i`'s position and normal, `i` below `base` ([`MeshBuilder::beside`]).
+    #[cold]
+    fn prefix_vertex(&self, i: u32) -> (glam::Vec3, glam::Vec3) {
+        let k = i as usize * 3;
+        let v = |b| glam::Vec3::new(Prefix::at(b, k), Prefix::at(b, k + 1), Prefix::at(b, k + 2));
+        (v(self.prefix.positions), v(self.prefix.normals))
+    }
+
+    /// Vertex `i`'s uv, `i` below `base`.
+    #[cold]
+    fn prefix_uv(&self, i: u32) -> [f32; 2] {
+        let k = i as usize * 2;
+        [Prefix::at(self.prefix.uvs, k), Prefix::at(self.prefix.uvs, k + 1)]
+    }
+
+    /// Vertex `i`'s wind record, `i` below `base`.
+    #[cold]
+    fn prefix_wind(&self, i: u32) -> [f32; WIND_STRIDE] {
+        let (w, k) = (self.prefix.wind, i as usize * WIND_STRIDE);
+        if w.is_null() {
+            [0.0; WIND_STRIDE]
+        } else {
+            std::array::from_fn(|c| Prefix::at(w, k + c))
         }
     }
 
@@ -355,12 +420,10 @@ impl MeshBuilder {
     /// Vertex `i`'s position and normal.
     #[inline]
     pub fn vertex_at(&self, i: u32) -> (glam::Vec3, glam::Vec3) {
-        if let Some(p) = self.prefix.filter(|p| i < p.len) {
-            let k = i as usize * 3;
-            let v = |b| glam::Vec3::new(Prefix::at(b, k), Prefix::at(b, k + 1), Prefix::at(b, k + 2));
-            return (v(p.positions), v(p.normals));
+        if i < self.base() {
+            return self.prefix_vertex(i);
         }
-        let k = (i - self.base) as usize * 3;
+        let k = (i - self.base()) as usize * 3;
         let (p, n) = (&self.mesh.positions[k..k + 3], &self.mesh.normals[k..k + 3]);
         (glam::Vec3::new(p[0], p[1], p[2]), glam::Vec3::new(n[0], n[1], n[2]))
     }
@@ -382,42 +445,36 @@ impl MeshBuilder {
     /// Replace vertex `i`'s normal.
     #[inline]
     pub fn set_normal(&mut self, i: u32, n: glam::Vec3) {
-        let k = (i - self.base) as usize * 3;
+        let k = (i - self.base()) as usize * 3;
         self.mesh.normals[k..k + 3].copy_from_slice(&n.to_array());
     }
 
     /// Vertex `i`'s wind record (zeros when this builder has no wind attributes).
     #[inline]
     pub fn wind_at(&self, i: u32) -> [f32; WIND_STRIDE] {
-        if let Some(p) = self.prefix.filter(|p| i < p.len) {
-            let k = i as usize * WIND_STRIDE;
-            return if p.wind.is_null() {
-                [0.0; WIND_STRIDE]
-            } else {
-                std::array::from_fn(|c| Prefix::at(p.wind, k + c))
-            };
+        if i < self.base() {
+            return self.prefix_wind(i);
         }
-        let k = (i - self.base) as usize * WIND_STRIDE;
+        let k = (i - self.base()) as usize * WIND_STRIDE;
         self.mesh.wind.get(k..k + WIND_STRIDE).map_or([0.0; WIND_STRIDE], |w| w.try_into().expect("stride"))
     }
 
     /// Vertex `i`'s uv.
     #[inline]
     pub fn uv_at(&self, i: u32) -> [f32; 2] {
-        if let Some(p) = self.prefix.filter(|p| i < p.len) {
-            let k = i as usize * 2;
-            return [Prefix::at(p.uvs, k), Prefix::at(p.uvs, k + 1)];
+        if i < self.base() {
+            return self.prefix_uv(i);
         }
-        let k = (i - self.base) as usize * 2;
+        let k = (i - self.base()) as usize * 2;
         [self.mesh.uvs[k], self.mesh.uvs[k + 1]]
     }
 
     /// Component `k` of the flat positions buffer written so far.
     #[inline]
     pub fn position(&self, k: usize) -> f32 {
-        match self.prefix.filter(|p| k < 3 * p.len as usize) {
-            Some(p) => Prefix::at(p.positions, k),
-            None => self.mesh.positions[k - 3 * self.base as usize],
+        match k.checked_sub(3 * self.base() as usize) {
+            Some(own) => self.mesh.positions[own],
+            None => Prefix::at(self.prefix.positions, k),
         }
     }
 
@@ -445,6 +502,7 @@ impl MeshBuilder {
     /// The finished mesh (empty groups dropped).
     pub fn finish(mut self) -> TreeMesh {
         self.prefault = None;
+        self.watch();
         self.close_group();
         self.mesh.groups.retain(|g| g.count > 0);
         self.mesh

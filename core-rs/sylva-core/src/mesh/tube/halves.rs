@@ -18,14 +18,15 @@
 use super::plan::Plan;
 use crate::skeleton::Skeleton;
 
-/// Threads the halves may use: in wasm, this thread and the helpers ([`crate::par::threads`]),
+/// Threads the halves may use: in the threaded wasm module, this thread and the helpers
+/// ([`crate::par::threads`]; 1 in the single-threaded module),
 /// where [`crate::par::join`] queues the second half for a helper, which takes it only once
 /// free (after the leaf placements that run beside the bark); natively 1 (never split), where
 /// `join` starts a thread at once: on this two-core machine it competes with the placements and
 /// the thread faulting in the bark's pages, and the second half's buffers come from another
 /// allocator arena, which glibc gives back between trees (measured slower: docs/performance.md).
 pub(super) fn threads() -> usize {
-    if cfg!(target_arch = "wasm32") {
+    if cfg!(all(target_arch = "wasm32", target_feature = "atomics")) {
         crate::par::threads()
     } else {
         1
