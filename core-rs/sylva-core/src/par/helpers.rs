@@ -27,6 +27,8 @@ static QUEUED: Condvar = Condvar::new();
 static HELPERS: AtomicUsize = AtomicUsize::new(0);
 /// Jobs the helpers ran (not taken back by the thread that handed them out).
 static HELPER_JOBS: AtomicU64 = AtomicU64::new(0);
+/// Jobs queued and not taken yet (by a helper, or back by the thread that queued them).
+static WAITING: AtomicUsize = AtomicUsize::new(0);
 /// The next job's number.
 static NEXT_JOB: AtomicU64 = AtomicU64::new(0);
 /// Held to check or announce a job's end; [`FINISHED`] is signalled on every end and by
@@ -61,7 +63,10 @@ pub fn helper_loop() -> ! {
             let mut q = QUEUE.lock().unwrap_or_else(PoisonError::into_inner);
             loop {
                 match q.pop_front() {
-                    Some((_, job)) => break job,
+                    Some((_, job)) => {
+                        WAITING.fetch_sub(1, Ordering::Relaxed);
+                        break job;
+                    }
                     None => q = QUEUED.wait(q).unwrap_or_else(PoisonError::into_inner),
                 }
             }
@@ -69,6 +74,12 @@ pub fn helper_loop() -> ! {
         job();
         HELPER_JOBS.fetch_add(1, Ordering::Relaxed);
     }
+}
+
+/// Whether a job waits for a helper: a helper doing work that may stop early (faulting in the
+/// bark's pages ahead of its sweep, [`super::prefault`]) stops, so that it takes the job.
+pub fn job_waiting() -> bool {
+    WAITING.load(Ordering::Relaxed) > 0
 }
 
 /// Jobs the helpers ran since the module started: evidence for the tests that work was shared.
@@ -106,13 +117,21 @@ pub fn join<A, B: Send>(a: impl FnOnce() -> A, b: impl FnOnce() -> B + Send) -> 
     )]
     let job: Job = unsafe { std::mem::transmute::<Box<dyn FnOnce() + Send + '_>, Job>(job) };
     let id = NEXT_JOB.fetch_add(1, Ordering::Relaxed);
-    QUEUE.lock().unwrap_or_else(PoisonError::into_inner).push_back((id, job));
+    {
+        let mut q = QUEUE.lock().unwrap_or_else(PoisonError::into_inner);
+        q.push_back((id, job));
+        WAITING.fetch_add(1, Ordering::Relaxed);
+    }
     QUEUED.notify_one();
     let a = a();
     // Not started yet (every helper busy): take it back and run it here.
     let mine = {
         let mut q = QUEUE.lock().unwrap_or_else(PoisonError::into_inner);
-        q.iter().position(|(k, _)| *k == id).and_then(|i| q.remove(i))
+        let mine = q.iter().position(|(k, _)| *k == id).and_then(|i| q.remove(i));
+        if mine.is_some() {
+            WAITING.fetch_sub(1, Ordering::Relaxed);
+        }
+        mine
     };
     if let Some((_, job)) = mine {
         job();

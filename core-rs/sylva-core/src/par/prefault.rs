@@ -181,7 +181,7 @@ impl Toucher {
                 // From the top down, this share of each region by this step.
                 let target = region.pages - region.pages * step / STEPS;
                 loop {
-                    if s.stop.load(Ordering::Acquire) {
+                    if s.stop.load(Ordering::Acquire) || gives_way() {
                         break 'steps;
                     }
                     let c = region.claims.load(Ordering::Acquire);
@@ -214,6 +214,17 @@ impl Toucher {
         s.state.store(GONE, Ordering::Release);
         touched
     }
+}
+
+/// Whether the toucher gives its thread up: in the threaded wasm module, when a job waits for a
+/// helper (the second half of the bark's deepest level, `mesh/tube/halves.rs`), which is worth
+/// more than the pages left: the owner faults those in itself.
+#[inline]
+fn gives_way() -> bool {
+    #[cfg(all(target_arch = "wasm32", target_feature = "atomics"))]
+    return super::helpers::job_waiting();
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "atomics")))]
+    false
 }
 
 /// Where the code that reserves buffers leaves its [`Toucher`] for the other thread of a join.
