@@ -299,11 +299,10 @@ impl<'a> Sweep<'a> {
     /// planned, quads reserved), for [`Sweep::absorb`].
     fn beside(&mut self, there: &[usize]) -> (Sweep<'a>, (usize, usize)) {
         let n = self.skeleton.stems.len();
-        // Room for everything the other sweep writes, made here: its own vertices (a collar's
-        // and a fallback's rings more per stem), rings planned again for fallbacks (as many
-        // again), its quads and its junctions' triangles (this sweep's room left). Vectors
-        // grown on the other thread come from that thread's allocator arena, which natively
-        // gives its memory back between trees (twice the page faults of the whole bark).
+        // Room for everything the other sweep writes, made here so that nothing grows on the
+        // other thread: its own vertices (a collar's and a fallback's rings more per stem),
+        // rings planned again for fallbacks (as many again), its quads and its junctions'
+        // triangles (this sweep's room left).
         let (mut room, mut rings, mut quads) = (0, 0, 0);
         for &i in there {
             let s = &self.plan.stems[i];
