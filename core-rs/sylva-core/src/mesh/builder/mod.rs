@@ -74,8 +74,9 @@ impl Prefix {
     /// Element `k` of a buffer of the prefix (`k` below its length).
     #[inline]
     fn at(p: *const f32, k: usize) -> f32 {
-        // SAFETY: the buffers hold the reader's `base` vertices, which the owner does not write or move
-        // while this view exists (`MeshBuilder::beside`); callers index below `len`.
+        // SAFETY: the buffers hold the reader's first `base` vertices, which their owner does
+        // not write or move while this view exists (`MeshBuilder::beside`, pinned); callers
+        // index below `base` vertices.
         #[allow(unsafe_code, reason = "reads of another builder's pinned vertices")]
         unsafe {
             *p.add(k)

@@ -19,9 +19,9 @@ use super::plan::Plan;
 use crate::skeleton::Skeleton;
 
 /// Threads the halves may use: in the threaded wasm module, this thread and the helpers
-/// ([`crate::par::threads`]; 1 in the single-threaded module),
-/// where [`crate::par::join`] queues the second half for a helper, which takes it only once
-/// free (after the leaf placements that run beside the bark); natively 1 (never split), where
+/// ([`crate::par::threads`]), where [`crate::par::join`] queues the second half for a helper,
+/// which takes it only once free (after the leaf placements that run beside the bark); 1 in the
+/// single-threaded module; natively 1 (never split), where
 /// `join` starts a thread at once: on this two-core machine it competes with the placements and
 /// the thread faulting in the bark's pages, and the second half's buffers come from another
 /// allocator arena, which glibc gives back between trees (measured slower: docs/performance.md).
@@ -37,8 +37,9 @@ pub(super) fn threads() -> usize {
 /// and copying the second half's vertices would cost more than they save).
 pub(super) const MIN_VERTICES: usize = 16_384;
 
-/// Share of the deepest level's planned vertices the second half aims at. The first half's
-/// thread also copies the second half's vertices in, so it takes a little less.
+/// Share of the deepest level's planned vertices the second half aims at: half, not tuned (the
+/// first half's thread also copies the second half's vertices in afterwards, and the helper
+/// may start late).
 const SHARE: f32 = 0.5;
 
 /// Where to split `order` (stems level by level): the position of the deepest level's first
