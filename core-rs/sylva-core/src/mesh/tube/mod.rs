@@ -98,14 +98,20 @@ pub struct Built {
 /// welded; stems that may get tree holes are swept densely enough for them ([`super::holes::densify`]).
 pub fn build_with_stats(skeleton: &Skeleton, p: &MeshParams) -> Result<Built, SylvaError> {
     let threads = halves::threads();
-    build_on(skeleton, p, threads, (threads > 1).then_some(halves::MIN_VERTICES))
+    build_on(skeleton, p, threads, (threads > 1).then_some((halves::MIN_VERTICES, 0)))
 }
 
-/// [`build_with_stats`] on up to `threads` threads, the deepest level in two halves
-/// ([`halves`]) when it plans at least `halves` vertices (never without): side by side if the
-/// second half starts before the first ends, else the second after the first on this thread.
-/// The same bytes either way.
-fn build_on(skeleton: &Skeleton, p: &MeshParams, threads: usize, halves: Option<usize>) -> Result<Built, SylvaError> {
+/// [`build_with_stats`] on up to `threads` threads, the deepest level in two parts
+/// ([`halves`]) when it plans at least `halves.0` vertices (never without; the helper waiting
+/// until this thread has taken `halves.1` of the level's stems, for the tests): side by side if
+/// a helper comes while this thread sweeps the level, else all on this thread. The same bytes
+/// either way.
+fn build_on(
+    skeleton: &Skeleton,
+    p: &MeshParams,
+    threads: usize,
+    halves: Option<(usize, usize)>,
+) -> Result<Built, SylvaError> {
     let plan = Plan::new(skeleton, p)?;
     let mut out = MeshBuilder::with_wind(plan.vertices as usize, (plan.indices + plan.bridges) as usize);
     out.prefault(plan.indices as usize);
@@ -119,12 +125,12 @@ fn build_on(skeleton: &Skeleton, p: &MeshParams, threads: usize, halves: Option<
     // Level by level (parents still come first): a split clone, planned before its original's
     // children, also opens its original before them.
     let order = by_level(&skeleton.stems);
-    let split = halves.and_then(|min| halves::split(skeleton, &plan, &order, min));
+    let cuts = halves.and_then(|(min, wait)| Some((halves::cuts(skeleton, &plan, &order, min)?, wait)));
     let mut sweep = Sweep::new(skeleton, p, plan, out, &tables, &winds);
-    match split {
-        Some((level, from)) => {
-            order[..level].iter().for_each(|&i| sweep.stem(i));
-            halves::sweep(&mut sweep, &order[level..from], &order[from..], threads);
+    match cuts {
+        Some((cuts, wait)) => {
+            order[..cuts.level].iter().for_each(|&i| sweep.stem(i));
+            halves::sweep(&mut sweep, &order[cuts.level..], &cuts, threads, wait);
         }
         None => order.iter().for_each(|&i| sweep.stem(i)),
     }
