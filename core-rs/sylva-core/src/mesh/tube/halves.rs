@@ -148,13 +148,20 @@ pub(super) fn sweep(sweep: &mut Sweep, deep: &[usize], cuts: &Cuts, threads: usi
             while wait > 0 && unpack(state.load(Ordering::Acquire)).0 < wait.min(deep.len()) {
                 std::hint::spin_loop();
             }
+            let mut s = state.load(Ordering::Acquire);
             loop {
-                let s = state.load(Ordering::Acquire);
                 let (next, stop) = unpack(s);
                 let k = cuts.at(next).filter(|&k| k < stop)?;
-                if state.compare_exchange(s, pack(next, k), Ordering::AcqRel, Ordering::Acquire).is_ok() {
-                    deep[k..].iter().for_each(|&i| other.stem(i));
-                    return Some(k);
+                // This thread goes on meanwhile (finding the cut can take longer than a stem):
+                // the cut stays good while it is ahead of it.
+                while unpack(s).0 < k {
+                    match state.compare_exchange_weak(s, pack(unpack(s).0, k), Ordering::AcqRel, Ordering::Acquire) {
+                        Ok(_) => {
+                            deep[k..].iter().for_each(|&i| other.stem(i));
+                            return Some(k);
+                        }
+                        Err(now) => s = now,
+                    }
                 }
             }
         },
