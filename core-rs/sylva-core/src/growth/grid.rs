@@ -67,7 +67,80 @@ impl Grid {
             }
         }
     }
+
+    /// Call `f` with every item in `p`'s own cell (the border cell it is clamped into when outside).
+    pub fn for_each_in_cell(&self, p: Vec3, mut f: impl FnMut(u32)) {
+        let mut i = self.head[self.cell_index(self.coord(p))];
+        while i != NONE {
+            f(i);
+            i = self.next[i as usize];
+        }
+    }
+
+    /// [`Grid::for_each_near`] (`p`, `radius`): the same cells in the same order, without the
+    /// cells that hold no point within `within` of `p`. Those are the corners of the block of
+    /// cells around the sphere. With cells of half the radius they are about a third of the
+    /// block. A caller that only reads items within `within` gets the same calls, in the same
+    /// order, as from [`Grid::for_each_near`].
+    ///
+    /// The test is conservative. A cell's distance from `p` is measured in cell units, less a
+    /// margin far above the rounding of the cell coordinates. A border cell reaches out without
+    /// end on its outer side, because points outside the grid are clamped into it.
+    pub fn for_each_near_within(&self, p: Vec3, radius: f32, within: f32, mut f: impl FnMut(u32)) {
+        let lo = self.coord(p - Vec3::splat(radius));
+        let hi = self.coord(p + Vec3::splat(radius));
+        let at = (p - self.min) * self.inv_cell;
+        // Squared gap (cell units) between `p` and each cell of the block, per axis.
+        const MARGIN: f32 = 1e-3;
+        let gaps = |axis: usize, t: f32, lo: usize, hi: usize, out: &mut [f32; MAX_SPAN]| {
+            let last = self.dims[axis] - 1;
+            for (k, c) in (lo..=hi).enumerate() {
+                let below = if c == 0 { 0.0 } else { c as f32 - t };
+                let above = if c == last { 0.0 } else { t - (c + 1) as f32 };
+                let g = (below.max(above) - MARGIN).max(0.0);
+                out[k] = g * g;
+            }
+        };
+        let span = |a: usize| hi[a] - lo[a] + 1;
+        if span(0) > MAX_SPAN || span(1) > MAX_SPAN || span(2) > MAX_SPAN {
+            return self.for_each_near(p, radius, f);
+        }
+        let (mut gx, mut gy, mut gz) = ([0.0; MAX_SPAN], [0.0; MAX_SPAN], [0.0; MAX_SPAN]);
+        gaps(0, at.x, lo[0], hi[0], &mut gx);
+        gaps(1, at.y, lo[1], hi[1], &mut gy);
+        gaps(2, at.z, lo[2], hi[2], &mut gz);
+        let reach = within * self.inv_cell;
+        let limit = reach * reach * (1.0 + 1e-4);
+        let nx = span(0);
+        for (kz, z) in (lo[2]..=hi[2]).enumerate() {
+            for (ky, y) in (lo[1]..=hi[1]).enumerate() {
+                let room = limit - (gz[kz] + gy[ky]);
+                if room < 0.0 {
+                    continue;
+                }
+                // The row's cells within reach are one run: its gaps fall toward `p` and rise.
+                let (mut a, mut b) = (0, nx);
+                while a < b && gx[a] > room {
+                    a += 1;
+                }
+                while b > a && gx[b - 1] > room {
+                    b -= 1;
+                }
+                let row = self.cell_index([lo[0], y, z]);
+                for cell in &self.head[row + a..row + b] {
+                    let mut i = *cell;
+                    while i != NONE {
+                        f(i);
+                        i = self.next[i as usize];
+                    }
+                }
+            }
+        }
+    }
 }
+
+/// Most cells per axis [`Grid::for_each_near_within`] prunes; larger blocks take the plain visit.
+const MAX_SPAN: usize = 16;
 
 #[cfg(test)]
 mod tests {
@@ -94,5 +167,108 @@ mod tests {
             let brute: Vec<u32> = (0..pts.len() as u32).filter(|&i| pts[i as usize].distance(*q) <= 0.7).collect();
             assert_eq!(near, brute);
         }
+    }
+
+    /// The items within `within` that each visit calls, in their order.
+    fn visits(g: &Grid, pts: &[Vec3], q: Vec3, radius: f32, within: f32) -> (Vec<u32>, Vec<u32>, usize, usize) {
+        let (mut all, mut pruned) = (Vec::new(), Vec::new());
+        let (mut n_all, mut n_pruned) = (0, 0);
+        let close = |i: u32| pts[i as usize].distance_squared(q) <= within * within;
+        g.for_each_near(q, radius, |i| {
+            n_all += 1;
+            if close(i) {
+                all.push(i);
+            }
+        });
+        g.for_each_near_within(q, radius, within, |i| {
+            n_pruned += 1;
+            if close(i) {
+                pruned.push(i);
+            }
+        });
+        (all, pruned, n_all, n_pruned)
+    }
+
+    #[test]
+    fn the_pruned_visit_calls_every_item_within_reach_in_the_plain_order() {
+        let mut rng = crate::rng::Rng::new(5, "grid-within-test");
+        // Points beyond the grid's box too: they are clamped into its border cells.
+        let pts: Vec<Vec3> = (0..4000)
+            .map(|_| Vec3::new(rng.uniform(-7.0, 7.0), rng.uniform(-2.0, 10.0), rng.uniform(-7.0, 7.0)))
+            .collect();
+        let (mut plain, mut pruned) = (0, 0);
+        for cell in [0.35, 0.5, 0.9] {
+            let mut g = Grid::new(Vec3::new(-5.0, 0.0, -5.0), Vec3::new(5.0, 8.0, 5.0), cell, 160);
+            for (i, p) in pts.iter().enumerate() {
+                g.insert(i as u32, *p);
+            }
+            for (k, q) in pts.iter().step_by(13).enumerate() {
+                let radius = 2.0 * cell;
+                // The reach at, below and above the query radius (a kill distance past it).
+                let within = radius * [1.0, 0.6, 1.3][k % 3];
+                let (a, b, n_all, n_pruned) = visits(&g, &pts, *q, radius, within);
+                assert_eq!(a, b, "cell {cell}, point {k}");
+                plain += n_all;
+                pruned += n_pruned;
+            }
+            // A point exactly on cell corners, and one far outside the box.
+            for q in [Vec3::new(0.0, 4.0, 0.0), Vec3::new(-30.0, 40.0, 9.0)] {
+                let (a, b, _, _) = visits(&g, &pts, q, 2.0 * cell, 2.0 * cell);
+                assert_eq!(a, b);
+            }
+        }
+        // The corners of the block go: at least a fifth of the visits.
+        assert!(pruned * 5 < plain * 4, "{pruned} of {plain}");
+    }
+
+    /// The nearest search of space colonization's new markers: the first nearest item in the
+    /// plain visit's order (strictly nearer replaces), and whether one lies within `kill`.
+    fn nearest(g: &Grid, pts: &[Vec3], q: Vec3, radius: f32, within: f32, kill: f32) -> (u32, bool, usize) {
+        let (mut best, mut best_d2, mut dead, mut visits) = (u32::MAX, f32::INFINITY, false, 0);
+        g.for_each_near_within(q, radius, within, |i| {
+            visits += 1;
+            let d2 = pts[i as usize].distance_squared(q);
+            dead |= d2 <= kill * kill;
+            if d2 < radius * radius && d2 < best_d2 {
+                (best, best_d2) = (i, d2);
+            }
+        });
+        (best, dead, visits)
+    }
+
+    #[test]
+    fn a_search_bounded_by_the_own_cell_finds_the_same_nearest_item() {
+        let mut rng = crate::rng::Rng::new(9, "grid-nearest-test");
+        // Clustered points (a crown's nodes), some on one spot (exact ties), some outside the box.
+        let mut pts: Vec<Vec3> = (0..3000)
+            .map(|_| Vec3::new(rng.uniform(-2.0, 2.0), rng.uniform(2.0, 6.0), rng.uniform(-2.0, 2.0)))
+            .collect();
+        pts.extend(
+            (0..300).map(|_| Vec3::new(rng.uniform(-9.0, 9.0), rng.uniform(-3.0, 11.0), rng.uniform(-9.0, 9.0))),
+        );
+        pts.extend([Vec3::new(0.5, 3.0, 0.5); 4]);
+        let mut g = Grid::new(Vec3::new(-5.0, 0.0, -5.0), Vec3::new(5.0, 8.0, 5.0), 0.75, 160);
+        for (i, p) in pts.iter().enumerate() {
+            g.insert(i as u32, *p);
+        }
+        let (mut plain, mut bounded) = (0, 0);
+        for k in 0..600 {
+            let q = if k % 50 == 0 {
+                Vec3::new(0.5, 3.0 + 0.1 * (k / 50) as f32, 0.5)
+            } else {
+                Vec3::new(rng.uniform(-6.0, 6.0), rng.uniform(-1.0, 9.0), rng.uniform(-6.0, 6.0))
+            };
+            let (radius, kill) = (1.5f32, if k % 2 == 0 { 0.4 } else { 2.0 });
+            let within = radius.max(kill);
+            let a = nearest(&g, &pts, q, radius, within, kill);
+            let mut bound = f32::INFINITY;
+            g.for_each_in_cell(q, |i| bound = bound.min(pts[i as usize].distance_squared(q)));
+            let b = nearest(&g, &pts, q, radius, within.min(bound.sqrt()), kill);
+            assert_eq!((a.0, a.1), (b.0, b.1), "query {k} at {q}");
+            plain += a.2;
+            bounded += b.2;
+        }
+        // In the cluster the nearest item is close: far fewer visits.
+        assert!(bounded * 2 < plain, "{bounded} of {plain}");
     }
 }

@@ -7,7 +7,10 @@
 //!
 //! Speed: each marker remembers its closest node and is updated only when a node appears within
 //! its influence radius (a uniform grid finds those markers), so an iteration costs one pass over
-//! the live markers plus a grid query per new node; nothing is all-pairs.
+//! the live markers plus a grid query per new node; nothing is all-pairs. A query leaves out the
+//! grid cells beyond its reach, and a new marker's search for its closest node reaches no
+//! further than the nearest node in its own cell ([`Grid::for_each_near_within`]): the same
+//! nodes decide, in the same order, so the tree is the same.
 //!
 //! Botany on top: apical control (interior nodes sprout less often than tips), light competition
 //! (a shoot is rejected if the canopy above or beside it is higher by more than the shade
@@ -143,6 +146,8 @@ struct State {
     influence: f32,
     influence2: f32,
     kill2: f32,
+    /// The larger of the influence and kill distances: the queries' reach.
+    within: f32,
 }
 
 impl State {
@@ -164,7 +169,8 @@ impl State {
             (&self.markers, &mut self.alive, &mut self.closest, &mut self.closest_d2);
         let mut killed = 0;
         let in_grid = &self.in_grid;
-        self.marker_grid.for_each_near(node.pos, self.influence, |g| {
+        // Every marker within the influence or kill distance, as the plain visit finds them.
+        self.marker_grid.for_each_near_within(node.pos, self.influence, self.within, |g| {
             let m = in_grid[g as usize] as usize;
             if !alive[m] {
                 return;
@@ -206,7 +212,11 @@ impl State {
         self.in_grid.push(id as u32);
         let (mut best, mut best_d2, mut dead) = (ROOT, f32::INFINITY, false);
         let nodes = &self.nodes;
-        self.node_grid.for_each_near(p, self.influence, |n| {
+        // Only the nearest nodes decide (the first nearest in the grid's order, and whether it
+        // is within the kill distance): the search reaches no further than the nearest node in
+        // the marker's own cell.
+        let within = nearest_bound(&self.node_grid, nodes, p).min(self.within);
+        self.node_grid.for_each_near_within(p, self.influence, within, |n| {
             let d2 = nodes[n as usize].pos.distance_squared(p);
             dead |= d2 <= self.kill2;
             if d2 < self.influence2 && d2 < best_d2 {
@@ -219,6 +229,14 @@ impl State {
         self.closest.push(best);
         self.closest_d2.push(best_d2);
     }
+}
+
+/// The distance from `p` to the nearest of `nodes` in `p`'s own cell of `grid` (infinite when
+/// the cell is empty): no node nearer than that lies beyond it.
+fn nearest_bound(grid: &Grid, nodes: &[Node], p: Vec3) -> f32 {
+    let mut d2 = f32::INFINITY;
+    grid.for_each_in_cell(p, |n| d2 = d2.min(nodes[n as usize].pos.distance_squared(p)));
+    d2.sqrt()
 }
 
 /// Iterations between two progress reports of [`grow_with_progress`].
@@ -346,6 +364,7 @@ impl State {
             influence: cfg.influence,
             influence2: cfg.influence * cfg.influence,
             kill2: cfg.kill * cfg.kill,
+            within: cfg.influence.max(cfg.kill),
         }
     }
 

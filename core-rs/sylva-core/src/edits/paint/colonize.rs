@@ -8,6 +8,9 @@
 //!
 //! Results never depend on the grids (they only find candidates): a marker's closest node is the
 //! nearest one, ties going to the older node; nodes grow in the order their first marker comes.
+//! A new marker's search reaches no further than the nearest node in its own grid cell: inside
+//! a crown, whose nodes lie every internode along every stem, that is a few cells instead of
+//! the whole block around the influence distance.
 
 use crate::error::SylvaError;
 use crate::growth::grid::Grid;
@@ -125,13 +128,20 @@ impl Colony {
             self.rebuild_grids();
         }
         let (influence2, kill2) = (self.s.influence * self.s.influence, self.s.kill * self.s.kill);
+        // Every node within the influence or kill distance, as the plain visit finds them.
+        let within = self.s.influence.max(self.s.kill);
         for &p in markers {
             let id = self.markers.len() as u32;
             self.markers.push(p);
             self.marker_grid.insert(id, p);
             let (mut best, mut best_d2, mut dead) = (EXISTING, f32::INFINITY, false);
             let nodes = &self.nodes;
-            self.node_grid.for_each_near(p, self.s.influence, |n| {
+            // Only the nearest nodes decide: the search reaches no further than the nearest
+            // node in the marker's own cell.
+            let mut bound = f32::INFINITY;
+            self.node_grid.for_each_in_cell(p, |n| bound = bound.min(nodes[n as usize].pos.distance_squared(p)));
+            let within = within.min(bound.sqrt());
+            self.node_grid.for_each_near_within(p, self.s.influence, within, |n| {
                 let d2 = nodes[n as usize].pos.distance_squared(p);
                 dead |= d2 <= kill2;
                 if d2 < influence2 && (d2 < best_d2 || (d2 == best_d2 && n < best)) {
@@ -156,7 +166,7 @@ impl Colony {
         let (markers, alive, closest, closest_d2) =
             (&self.markers, &mut self.alive, &mut self.closest, &mut self.closest_d2);
         let mut killed = 0;
-        self.marker_grid.for_each_near(node.pos, self.s.influence, |m| {
+        self.marker_grid.for_each_near_within(node.pos, self.s.influence, self.s.influence.max(self.s.kill), |m| {
             let m = m as usize;
             if !alive[m] {
                 return;
