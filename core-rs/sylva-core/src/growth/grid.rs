@@ -89,45 +89,30 @@ impl Grid {
     pub fn for_each_near_within(&self, p: Vec3, radius: f32, within: f32, mut f: impl FnMut(u32)) {
         let lo = self.coord(p - Vec3::splat(radius));
         let hi = self.coord(p + Vec3::splat(radius));
-        let at = (p - self.min) * self.inv_cell;
-        // Squared gap (cell units) between `p` and each cell of the block, per axis.
-        const MARGIN: f32 = 1e-3;
-        let gaps = |axis: usize, t: f32, lo: usize, hi: usize, out: &mut [f32; MAX_SPAN]| {
-            let last = self.dims[axis] - 1;
-            for (k, c) in (lo..=hi).enumerate() {
-                let below = if c == 0 { 0.0 } else { c as f32 - t };
-                let above = if c == last { 0.0 } else { t - (c + 1) as f32 };
-                let g = (below.max(above) - MARGIN).max(0.0);
-                out[k] = g * g;
-            }
-        };
-        let span = |a: usize| hi[a] - lo[a] + 1;
-        if span(0) > MAX_SPAN || span(1) > MAX_SPAN || span(2) > MAX_SPAN {
-            return self.for_each_near(p, radius, f);
-        }
-        let (mut gx, mut gy, mut gz) = ([0.0; MAX_SPAN], [0.0; MAX_SPAN], [0.0; MAX_SPAN]);
-        gaps(0, at.x, lo[0], hi[0], &mut gx);
-        gaps(1, at.y, lo[1], hi[1], &mut gy);
-        gaps(2, at.z, lo[2], hi[2], &mut gz);
+        let t = (p - self.min) * self.inv_cell;
+        let last = [self.dims[0] - 1, self.dims[1] - 1, self.dims[2] - 1];
         let reach = within * self.inv_cell;
         let limit = reach * reach * (1.0 + 1e-4);
-        let nx = span(0);
-        for (kz, z) in (lo[2]..=hi[2]).enumerate() {
-            for (ky, y) in (lo[1]..=hi[1]).enumerate() {
-                let room = limit - (gz[kz] + gy[ky]);
+        for z in lo[2]..=hi[2] {
+            let gz = gap2(z, t.z, last[2]);
+            if gz > limit {
+                continue;
+            }
+            for y in lo[1]..=hi[1] {
+                let room = limit - gz - gap2(y, t.y, last[1]);
                 if room < 0.0 {
                     continue;
                 }
-                // The row's cells within reach are one run: its gaps fall toward `p` and rise.
-                let (mut a, mut b) = (0, nx);
-                while a < b && gx[a] > room {
-                    a += 1;
+                // The row's cells within reach: those meeting `t.x ± d` (a border cell reaches
+                // on without end, so the clamped ends keep it).
+                let d = room.sqrt() + MARGIN;
+                let x0 = (((t.x - d - 1.0).ceil().max(0.0) as usize).min(last[0])).max(lo[0]);
+                let x1 = ((t.x + d).floor().max(0.0) as usize).min(last[0]).min(hi[0]);
+                if x0 > x1 {
+                    continue;
                 }
-                while b > a && gx[b - 1] > room {
-                    b -= 1;
-                }
-                let row = self.cell_index([lo[0], y, z]);
-                for cell in &self.head[row + a..row + b] {
+                let row = self.cell_index([0, y, z]);
+                for cell in &self.head[row + x0..=row + x1] {
                     let mut i = *cell;
                     while i != NONE {
                         f(i);
@@ -139,8 +124,18 @@ impl Grid {
     }
 }
 
-/// Most cells per axis [`Grid::for_each_near_within`] prunes; larger blocks take the plain visit.
-const MAX_SPAN: usize = 16;
+/// A margin (cell units) far above the rounding of the cell coordinates.
+const MARGIN: f32 = 1e-3;
+
+/// The squared gap (cell units, less [`MARGIN`]) between coordinate `t` and cell `c` of an axis
+/// whose last cell is `last`; a border cell reaches on without end on its outer side.
+#[inline]
+fn gap2(c: usize, t: f32, last: usize) -> f32 {
+    let below = if c == 0 { 0.0 } else { c as f32 - t };
+    let above = if c == last { 0.0 } else { t - (c + 1) as f32 };
+    let g = (below.max(above) - MARGIN).max(0.0);
+    g * g
+}
 
 #[cfg(test)]
 mod tests {
